@@ -1,0 +1,150 @@
+#include "materials/merl/merl_table.h"
+
+#include "materials/core/input_error.h"
+
+#include <lzma.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+namespace glossy {
+
+static_assert(std::endian::native == std::endian::little, "MERL files are little-endian; add byte swapping here");
+
+namespace {
+
+std::vector<std::byte> readFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a MERL file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot open (" + std::strerror(errno) + ")");
+  in.seekg(0, std::ios::end);
+  const auto size = static_cast<std::streamoff>(in.tellg());
+  if (size < 0) throw InputError(path.string() + ": cannot read");
+  in.seekg(0);
+  std::vector<std::byte> bytes(static_cast<size_t>(size));
+  if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) throw InputError(path.string() + ": read failed");
+  return bytes;
+}
+
+// Decompresses an .xz stream; stops one byte past the size a MERL file may have, so a wrong file is
+// reported as the wrong size without decompressing all of it.
+std::vector<std::byte> decompressXz(std::span<const std::byte> in, const std::string& source) {
+  lzma_stream strm = LZMA_STREAM_INIT;
+  if (lzma_stream_decoder(&strm, UINT64_MAX, 0) != LZMA_OK) throw InputError(source + ": cannot start xz decoder");
+  std::vector<std::byte> out(MerlTable::kFileBytes + 1);
+  strm.next_in = reinterpret_cast<const uint8_t*>(in.data());
+  strm.avail_in = in.size();
+  strm.next_out = reinterpret_cast<uint8_t*>(out.data());
+  strm.avail_out = out.size();
+  lzma_ret ret = LZMA_OK;
+  while (ret == LZMA_OK && strm.avail_out > 0) ret = lzma_code(&strm, LZMA_FINISH);
+  const size_t produced = out.size() - strm.avail_out;
+  lzma_end(&strm);
+  if (ret != LZMA_STREAM_END && !(ret == LZMA_OK && strm.avail_out == 0)) {
+    const char* why = ret == LZMA_FORMAT_ERROR ? "not an xz file"
+                      : ret == LZMA_DATA_ERROR ? "corrupt xz data"
+                      : ret == LZMA_BUF_ERROR  ? "truncated xz data"
+                                               : "xz decoding failed";
+    throw InputError(source + ": " + why);
+  }
+  out.resize(produced);
+  return out;
+}
+
+int clampBin(double x, int n) { return std::clamp(static_cast<int>(std::floor(x)), 0, n - 1); }
+
+}  // namespace
+
+size_t MerlBin::index() const {
+  return size_t(phiD) + size_t(MerlTable::kPhiD) * (size_t(thetaD) + size_t(MerlTable::kThetaD) * size_t(thetaH));
+}
+
+MerlTable MerlTable::load(const std::filesystem::path& requested) {
+  // Users often keep the database compressed: NAME.binary.xz stands in for an absent NAME.binary.
+  std::filesystem::path path = requested;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec) && path.extension() != ".xz") {
+    std::filesystem::path xz = path;
+    xz += ".xz";
+    if (std::filesystem::exists(xz, ec)) path = xz;
+  }
+  std::vector<std::byte> bytes = readFile(path);
+  if (path.extension() == ".xz") bytes = decompressXz(bytes, path.string());
+  return parse(bytes, path.string());
+}
+
+MerlTable MerlTable::parse(std::span<const std::byte> bytes, const std::string& source) {
+  if (bytes.size() < 3 * sizeof(int32_t))
+    throw InputError(source + ": truncated MERL file (" + std::to_string(bytes.size()) + " bytes, expected " +
+                     std::to_string(kFileBytes) + ")");
+  int32_t dims[3];
+  std::memcpy(dims, bytes.data(), sizeof dims);
+  if (dims[0] != kThetaH || dims[1] != kThetaD || dims[2] != kPhiD)
+    throw InputError(source + ": not a MERL BRDF (header " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) +
+                     "x" + std::to_string(dims[2]) + ", expected 90x90x180)");
+  if (bytes.size() != kFileBytes)
+    throw InputError(source + ": " + (bytes.size() < kFileBytes ? "truncated" : "oversized") + " MERL file (" +
+                     std::to_string(bytes.size()) + " bytes, expected " + std::to_string(kFileBytes) + ")");
+
+  MerlTable t;
+  t.source_ = source;
+  t.raw_.assign(3 * kBins, 0.0f);
+  t.valid_.assign(kBins, 1);
+  const std::byte* data = bytes.data() + sizeof dims;
+  for (int c = 0; c < 3; ++c) {
+    for (size_t i = 0; i < kBins; ++i) {
+      double v;
+      std::memcpy(&v, data + (c * kBins + i) * sizeof(double), sizeof v);
+      if (!std::isfinite(v)) {
+        const int iph = int(i % kPhiD), itd = int(i / kPhiD % kThetaD), ith = int(i / (size_t(kPhiD) * kThetaD));
+        throw InputError(source + ": non-finite value in channel " + "RGB"[c] + " at bin (θh " + std::to_string(ith) +
+                         ", θd " + std::to_string(itd) + ", φd " + std::to_string(iph) + ")");
+      }
+      if (v < 0.0) t.valid_[i] = 0;
+      t.raw_[3 * i + c] = static_cast<float>(v);
+    }
+  }
+  for (size_t i = 0; i < kBins; ++i) {
+    if (t.valid_[i]) continue;
+    ++t.invalidBins_;
+    t.raw_[3 * i] = t.raw_[3 * i + 1] = t.raw_[3 * i + 2] = 0.0f;
+  }
+  return t;
+}
+
+MerlBin MerlTable::binOf(const Vec3& L, const Vec3& V) {
+  const Vec3 h = L + V;
+  const double hl = std::sqrt(h.x * h.x + h.y * h.y + h.z * h.z);
+  const Vec3 H = h / hl;
+  const double thetaH = std::acos(std::clamp(H.z, -1.0, 1.0));
+  const double phiH = std::atan2(H.y, H.x);
+  // D = L rotated about z by −φ_h, then about y by −θ_h.
+  const double cp = std::cos(phiH), sp = std::sin(phiH);
+  const double x1 = L.x * cp + L.y * sp, y1 = -L.x * sp + L.y * cp, z1 = L.z;
+  const double ct = std::cos(thetaH), st = std::sin(thetaH);
+  const double dx = x1 * ct - z1 * st, dy = y1, dz = x1 * st + z1 * ct;
+  const double thetaD = std::acos(std::clamp(dz, -1.0, 1.0));
+  double phiD = std::atan2(dy, dx);
+  if (phiD < 0.0) phiD += kPi;  // reciprocity fold
+
+  MerlBin bin;
+  bin.thetaH = thetaH <= 0.0 ? 0 : clampBin(kThetaH * std::sqrt(thetaH / (kPi / 2.0)), kThetaH);
+  bin.thetaD = clampBin(thetaD / (kPi / 2.0) * kThetaD, kThetaD);
+  bin.phiD = clampBin(phiD / kPi * kPhiD, kPhiD);
+  return bin;
+}
+
+Rgb MerlTable::value(size_t i) const {
+  return {raw_[3 * i] * kScale[0], raw_[3 * i + 1] * kScale[1], raw_[3 * i + 2] * kScale[2]};
+}
+
+Rgb MerlTable::eval(const Vec3& L, const Vec3& V) const {
+  if (L.z <= 0.0 || V.z <= 0.0) return Rgb(0.0);
+  return value(binOf(L, V).index());
+}
+
+}  // namespace glossy

@@ -1,0 +1,33 @@
+// A BRDF of any kind, by value. A closed variant rather than a virtual base: the integrator's hot path
+// dispatches with a switch, nothing is allocated per material, and a new model is one more alternative.
+//
+// Every model M provides, in the local shading frame (N = +z, L toward the light, V toward the viewer):
+//   Rgb M::eval(L, V)                       ρ(L, V), 0 unless L_z > 0 and V_z > 0
+//   BrdfSample M::sample(V, uLobe, u)       a direction L drawn from M's sampling density given V
+//   double M::pdf(L, V)                     exactly that density, in solid angle
+#pragma once
+
+#include "materials/models/ashikhmin_shirley.h"
+#include "materials/models/cook_torrance.h"
+#include "materials/models/lambertian.h"
+#include "materials/models/measured.h"
+#include "materials/models/microfacet.h"
+#include "materials/models/smooth.h"
+
+#include <variant>
+
+namespace glossy {
+
+using Brdf = std::variant<Lambertian, Smooth, Microfacet, CookTorrance, AshikhminShirley, Measured>;
+
+inline Rgb eval(const Brdf& brdf, const Vec3& L, const Vec3& V) {
+  return std::visit([&](const auto& m) { return m.eval(L, V); }, brdf);
+}
+inline BrdfSample sample(const Brdf& brdf, const Vec3& V, double uLobe, Vec2 u) {
+  return std::visit([&](const auto& m) { return m.sample(V, uLobe, u); }, brdf);
+}
+inline double pdf(const Brdf& brdf, const Vec3& L, const Vec3& V) {
+  return std::visit([&](const auto& m) { return m.pdf(L, V); }, brdf);
+}
+
+}  // namespace glossy

@@ -1,0 +1,21 @@
+// Fresnel factor of Cook & Torrance 1982 (unpolarised light, dielectric with index of refraction eta),
+// the one all four Löw et al. models were fitted with:
+//   g = sqrt(eta² + c² − 1),  F = ½ ((g−c)/(g+c))² [1 + ((c(g+c) − 1)/(c(g−c) + 1))²]
+// c is the cosine of the angle of incidence on the facet (spec: ⟨V,H⟩ for the microfacet-style models,
+// the projected cos θ_d for the Smooth model). F(1) = ((eta−1)/(eta+1))², F(0) = 1.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+namespace glossy {
+
+inline double fresnelCookTorrance(double c, double eta) {
+  c = std::clamp(c, 0.0, 1.0);
+  const double g = std::sqrt(std::max(eta * eta + c * c - 1.0, 0.0));
+  const double a = (g - c) / (g + c);
+  const double b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+  return 0.5 * a * a * (1.0 + b * b);
+}
+
+}  // namespace glossy

@@ -1,0 +1,56 @@
+// Smooth Surface model (Löw et al. 2012, eq. 1)  [Kd, A, B, C, η]
+//   ρ = Kd/π + A · F(cos θ_d; η) · (1 + B‖D_P‖²)^(−C)
+//   D_P = L_p + V_p  (projected deviation from the mirror direction; ‖D_P‖² = |h_p|² with h = L + V)
+//   [convention] cos θ_d = sqrt(1 − ¼‖L_p − V_p‖²), the projected difference angle (fresnel = "projected");
+//                fresnel = "vh" uses ⟨V,H⟩ instead. No π and no cosine factors on the specular term (G' = 1).
+#pragma once
+
+#include "materials/models/brdf_sample.h"
+#include "materials/models/fresnel.h"
+#include "materials/models/common_params.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glossy {
+
+struct Smooth {
+  static constexpr std::string_view kName = "smooth";
+  static constexpr std::string_view kLabel = "Smooth Surface";
+  static constexpr std::string_view kFresnelChoices[] = {"projected", "vh"};
+  static constexpr ParamSpec kParams[] = {
+      params::kKd,
+      params::kAbcA, params::kAbcB, params::kAbcC,
+      params::kEta,
+      {"fresnel", ParamKind::Choice, ParamBound::None, "cos θ_d of the Fresnel factor: projected (default) or vh",
+       kFresnelChoices, true},
+  };
+  static Smooth fromParams(const ParamSet& p) {
+    return {p.rgb("kd"), p.rgb("a"), p.scalar("b"), p.scalar("c"), p.scalar("eta"),
+            p.choice("fresnel", kParams) == "vh"};
+  }
+
+  Rgb kd{0.0}, a{0.0};
+  double b = 0.0, c = 1.0, eta = 1.5;
+  bool fresnelVH = false;
+
+  Rgb eval(const Vec3& L, const Vec3& V) const {
+    if (L.z <= 0.0 || V.z <= 0.0) return Rgb(0.0);
+    const double dx = L.x + V.x, dy = L.y + V.y;
+    const double dp2 = dx * dx + dy * dy;
+    double cosThetaD;
+    if (fresnelVH) {
+      const Vec3 h = L + V;
+      cosThetaD = (V.x * h.x + V.y * h.y + V.z * h.z) / std::sqrt(h.x * h.x + h.y * h.y + h.z * h.z);
+    } else {
+      const double ex = L.x - V.x, ey = L.y - V.y;
+      cosThetaD = std::sqrt(std::max(0.0, 1.0 - 0.25 * (ex * ex + ey * ey)));
+    }
+    const double s = std::exp(-c * std::log1p(b * dp2));
+    return kd * kInvPi + a * (fresnelCookTorrance(cosThetaD, eta) * s);
+  }
+  BrdfSample sample(const Vec3& V, double /*uLobe*/, Vec2 u) const { return sampleCosineLobe(*this, V, u); }
+  double pdf(const Vec3& L, const Vec3& V) const { return V.z > 0.0 ? cosineHemispherePdf(L) : 0.0; }
+};
+
+}  // namespace glossy

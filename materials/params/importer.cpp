@@ -1,0 +1,296 @@
+#include "materials/params/importer.h"
+
+#include "materials/core/input_error.h"
+#include "materials/models/registry.h"
+
+#include <charconv>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace glossy {
+
+namespace {
+
+constexpr int kPrecisionFitLines = 1, kPrecisionSupplement = 2;
+
+std::vector<std::string> splitLines(std::string_view text) {
+  std::vector<std::string> lines;
+  std::string line;
+  std::istringstream in{std::string(text)};
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+double parseNumber(const std::string& s, const std::string& where) {
+  double v = 0.0;
+  const char* b = s.data();
+  if (!s.empty() && s[0] == '+') ++b;
+  auto [end, ec] = std::from_chars(b, s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size()) throw InputError(where + ": '" + s + "' is not a number");
+  return v;
+}
+
+// The supplement's row label → a registry model name.
+std::string supplementModel(const std::string& label) {
+  if (label.rfind("Ashikhmin-Shirley", 0) == 0) return "ashikhmin-shirley";
+  if (label.rfind("Cook-Torrance", 0) == 0) return "cook-torrance";
+  if (label.rfind("Microfacet", 0) == 0) return "microfacet";
+  if (label.rfind("Smooth Surface", 0) == 0) return "smooth";
+  return {};
+}
+
+// The supplement's parameter symbols → parameter-file keys.
+std::string supplementKey(const std::string& symbol) {
+  if (symbol == "K_d") return "kd";
+  if (symbol == "K_s") return "ks";
+  if (symbol == "A") return "a";
+  if (symbol == "B") return "b";
+  if (symbol == "C") return "c";
+  if (symbol == "m") return "m";
+  if (symbol == "n") return "n";
+  if (symbol == "eta") return "eta";
+  return {};
+}
+
+MaterialFile newMaterial(const std::string& name, std::string_view source) {
+  MaterialFile m;
+  m.name = name;
+  m.measured = merlFileName(name);
+  m.source = std::string(source);
+  return m;
+}
+
+void checkMaterialName(const std::string& name, const std::string& where) {
+  static const std::regex ok(R"([A-Za-z0-9][A-Za-z0-9_.+-]*)");
+  if (!std::regex_match(name, ok)) throw InputError(where + ": '" + name + "' is not a usable material name");
+}
+
+}  // namespace
+
+std::vector<MaterialFile> importSupplement(std::string_view text, const std::string& source) {
+  static const std::regex section(R"(Material Name:\s*(\S+))");
+  static const std::regex row(R"(^\s*(Ashikhmin-Shirley|Cook-Torrance|Microfacet(?: Model)?|Smooth Surface(?: Model)?)\s+E_?\{?([0-9])\}?\s+(.*)$)");
+  static const std::regex channel(R"((?:^|\s)(R|G|B|Common):)");
+  static const std::regex assignment(R"(([A-Za-z_]+)\s*=\s*([-+0-9.eE]+))");
+
+  std::vector<MaterialFile> out;
+  const auto lines = splitLines(text);
+  for (size_t ln = 0; ln < lines.size(); ++ln) {
+    const std::string where = source + ":" + std::to_string(ln + 1);
+    std::smatch m;
+    if (std::regex_search(lines[ln], m, section)) {
+      const std::string name = m[1];
+      checkMaterialName(name, where);
+      out.push_back(newMaterial(name, kSupplementSource));
+      continue;
+    }
+    // Strip the LaTeX of the PDF's text: $…$, backslashes, braces.
+    std::string clean;
+    for (char c : lines[ln])
+      if (c != '$' && c != '\\' && c != '{' && c != '}') clean += c;
+    if (!std::regex_match(clean, m, row)) continue;
+    if (out.empty()) throw InputError(where + ": parameter row before any 'Material Name:' section");
+
+    Fit fit;
+    fit.id.model = supplementModel(m[1]);
+    fit.id.metric = "E" + std::string(m[2]);
+    const std::string context = where + ": " + out.back().name + " " + fit.id.str();
+    const std::string rest = m[3];
+
+    // Split "R: … G: … B: … Common: …" into its groups: each body runs from its label to the next.
+    struct Group {
+      std::string label;
+      size_t labelStart, bodyStart;
+    };
+    std::vector<Group> groups;
+    for (auto it = std::sregex_iterator(rest.begin(), rest.end(), channel); it != std::sregex_iterator(); ++it)
+      groups.push_back({(*it)[1], size_t(it->position(1)), size_t(it->position() + it->length())});
+    if (groups.size() != 4 || groups[0].label != "R" || groups[1].label != "G" || groups[2].label != "B" ||
+        groups[3].label != "Common")
+      throw InputError(context + ": expected the groups R:, G:, B: and Common:");
+    Rgb rgbValues[2]{};
+    std::string rgbKeys[2];
+    for (size_t g = 0; g < groups.size(); ++g) {
+      const size_t to = g + 1 < groups.size() ? groups[g + 1].labelStart : rest.size();
+      const std::string body = rest.substr(groups[g].bodyStart, to - groups[g].bodyStart);
+      const int c = int(g) < 3 ? int(g) : -1;
+      int k = 0;
+      for (auto a = std::sregex_iterator(body.begin(), body.end(), assignment); a != std::sregex_iterator(); ++a) {
+        const std::string symbol = (*a)[1];
+        const std::string key = supplementKey(symbol);
+        if (key.empty()) throw InputError(context + ": unknown parameter '" + symbol + "'");
+        const double v = parseNumber((*a)[2], context + ": " + symbol);
+        if (c < 0) {
+          if (fit.params.has(key)) throw InputError(context + ": parameter '" + symbol + "' given twice");
+          fit.params.set(key, v);
+          continue;
+        }
+        if (k >= 2) throw InputError(context + ": group " + groups[g].label + ": more than K_d and one specular scale");
+        if (c > 0 && rgbKeys[k] != key)
+          throw InputError(context + ": group " + groups[g].label + ": expected '" + rgbKeys[k] + "', got '" + key + "'");
+        rgbKeys[k] = key;
+        rgbValues[k][c] = v;
+        ++k;
+      }
+      if (c >= 0 && k != 2)
+        throw InputError(context + ": group " + groups[g].label + ": expected K_d and the specular scale");
+    }
+    for (int k = 0; k < 2; ++k) fit.params.set(rgbKeys[k], rgbValues[k]);
+    validateFit(fit, context);
+    if (out.back().find(fit.id)) throw InputError(context + ": a second " + fit.id.str() + " row for this material");
+    out.back().put(std::move(fit));
+  }
+  for (const MaterialFile& m : out)
+    if (m.fits.empty()) throw InputError(source + ": material '" + m.name + "' has no parameter rows");
+  if (out.empty()) throw InputError(source + ": no 'Material Name:' sections found");
+  return out;
+}
+
+std::vector<MaterialFile> importFitLines(std::string_view text, const std::string& source) {
+  static const std::regex fileMetric(R"(_(E[12])\.fit$)");
+  static const std::regex commentMetric(R"(\b(E[12]) fits\b)");
+  static const std::regex line(
+      R"(^\s*([^=\s]+)\s*=\s*Aggregate\(\s*Lambertian\(\s*albedo\s*=\s*\[([^\]]*)\]\s*\)\s*,\s*(\w+)\((.*)\)\s*\)\s*$)");
+  static const std::regex argument(R"((\w+)\s*=\s*(\[[^\]]*\]|[^,\s)]+))");
+
+  const auto lines = splitLines(text);
+  std::string metric;
+  std::smatch m;
+  const std::string fileName = std::filesystem::path(source).filename().string();
+  if (std::regex_search(fileName, m, fileMetric)) metric = m[1];
+  for (const auto& l : lines)
+    if (metric.empty() && !l.empty() && l[0] == '#' && std::regex_search(l, m, commentMetric)) metric = m[1];
+  if (metric.empty())
+    throw InputError(source + ": cannot tell the metric (name the file *_E1.fit or *_E2.fit)");
+
+  auto parseRgb = [](const std::string& list, const std::string& where) {
+    Rgb rgb;
+    std::istringstream in(list);
+    std::string item;
+    int c = 0;
+    while (std::getline(in, item, ',')) {
+      item.erase(0, item.find_first_not_of(" \t"));
+      item.erase(item.find_last_not_of(" \t") + 1);
+      if (c >= 3) throw InputError(where + ": expected 3 values");
+      rgb[c++] = parseNumber(item, where);
+    }
+    if (c != 3) throw InputError(where + ": expected 3 values");
+    return rgb;
+  };
+
+  std::vector<MaterialFile> out;
+  for (size_t ln = 0; ln < lines.size(); ++ln) {
+    const std::string& l = lines[ln];
+    if (l.find_first_not_of(" \t") == std::string::npos || l[l.find_first_not_of(" \t")] == '#') continue;
+    const std::string where = source + ":" + std::to_string(ln + 1);
+    if (!std::regex_match(l, m, line))
+      throw InputError(where + ": not a fit line (NAME = Aggregate(Lambertian(albedo = [...]), Model(...)))");
+    const std::string name = m[1], bbmModel = m[3], args = m[4];
+    checkMaterialName(name, where);
+    Fit fit;
+    fit.id.metric = metric;
+    // bbm's model and argument names → ours.
+    std::map<std::string, std::string> keys;
+    if (bbmModel == "LowMicrofacetFit" || bbmModel == "LowSmooth") {
+      fit.id.model = bbmModel == "LowSmooth" ? "smooth" : "microfacet";
+      keys = {{"A", "a"}, {"B", "b"}, {"C", "c"}, {"eta", "eta"}};
+    } else if (bbmModel == "LowCookTorrance") {
+      fit.id.model = "cook-torrance";
+      keys = {{"albedo", "ks"}, {"roughness", "m"}, {"eta", "eta"}};
+    } else if (bbmModel == "LowAshikhminShirley") {
+      fit.id.model = "ashikhmin-shirley";
+      keys = {{"albedo", "ks"}, {"sharpness", "n"}, {"fresnelReflectance", "eta"}};  // it holds η, despite its name
+    } else {
+      throw InputError(where + ": unknown model '" + bbmModel + "'");
+    }
+    const std::string context = where + ": " + name + " " + fit.id.str();
+    fit.params.set("kd", parseRgb(m[2], context + ": Lambertian albedo"));
+    for (auto a = std::sregex_iterator(args.begin(), args.end(), argument); a != std::sregex_iterator(); ++a) {
+      const std::string arg = (*a)[1], value = (*a)[2];
+      auto key = keys.find(arg);
+      if (key == keys.end()) throw InputError(context + ": unknown argument '" + arg + "' of " + bbmModel);
+      if (fit.params.has(key->second)) throw InputError(context + ": argument '" + arg + "' given twice");
+      if (value.front() == '[')
+        fit.params.set(key->second, parseRgb(value.substr(1, value.size() - 2), context + ": " + arg));
+      else
+        fit.params.set(key->second, parseNumber(value, context + ": " + arg));
+    }
+    validateFit(fit, context);
+    MaterialFile mat = newMaterial(name, kFitLinesSource);
+    mat.put(std::move(fit));
+    for (const MaterialFile& prev : out)
+      if (prev.name == name) throw InputError(where + ": material '" + name + "' appears twice in this file");
+    out.push_back(std::move(mat));
+  }
+  if (out.empty()) throw InputError(source + ": no fit lines found");
+  return out;
+}
+
+void Importer::addFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::error_code ec;
+  if (!in || std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": cannot open");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  if (s.find("Aggregate(") != std::string::npos)
+    add(importFitLines(s, path.string()), kPrecisionFitLines);
+  else if (s.find("Material Name:") != std::string::npos)
+    add(importSupplement(s, path.string()), kPrecisionSupplement);
+  else
+    throw InputError(path.string() + ": neither the supplement's text (no 'Material Name:') nor .fit lines (no 'Aggregate(')");
+}
+
+void Importer::add(std::vector<MaterialFile> materials, int precision) {
+  for (MaterialFile& m : materials) {
+    auto [it, fresh] = entries_.try_emplace(m.name);
+    Entry& e = it->second;
+    if (fresh) {
+      e.material = newMaterial(m.name, m.source);
+      e.material.fits.clear();
+    }
+    for (Fit& fit : m.fits) {
+      auto p = e.precision.find(fit.id.str());
+      if (p != e.precision.end() && p->second > precision) continue;
+      e.precision[fit.id.str()] = precision;
+      if (fit.source.empty()) fit.source = m.source;
+      e.material.put(std::move(fit));
+    }
+  }
+}
+
+MaterialFile Importer::mergeInto(MaterialFile existing, const std::string& name) const {
+  const Entry& e = entries_.at(name);
+  if (existing.name.empty()) existing = newMaterial(name, "");
+  // Make every fit's provenance explicit, merge, then let the material's source be the one most fits
+  // share; a fit whose provenance differs keeps its own `source` key.
+  for (Fit& f : existing.fits)
+    if (f.source.empty()) f.source = existing.source;
+  for (const Fit& f : e.material.fits) existing.put(f);
+  std::map<std::string, int> votes;
+  for (const Fit& f : existing.fits) ++votes[f.source];
+  if (!votes.empty())
+    existing.source =
+        std::max_element(votes.begin(), votes.end(), [](auto& a, auto& b) { return a.second < b.second; })->first;
+  for (Fit& f : existing.fits)
+    if (f.source == existing.source) f.source.clear();
+  return existing;
+}
+
+std::vector<std::string> Importer::names() const {
+  std::vector<std::string> n;
+  for (const auto& [name, e] : entries_) n.push_back(name);
+  return n;
+}
+
+size_t Importer::fitCount() const {
+  size_t n = 0;
+  for (const auto& [name, e] : entries_) n += e.material.fits.size();
+  return n;
+}
+
+}  // namespace glossy

@@ -1,0 +1,47 @@
+// Importers for the paper's published parameters: the supplement's own text (sections "Material Name: X"
+// with rows "Model<TAB>Metric<TAB>R: K_d = … G: … B: … Common: …") and bbm's `.fit` lines
+// (`name = Aggregate(Lambertian(albedo = [...]), Model(...))`). Both produce validated MaterialFiles.
+#pragma once
+
+#include "materials/params/material_file.h"
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace glossy {
+
+inline constexpr std::string_view kSupplementSource = "Löw et al. 2012, supplementary material";
+inline constexpr std::string_view kFitLinesSource =
+    "Löw et al. 2012, published fits as transcribed by bbm (A and Ks rounded to 5 decimals)";
+
+// `source` names the input in errors ("FILE:LINE: ...").
+std::vector<MaterialFile> importSupplement(std::string_view text, const std::string& source);
+// The metric is not on the lines: it comes from the file name (low_cooktorrance_E1.fit) or, failing
+// that, from a header comment naming "E1 fits"/"E2 fits".
+std::vector<MaterialFile> importFitLines(std::string_view text, const std::string& source);
+
+// Gathers fits from many sources into one MaterialFile per material. Where two sources give the same
+// MODEL:METRIC for a material, the supplement's text (6 significant decimals) beats the .fit lines (5),
+// and among sources of the same kind the later one wins.
+class Importer {
+ public:
+  // Detects the kind of file from its content; throws InputError for a file of neither kind.
+  void addFile(const std::filesystem::path& path);
+  void add(std::vector<MaterialFile> materials, int precision);
+  // Merges the gathered fits into `existing` (fits of the same id are replaced, others kept).
+  MaterialFile mergeInto(MaterialFile existing, const std::string& name) const;
+  std::vector<std::string> names() const;
+  size_t fitCount() const;
+
+ private:
+  struct Entry {
+    MaterialFile material;
+    std::map<std::string, int> precision;  // per fit id
+  };
+  std::map<std::string, Entry> entries_;
+};
+
+}  // namespace glossy

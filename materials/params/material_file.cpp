@@ -1,0 +1,325 @@
+#include "materials/params/material_file.h"
+
+#include "materials/core/input_error.h"
+#include "materials/models/registry.h"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace glossy {
+
+namespace {
+
+constexpr std::string_view kMetrics[] = {"E1", "E2"};
+
+std::string quoteList(std::span<const std::string_view> items) {
+  std::string s;
+  for (auto i : items) s += (s.empty() ? "" : ", ") + std::string(i);
+  return s;
+}
+
+size_t modelRank(const std::string& model) {
+  auto models = analyticModels();
+  for (size_t i = 0; i < models.size(); ++i)
+    if (models[i].name == model) return i;
+  return models.size();
+}
+
+bool gridBefore(const Fit& a, const Fit& b) {
+  const size_t ra = modelRank(a.id.model), rb = modelRank(b.id.model);
+  return ra != rb ? ra < rb : a.id.metric < b.id.metric;
+}
+
+std::string formatNumber(double v) {
+  char buf[64];
+  // Shortest digits that read back exactly; positional for everyday magnitudes ("0.0001", not "1e-04").
+  const double mag = std::abs(v);
+  const auto format = (mag == 0.0 || (mag >= 1e-6 && mag < 1e15)) ? std::chars_format::fixed : std::chars_format::general;
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v, format);
+  std::string s(buf, end);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";  // keep floats floats in TOML
+  return s;
+}
+
+std::string quoteToml(std::string_view s) {
+  std::string out = "\"";
+  for (char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char buf[8];
+          std::snprintf(buf, sizeof buf, "\\u%04x", c);
+          out += buf;
+        } else {
+          out += c;
+        }
+    }
+  }
+  return out + "\"";
+}
+
+// "FILE:LINE: " for a node with a known position, else "FILE: ".
+std::string at(const std::string& source, const toml::node& node) {
+  const auto& pos = node.source().begin;
+  if (pos.line == 0) return source + ": ";
+  return source + ":" + std::to_string(pos.line) + ": ";
+}
+
+std::optional<double> asNumber(const toml::node& node) {
+  if (auto i = node.as_integer()) return static_cast<double>(i->get());
+  if (auto f = node.as_floating_point()) return f->get();
+  return std::nullopt;
+}
+
+std::string fitContext(const std::string& source, size_t index, const FitId& id) {
+  std::string s = source + "fit " + std::to_string(index + 1);
+  if (!id.model.empty()) s += " (" + id.model + ":" + (id.metric.empty() ? "?" : id.metric) + ")";
+  return s;
+}
+
+std::string requiredString(const toml::table& t, std::string_view key, const std::string& where) {
+  const toml::node* n = t.get(key);
+  if (!n) throw InputError(where + ": missing key '" + std::string(key) + "'");
+  if (!n->is_string()) throw InputError(where + ": key '" + std::string(key) + "' must be a string");
+  return n->as_string()->get();
+}
+
+Fit readFit(const toml::table& t, size_t index, const std::string& source) {
+  Fit fit;
+  if (const toml::node* m = t.get("model"); m && m->is_string()) fit.id.model = m->as_string()->get();
+  if (const toml::node* m = t.get("metric"); m && m->is_string()) fit.id.metric = m->as_string()->get();
+  const std::string where = at(source, t) + fitContext("", index, fit.id);
+
+  fit.id.model = requiredString(t, "model", where);
+  const ModelInfo* model = findModel(fit.id.model);
+  if (!model)
+    throw InputError(where + ": key 'model': unknown model '" + fit.id.model + "' (known: " + knownModelNames() + ")");
+  fit.id.metric = requiredString(t, "metric", where);
+  if (std::find(std::begin(kMetrics), std::end(kMetrics), fit.id.metric) == std::end(kMetrics))
+    throw InputError(where + ": key 'metric': must be E1 or E2, got '" + fit.id.metric + "'");
+
+  for (auto&& [k, node] : t) {
+    const std::string key(k.str());
+    const std::string here = at(source, node) + fitContext("", index, fit.id) + ": key '" + key + "'";
+    if (key == "model" || key == "metric") continue;
+    if (key == "source") {
+      if (!node.is_string()) throw InputError(here + ": must be a string");
+      fit.source = node.as_string()->get();
+      continue;
+    }
+    auto spec = std::find_if(model->params.begin(), model->params.end(), [&](const ParamSpec& s) { return s.key == key; });
+    if (spec == model->params.end()) {
+      std::vector<std::string_view> keys{"model", "metric"};
+      for (const ParamSpec& s : model->params) keys.push_back(s.key);
+      keys.push_back("source");
+      throw InputError(here + ": unknown key for the " + fit.id.model + " model (its keys: " + quoteList(keys) + ")");
+    }
+    switch (spec->kind) {
+      case ParamKind::Scalar: {
+        auto v = asNumber(node);
+        if (!v) throw InputError(here + ": must be a number");
+        fit.params.set(key, *v);
+        break;
+      }
+      case ParamKind::Rgb: {
+        const toml::array* arr = node.as_array();
+        if (!arr || arr->size() != 3) throw InputError(here + ": must be an array of 3 numbers [R, G, B]");
+        Rgb rgb;
+        for (int c = 0; c < 3; ++c) {
+          auto v = asNumber(*arr->get(size_t(c)));
+          if (!v) throw InputError(here + ": must be an array of 3 numbers [R, G, B]");
+          rgb[c] = *v;
+        }
+        fit.params.set(key, rgb);
+        break;
+      }
+      case ParamKind::Choice: {
+        if (!node.is_string()) throw InputError(here + ": must be one of " + quoteList(spec->choices));
+        fit.params.set(key, node.as_string()->get());
+        break;
+      }
+    }
+  }
+  validateFit(fit, where);
+  return fit;
+}
+
+}  // namespace
+
+FitId FitId::parse(std::string_view text, std::string_view context) {
+  const auto colon = text.find(':');
+  FitId id;
+  if (colon == std::string_view::npos)
+    throw InputError(std::string(context) + ": '" + std::string(text) + "' is not MODEL:METRIC (e.g. microfacet:E2)");
+  id.model = std::string(text.substr(0, colon));
+  id.metric = std::string(text.substr(colon + 1));
+  if (!findModel(id.model))
+    throw InputError(std::string(context) + ": unknown model '" + id.model + "' (known: " + knownModelNames() + ")");
+  if (std::find(std::begin(kMetrics), std::end(kMetrics), id.metric) == std::end(kMetrics))
+    throw InputError(std::string(context) + ": metric must be E1 or E2, got '" + id.metric + "'");
+  return id;
+}
+
+const Fit* MaterialFile::find(const FitId& id) const {
+  for (const Fit& f : fits)
+    if (f.id == id) return &f;
+  return nullptr;
+}
+
+void MaterialFile::put(Fit fit) {
+  auto same = std::find_if(fits.begin(), fits.end(), [&](const Fit& f) { return f.id == fit.id; });
+  if (same != fits.end()) fits.erase(same);
+  fits.insert(std::upper_bound(fits.begin(), fits.end(), fit, gridBefore), std::move(fit));
+}
+
+void validateFit(const Fit& fit, const std::string& context) {
+  const ModelInfo* model = findModel(fit.id.model);
+  if (!model) throw InputError(context + ": unknown model '" + fit.id.model + "' (known: " + knownModelNames() + ")");
+  for (const auto& [key, value] : fit.params.values()) {
+    auto spec = std::find_if(model->params.begin(), model->params.end(), [&](const ParamSpec& s) { return s.key == key; });
+    if (spec == model->params.end()) throw InputError(context + ": key '" + key + "': unknown for the " + fit.id.model + " model");
+  }
+  for (const ParamSpec& spec : model->params) {
+    const std::string here = context + ": key '" + std::string(spec.key) + "'";
+    const ParamSet::Value* v = fit.params.find(spec.key);
+    if (!v) {
+      if (spec.optional) continue;
+      throw InputError(context + ": missing key '" + std::string(spec.key) + "' (" + std::string(spec.meaning) + ")");
+    }
+    auto check = [&](double x, const char* channel) {
+      const std::string what = here + (channel ? std::string(" (") + channel + ")" : std::string());
+      if (!std::isfinite(x)) throw InputError(what + ": must be finite, got " + formatNumber(x));
+      if (!satisfiesBound(x, spec.bound))
+        throw InputError(what + ": must be " + std::string(describeBound(spec.bound)) + ", got " + formatNumber(x));
+    };
+    switch (spec.kind) {
+      case ParamKind::Scalar:
+        if (!std::holds_alternative<double>(*v)) throw InputError(here + ": must be a number");
+        check(std::get<double>(*v), nullptr);
+        break;
+      case ParamKind::Rgb: {
+        if (!std::holds_alternative<Rgb>(*v)) throw InputError(here + ": must be an array of 3 numbers [R, G, B]");
+        const Rgb rgb = std::get<Rgb>(*v);
+        check(rgb.r, "R");
+        check(rgb.g, "G");
+        check(rgb.b, "B");
+        break;
+      }
+      case ParamKind::Choice: {
+        if (!std::holds_alternative<std::string>(*v)) throw InputError(here + ": must be a string");
+        const std::string& s = std::get<std::string>(*v);
+        if (std::find(spec.choices.begin(), spec.choices.end(), s) == spec.choices.end())
+          throw InputError(here + ": must be one of " + quoteList(spec.choices) + ", got '" + s + "'");
+        break;
+      }
+    }
+  }
+}
+
+MaterialFile parseMaterialToml(std::string_view text, const std::string& source) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    const auto& pos = e.source().begin;
+    throw InputError(source + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column) +
+                     ": TOML syntax error: " + std::string(e.description()));
+  }
+  MaterialFile m;
+  m.path = source;
+  for (auto&& [k, node] : root) {
+    const std::string key(k.str());
+    const std::string here = at(source, node) + "key '" + key + "'";
+    if (key == "name" || key == "measured" || key == "source") {
+      if (!node.is_string()) throw InputError(here + ": must be a string");
+      const std::string value = node.as_string()->get();
+      (key == "name" ? m.name : key == "measured" ? m.measured : m.source) = value;
+    } else if (key == "fit") {
+      const toml::array* fits = node.as_array();
+      if (!fits || !fits->is_array_of_tables())
+        throw InputError(here + ": must be an array of tables ([[fit]] sections)");
+      for (size_t i = 0; i < fits->size(); ++i) {
+        Fit fit = readFit(*fits->get(i)->as_table(), i, source);
+        if (m.find(fit.id))
+          throw InputError(at(source, *fits->get(i)) + fitContext("", i, fit.id) + ": a second " + fit.id.str() +
+                           " fit (a material has at most one fit per model and metric)");
+        m.put(std::move(fit));
+      }
+    } else {
+      throw InputError(here + ": unknown key (a material file has name, measured, source and [[fit]] sections)");
+    }
+  }
+  if (m.name.empty()) throw InputError(source + ": missing key 'name'");
+  return m;
+}
+
+MaterialFile loadMaterialFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a material file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot open material file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path.string() + ": read failed");
+  return parseMaterialToml(text.str(), path.string());
+}
+
+std::string toToml(const MaterialFile& m) {
+  std::ostringstream out;
+  out << "# glossy material parameter file: see docs/materials.md\n";
+  out << "name = " << quoteToml(m.name) << "\n";
+  if (!m.measured.empty()) out << "measured = " << quoteToml(m.measured) << "\n";
+  if (!m.source.empty()) out << "source = " << quoteToml(m.source) << "\n";
+  for (const Fit& fit : m.fits) {
+    const ModelInfo* model = findModel(fit.id.model);
+    out << "\n[[fit]]\nmodel = " << quoteToml(fit.id.model) << "\nmetric = " << quoteToml(fit.id.metric) << "\n";
+    for (const ParamSpec& spec : model->params) {
+      const ParamSet::Value* v = fit.params.find(spec.key);
+      if (!v) continue;
+      out << spec.key << " = ";
+      if (auto d = std::get_if<double>(v)) out << formatNumber(*d);
+      if (auto c = std::get_if<Rgb>(v))
+        out << "[" << formatNumber(c->r) << ", " << formatNumber(c->g) << ", " << formatNumber(c->b) << "]";
+      if (auto s = std::get_if<std::string>(v)) out << quoteToml(*s);
+      out << "\n";
+    }
+    if (!fit.source.empty()) out << "source = " << quoteToml(fit.source) << "\n";
+  }
+  return out.str();
+}
+
+Brdf makeBrdf(const Fit& fit) {
+  const ModelInfo* model = findModel(fit.id.model);
+  if (!model) throw InputError("unknown model '" + fit.id.model + "'");
+  return model->make(fit.params);
+}
+
+std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& m, const std::filesystem::path& merlDir) {
+  if (m.measured.empty()) return std::nullopt;
+  const std::filesystem::path name = m.measured;
+  std::vector<std::filesystem::path> candidates;
+  if (name.is_absolute()) candidates.push_back(name);
+  if (!merlDir.empty()) candidates.push_back(merlDir / name);
+  if (const char* env = std::getenv("GLOSSY_MERL_DIR"); env && *env) candidates.push_back(std::filesystem::path(env) / name);
+  if (!name.is_absolute()) candidates.push_back(name);
+  std::error_code ec;
+  for (const auto& c : candidates) {
+    if (std::filesystem::is_regular_file(c, ec)) return c;
+    std::filesystem::path xz = c;
+    xz += ".xz";
+    if (std::filesystem::is_regular_file(xz, ec)) return xz;
+  }
+  return std::nullopt;
+}
+
+}  // namespace glossy

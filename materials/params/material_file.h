@@ -1,0 +1,64 @@
+// Material parameter files (shared/spec/interfaces.md): one TOML file per material, holding the name, the
+// optional measured table and the fits, each fit named MODEL:METRIC.
+#pragma once
+
+#include "materials/models/brdf.h"
+#include "materials/params/param_set.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace glossy {
+
+struct FitId {
+  std::string model;   // a registry name: "cook-torrance"
+  std::string metric;  // "E1" | "E2"
+  std::string str() const { return model + ":" + metric; }
+  bool operator==(const FitId&) const = default;
+  // Parses "MODEL:METRIC"; throws InputError mentioning `context` (e.g. "--fit") when malformed or unknown.
+  static FitId parse(std::string_view text, std::string_view context);
+};
+
+struct Fit {
+  FitId id;
+  ParamSet params;
+  std::string source;  // provenance of this fit when it differs from the material's
+  bool operator==(const Fit&) const = default;
+};
+
+struct MaterialFile {
+  std::string name;
+  std::string measured;  // MERL file name, resolved by resolveMeasured(); empty if none
+  std::string source;
+  std::vector<Fit> fits;  // at most one per FitId, kept in the comparison grid's order
+  std::filesystem::path path;  // where it was loaded from, for messages; empty if built in memory
+
+  const Fit* find(const FitId& id) const;
+  // Adds the fit, or replaces the one with the same id; keeps the grid order.
+  void put(Fit fit);
+};
+
+// Throws InputError "FILE:LINE: fit K (MODEL:METRIC): key 'k' ..." for any missing, unknown, non-finite or
+// out-of-range value, and for TOML syntax errors.
+MaterialFile loadMaterialFile(const std::filesystem::path& path);
+MaterialFile parseMaterialToml(std::string_view text, const std::string& source);
+// Checks a fit against its model's declaration (required keys, kinds, bounds, finiteness).
+void validateFit(const Fit& fit, const std::string& context);
+
+std::string toToml(const MaterialFile& material);
+
+// The BRDF of one fit; the fit must have been validated.
+Brdf makeBrdf(const Fit& fit);
+
+// The measured table's path: as given if it exists, else under merlDir, else under $GLOSSY_MERL_DIR; each
+// also as NAME.xz. nullopt when the material names none or none exists.
+std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& material,
+                                                     const std::filesystem::path& merlDir = {});
+
+// The measured file name every MERL material has: "alum-bronze" -> "alum-bronze.binary".
+inline std::string merlFileName(const std::string& material) { return material + ".binary"; }
+
+}  // namespace glossy

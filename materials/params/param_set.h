@@ -1,0 +1,54 @@
+// The parameters of one fit, and the declaration each model makes of the parameters it takes.
+// The parameter-file loader validates against a model's ParamSpec list, so a model declares its keys,
+// kinds and ranges once and the loader, writer and importer follow.
+#pragma once
+
+#include "materials/core/types.h"
+
+#include <map>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace glossy {
+
+enum class ParamKind { Rgb, Scalar, Choice };
+enum class ParamBound { None, NonNegative, Positive, AboveOne };
+
+struct ParamSpec {
+  std::string_view key;
+  ParamKind kind;
+  ParamBound bound = ParamBound::None;
+  std::string_view meaning;
+  std::span<const std::string_view> choices = {};  // ParamKind::Choice only; the first is the default
+  bool optional = false;
+};
+
+// Human text for a bound: "≥ 0", "> 0", "> 1".
+std::string_view describeBound(ParamBound bound);
+bool satisfiesBound(double value, ParamBound bound);
+
+class ParamSet {
+ public:
+  using Value = std::variant<double, Rgb, std::string>;
+
+  void set(std::string key, Value value) { values_[std::move(key)] = std::move(value); }
+  bool has(std::string_view key) const { return values_.find(key) != values_.end(); }
+  const Value* find(std::string_view key) const;
+
+  // These throw std::logic_error when the key is absent or of another kind: the loader has validated
+  // every fit against its model's spec, so that is a programming error, not bad input.
+  double scalar(std::string_view key) const;
+  Rgb rgb(std::string_view key) const;
+  // An optional choice that is absent reads as its default (the first choice).
+  std::string choice(std::string_view key, std::span<const ParamSpec> specs) const;
+
+  const std::map<std::string, Value, std::less<>>& values() const { return values_; }
+  bool operator==(const ParamSet&) const = default;
+
+ private:
+  std::map<std::string, Value, std::less<>> values_;
+};
+
+}  // namespace glossy

@@ -1,0 +1,23 @@
+// Each subcommand registers its options on the parent CLI11 app and returns how to run it.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <functional>
+
+namespace glossy::cli {
+
+struct Command {
+  CLI::App* app;
+  std::function<int()> run;  // exit status; throws InputError for bad input
+};
+
+Command addEvalCommand(CLI::App& parent);
+Command addImportCommand(CLI::App& parent);
+Command addListCommand(CLI::App& parent);
+
+// The committed material library: ./materials when run from a checkout, else the source tree's.
+std::filesystem::path defaultMaterialsDir();
+
+}  // namespace glossy::cli

@@ -1,0 +1,125 @@
+// glossy eval: BRDF values for direction pairs read from stdin (shared/spec/interfaces.md).
+#include "materials/core/input_error.h"
+#include "materials/models/brdf.h"
+#include "materials/params/material_file.h"
+#include "renderer/cli/command.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace glossy::cli {
+
+namespace {
+
+struct EvalOptions {
+  std::string material, fit, measured, smoothFresnel;
+  bool pdf = false;
+};
+
+// "Lx,Ly,Lz,Vx,Vy,Vz" → two unit vectors; throws InputError naming the stdin line.
+std::pair<Vec3, Vec3> parseDirections(const std::string& line, size_t number) {
+  double v[6];
+  const char* p = line.data();
+  const char* end = line.data() + line.size();
+  const std::string where = "stdin line " + std::to_string(number);
+  for (int i = 0; i < 6; ++i) {
+    while (p < end && (*p == ' ' || *p == '\t')) ++p;
+    if (p < end && *p == '+') ++p;
+    auto [next, ec] = std::from_chars(p, end, v[i]);
+    if (ec != std::errc()) throw InputError(where + ": expected 6 comma-separated numbers Lx,Ly,Lz,Vx,Vy,Vz, got '" + line + "'");
+    p = next;
+    while (p < end && (*p == ' ' || *p == '\t')) ++p;
+    if (i < 5) {
+      if (p == end || *p != ',') throw InputError(where + ": expected 6 comma-separated numbers Lx,Ly,Lz,Vx,Vy,Vz, got '" + line + "'");
+      ++p;
+    }
+  }
+  if (p != end) throw InputError(where + ": trailing text after 6 numbers in '" + line + "'");
+  Vec3 L(v[0], v[1], v[2]), V(v[3], v[4], v[5]);
+  for (Vec3* d : {&L, &V}) {
+    const double len = std::sqrt(d->x * d->x + d->y * d->y + d->z * d->z);
+    if (!std::isfinite(len) || len == 0.0) throw InputError(where + ": a direction is zero or not finite");
+    *d /= len;
+  }
+  return {L, V};
+}
+
+void appendNumber(std::string& out, double v) {
+  char buf[32];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);  // shortest form that reads back exactly
+  out.append(buf, end);
+}
+
+int runEval(const EvalOptions& o) {
+  Brdf brdf;
+  if (!o.measured.empty()) {
+    brdf = Measured{std::make_shared<const MerlTable>(MerlTable::load(o.measured))};
+  } else {
+    const MaterialFile material = loadMaterialFile(o.material);
+    const FitId id = FitId::parse(o.fit, "--fit");
+    const Fit* fit = material.find(id);
+    if (!fit) throw InputError(o.material + ": has no " + id.str() + " fit");
+    Fit chosen = *fit;
+    if (!o.smoothFresnel.empty()) {
+      if (id.model != "smooth") throw InputError("--smooth-fresnel applies to smooth fits only, not " + id.str());
+      chosen.params.set("fresnel", o.smoothFresnel);
+    }
+    brdf = makeBrdf(chosen);
+  }
+
+  // Parse everything first: bad input produces an error and no partial output.
+  std::vector<std::pair<Vec3, Vec3>> pairs;
+  std::string line;
+  for (size_t n = 1; std::getline(std::cin, line); ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    pairs.push_back(parseDirections(line, n));
+  }
+  std::string out;
+  out.reserve(pairs.size() * 80);
+  for (const auto& [L, V] : pairs) {
+    const Rgb rho = eval(brdf, L, V);
+    appendNumber(out, rho.r);
+    out += ',';
+    appendNumber(out, rho.g);
+    out += ',';
+    appendNumber(out, rho.b);
+    if (o.pdf) {
+      out += ',';
+      appendNumber(out, pdf(brdf, L, V));
+    }
+    out += '\n';
+  }
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  return std::fflush(stdout) == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+Command addEvalCommand(CLI::App& parent) {
+  auto o = std::make_shared<EvalOptions>();
+  CLI::App* app = parent.add_subcommand("eval",
+      "Evaluate a BRDF. Reads lines Lx,Ly,Lz,Vx,Vy,Vz (local frame, N = +z, L toward the light, V toward the "
+      "viewer) on stdin; writes R,G,B (with --pdf: R,G,B,pdf) per line on stdout in full double precision.");
+  auto* material = app->add_option("--material", o->material, "Material parameter file (TOML)");
+  auto* fit = app->add_option("--fit", o->fit, "Which fit of the material: MODEL:METRIC, e.g. microfacet:E2");
+  auto* measured = app->add_option("--measured", o->measured, "MERL .binary (or .binary.xz) table to evaluate instead");
+  app->add_flag("--pdf", o->pdf, "Also print the solid-angle pdf of the BRDF's sampler for L given V");
+  app->add_option("--smooth-fresnel", o->smoothFresnel,
+                  "Override a smooth fit's Fresnel angle: projected (the fits' convention) or vh")
+      ->check(CLI::IsMember({"projected", "vh"}));
+  material->needs(fit);
+  fit->needs(material);
+  measured->excludes(material)->excludes(fit);
+  app->callback([app, measured, material] {
+    if (measured->count() == 0 && material->count() == 0)
+      throw CLI::RequiredError("eval: give --material F --fit MODEL:METRIC, or --measured F.binary");
+  });
+  return {app, [o] { return runEval(*o); }};
+}
+
+}  // namespace glossy::cli

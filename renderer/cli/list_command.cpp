@@ -1,0 +1,94 @@
+// glossy list: the material library at a glance, with each fit's head-on albedo.
+#include "materials/core/input_error.h"
+#include "materials/models/albedo.h"
+#include "materials/models/registry.h"
+#include "materials/params/material_file.h"
+#include "renderer/cli/command.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace glossy::cli {
+
+namespace {
+
+struct ListOptions {
+  std::vector<std::string> paths;
+  std::string merlDir;
+};
+
+// The supplement's grid order.
+const FitId kColumns[] = {{"microfacet", "E2"}, {"smooth", "E2"}, {"ashikhmin-shirley", "E1"},
+                          {"ashikhmin-shirley", "E2"}, {"cook-torrance", "E1"}, {"cook-torrance", "E2"}};
+const char* kColumnLabels[] = {"Micro E2", "Smooth E2", "AS E1", "AS E2", "CT E1", "CT E2"};
+
+std::vector<std::filesystem::path> collect(const std::vector<std::string>& paths) {
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const std::string& p : paths) {
+    if (std::filesystem::is_directory(p, ec)) {
+      for (const auto& e : std::filesystem::directory_iterator(p))
+        if (e.path().extension() == ".toml") files.push_back(e.path());
+    } else {
+      files.emplace_back(p);
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+int runList(const ListOptions& o) {
+  std::vector<std::string> paths = o.paths;
+  if (paths.empty()) paths.push_back(defaultMaterialsDir().string());
+  const auto files = collect(paths);
+  if (files.empty()) throw InputError(paths.front() + ": no .toml material files");
+
+  std::printf("Head-on directional albedo a(N) = ∫ρ(L,N) cos θ_L dω_L of each fit (mean of R, G, B);\n"
+              "'measured' says whether the material's MERL table was found (--merl-dir, $GLOSSY_MERL_DIR).\n\n");
+  std::printf("%-26s %-9s", "material", "measured");
+  for (const char* l : kColumnLabels) std::printf(" %9s", l);
+  std::printf("\n");
+  int bad = 0, fits = 0;
+  for (const auto& file : files) {
+    MaterialFile m;
+    try {
+      m = loadMaterialFile(file);
+    } catch (const InputError& e) {
+      std::cerr << "glossy: " << e.what() << "\n";
+      ++bad;
+      continue;
+    }
+    std::printf("%-26s %-9s", m.name.c_str(), m.measured.empty() ? "-" : resolveMeasured(m, o.merlDir) ? "found" : "missing");
+    for (const FitId& id : kColumns) {
+      const Fit* f = m.find(id);
+      if (!f) {
+        std::printf(" %9s", "-");
+        continue;
+      }
+      const Rgb a = albedoAtNormalIncidence(makeBrdf(*f));
+      std::printf(" %9.4f", (a.r + a.g + a.b) / 3.0);
+      ++fits;
+    }
+    std::printf("\n");
+  }
+  std::printf("\n%zu materials, %d of the grid's fits", files.size() - size_t(bad), fits);
+  if (bad) std::printf(", %d unreadable (see stderr)", bad);
+  std::printf("\n");
+  return bad ? 2 : 0;
+}
+
+}  // namespace
+
+Command addListCommand(CLI::App& parent) {
+  auto o = std::make_shared<ListOptions>();
+  CLI::App* app = parent.add_subcommand("list",
+      "List material parameter files with the head-on albedo of each fit of the comparison grid "
+      "(a quick consistency check: the fits of one material should roughly agree).");
+  app->add_option("paths", o->paths, "Material files or folders (default: the committed library, materials/)");
+  app->add_option("--merl-dir", o->merlDir, "Folder holding the MERL .binary tables");
+  return {app, [o] { return runList(*o); }};
+}
+
+}  // namespace glossy::cli

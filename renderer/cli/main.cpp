@@ -1,0 +1,49 @@
+// glossy: compare analytic BRDF models with measured ones. Exit status (shared/spec/interfaces.md):
+// 0 success, 2 bad usage or bad input (one line on stderr naming the file and problem), 1 anything else.
+#include "materials/core/input_error.h"
+#include "renderer/cli/command.h"
+
+#include <iostream>
+#include <vector>
+
+namespace glossy::cli {
+
+std::filesystem::path defaultMaterialsDir() {
+  std::error_code ec;
+  if (std::filesystem::is_directory("materials", ec) && std::filesystem::exists("materials/alum-bronze.toml", ec))
+    return "materials";
+  return std::filesystem::path(GLOSSY_SOURCE_DIR) / "materials";
+}
+
+}  // namespace glossy::cli
+
+int main(int argc, char** argv) {
+  using namespace glossy;
+  CLI::App app{"glossy " GLOSSY_VERSION ": render and compare glossy BRDF models (Löw et al. 2012) with measured data"};
+  app.set_version_flag("--version", std::string(GLOSSY_VERSION));
+  app.require_subcommand(1);
+  std::vector<cli::Command> commands = {cli::addEvalCommand(app), cli::addImportCommand(app), cli::addListCommand(app)};
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::string what = e.what();
+    for (char& c : what)
+      if (c == '\n') c = ' ';
+    std::cerr << "glossy: " << what << " (see glossy --help)\n";
+    return 2;
+  }
+
+  try {
+    for (const cli::Command& c : commands)
+      if (c.app->parsed()) return c.run();
+    return 2;
+  } catch (const InputError& e) {
+    std::cerr << "glossy: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "glossy: " << e.what() << "\n";
+    return 1;
+  }
+}
