@@ -14,6 +14,9 @@
 
 namespace glossy {
 
+// Checks one value against its declaration; `here` names file, fit and key.
+void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::string& here);
+
 namespace {
 
 constexpr std::string_view kMetrics[] = {"E1", "E2"};
@@ -149,6 +152,7 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
         break;
       }
     }
+    checkParam(*spec, *fit.params.find(key), here);
   }
   validateFit(fit, where);
   return fit;
@@ -182,48 +186,47 @@ void MaterialFile::put(Fit fit) {
   fits.insert(std::upper_bound(fits.begin(), fits.end(), fit, gridBefore), std::move(fit));
 }
 
+void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::string& here) {
+  auto check = [&](double x, const char* channel) {
+    const std::string what = here + (channel ? std::string(" (") + channel + ")" : std::string());
+    if (!std::isfinite(x)) throw InputError(what + ": must be finite, got " + formatNumber(x));
+    if (!satisfiesBound(x, spec.bound))
+      throw InputError(what + ": must be " + std::string(describeBound(spec.bound)) + ", got " + formatNumber(x));
+  };
+  switch (spec.kind) {
+    case ParamKind::Scalar:
+      if (!std::holds_alternative<double>(v)) throw InputError(here + ": must be a number");
+      check(std::get<double>(v), nullptr);
+      break;
+    case ParamKind::Rgb: {
+      if (!std::holds_alternative<Rgb>(v)) throw InputError(here + ": must be an array of 3 numbers [R, G, B]");
+      const Rgb rgb = std::get<Rgb>(v);
+      check(rgb.r, "R");
+      check(rgb.g, "G");
+      check(rgb.b, "B");
+      break;
+    }
+    case ParamKind::Choice: {
+      if (!std::holds_alternative<std::string>(v)) throw InputError(here + ": must be a string");
+      const std::string& s = std::get<std::string>(v);
+      if (std::find(spec.choices.begin(), spec.choices.end(), s) == spec.choices.end())
+        throw InputError(here + ": must be one of " + quoteList(spec.choices) + ", got '" + s + "'");
+      break;
+    }
+  }
+}
+
 void validateFit(const Fit& fit, const std::string& context) {
   const ModelInfo* model = findModel(fit.id.model);
   if (!model) throw InputError(context + ": unknown model '" + fit.id.model + "' (known: " + knownModelNames() + ")");
   for (const auto& [key, value] : fit.params.values()) {
     auto spec = std::find_if(model->params.begin(), model->params.end(), [&](const ParamSpec& s) { return s.key == key; });
     if (spec == model->params.end()) throw InputError(context + ": key '" + key + "': unknown for the " + fit.id.model + " model");
+    checkParam(*spec, value, context + ": key '" + key + "'");
   }
-  for (const ParamSpec& spec : model->params) {
-    const std::string here = context + ": key '" + std::string(spec.key) + "'";
-    const ParamSet::Value* v = fit.params.find(spec.key);
-    if (!v) {
-      if (spec.optional) continue;
+  for (const ParamSpec& spec : model->params)
+    if (!spec.optional && !fit.params.has(spec.key))
       throw InputError(context + ": missing key '" + std::string(spec.key) + "' (" + std::string(spec.meaning) + ")");
-    }
-    auto check = [&](double x, const char* channel) {
-      const std::string what = here + (channel ? std::string(" (") + channel + ")" : std::string());
-      if (!std::isfinite(x)) throw InputError(what + ": must be finite, got " + formatNumber(x));
-      if (!satisfiesBound(x, spec.bound))
-        throw InputError(what + ": must be " + std::string(describeBound(spec.bound)) + ", got " + formatNumber(x));
-    };
-    switch (spec.kind) {
-      case ParamKind::Scalar:
-        if (!std::holds_alternative<double>(*v)) throw InputError(here + ": must be a number");
-        check(std::get<double>(*v), nullptr);
-        break;
-      case ParamKind::Rgb: {
-        if (!std::holds_alternative<Rgb>(*v)) throw InputError(here + ": must be an array of 3 numbers [R, G, B]");
-        const Rgb rgb = std::get<Rgb>(*v);
-        check(rgb.r, "R");
-        check(rgb.g, "G");
-        check(rgb.b, "B");
-        break;
-      }
-      case ParamKind::Choice: {
-        if (!std::holds_alternative<std::string>(*v)) throw InputError(here + ": must be a string");
-        const std::string& s = std::get<std::string>(*v);
-        if (std::find(spec.choices.begin(), spec.choices.end(), s) == spec.choices.end())
-          throw InputError(here + ": must be one of " + quoteList(spec.choices) + ", got '" + s + "'");
-        break;
-      }
-    }
-  }
 }
 
 MaterialFile parseMaterialToml(std::string_view text, const std::string& source) {

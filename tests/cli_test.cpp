@@ -1,0 +1,170 @@
+// The glossy command as the interface contract states it: eval (test vectors, --pdf), import (the
+// committed library regenerates byte for byte), exit status 2 with one line naming the file for bad input.
+#include "tests/support/test_support.h"
+
+#include <cmath>
+#include <map>
+#include <sstream>
+
+namespace glossy::test {
+
+namespace {
+
+std::vector<std::vector<double>> parseOutput(const std::string& out) {
+  std::vector<std::vector<double>> rows;
+  std::istringstream in(out);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream s(line);
+    std::string cell;
+    while (std::getline(s, cell, ',')) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string directions(const std::vector<std::map<std::string, std::string>>& rows) {
+  std::string in;
+  for (const auto& r : rows)
+    in += r.at("Lx") + "," + r.at("Ly") + "," + r.at("Lz") + "," + r.at("Vx") + "," + r.at("Vy") + "," + r.at("Vz") + "\n";
+  return in;
+}
+
+void expectOneLineError(const RunResult& r, const std::string& mention) {
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
+  EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
+}
+
+}  // namespace
+
+TEST(CliEval, ReproducesEveryAnalyticTestVector) {
+  GLOSSY_REQUIRE_SHARED("testvectors/brdf_eval.csv");
+  std::map<std::pair<std::string, std::string>, std::vector<std::map<std::string, std::string>>> groups;
+  for (const auto& r : readCsv(sharedDir() / "testvectors/brdf_eval.csv"))
+    if (r.at("fit") != "measured") groups[{r.at("material"), r.at("fit")}].push_back(r);
+  ASSERT_EQ(groups.size(), 36u);
+  for (const auto& [key, rows] : groups) {
+    const RunResult r = runGlossy({"eval", "--material", (materialsDir() / (key.first + ".toml")).string(), "--fit", key.second},
+                                  directions(rows));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto got = parseOutput(r.out);
+    ASSERT_EQ(got.size(), rows.size());
+    for (size_t i = 0; i < rows.size(); ++i) {
+      ASSERT_EQ(got[i].size(), 3u);
+      for (int c = 0; c < 3; ++c) {
+        const double want = std::stod(rows[i].at(std::string(1, "RGB"[c])));
+        EXPECT_NEAR(got[i][c], want, std::max(1e-5 * std::abs(want), 1e-12)) << key.first << " " << key.second;
+      }
+    }
+  }
+}
+
+TEST(CliEval, ReproducesTheMeasuredTestVectorsFromTheCompressedTable) {
+  GLOSSY_REQUIRE_SHARED("testvectors/brdf_eval.csv");
+  GLOSSY_REQUIRE_SHARED("merl/blue-rubber.binary.xz");
+  std::vector<std::map<std::string, std::string>> rows;
+  for (const auto& r : readCsv(sharedDir() / "testvectors/brdf_eval.csv"))
+    if (r.at("fit") == "measured") rows.push_back(r);
+  const RunResult r = runGlossy({"eval", "--measured", (sharedDir() / "merl/blue-rubber.binary.xz").string()}, directions(rows));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto got = parseOutput(r.out);
+  ASSERT_EQ(got.size(), rows.size());
+  size_t exact = 0;
+  for (size_t i = 0; i < rows.size(); ++i)
+    exact += got[i] == std::vector<double>{std::stod(rows[i].at("R")), std::stod(rows[i].at("G")), std::stod(rows[i].at("B"))};
+  EXPECT_GE(exact, rows.size() - 2) << "only bin-edge rows may differ (see TestVectors.MeasuredRowsThroughTheApi)";
+}
+
+TEST(CliEval, PdfColumnIsTheSamplersDensity) {
+  const RunResult r = runGlossy({"eval", "--material", (materialsDir() / "gold-paint.toml").string(), "--fit", "cook-torrance:E2", "--pdf"},
+                                "0,0,1,0,0,1\n0.6,0,0.8,-0.6,0,0.8\n 0.3 , 0.4 , 0 , 0,0,1\n0,0,2,0,0,3\n");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto got = parseOutput(r.out);
+  ASSERT_EQ(got.size(), 4u);
+  EXPECT_DOUBLE_EQ(got[0][3], 1.0 / M_PI);
+  EXPECT_DOUBLE_EQ(got[1][3], 0.8 / M_PI);
+  EXPECT_EQ(got[2][3], 0.0);
+  EXPECT_EQ(got[3], got[0]) << "directions are normalised";
+}
+
+TEST(CliEval, BadInputExitsTwoWithOneLineNamingTheFile) {
+  TempDir tmp;
+  writeText(tmp / "broken.toml", "name = \"x\"\n[[fit]]\nmodel = \"cook-torrance\"\nmetric = \"E1\"\nkd = [0,0,0]\nks = [1,1,1]\nm = -1\neta = 1.5\n");
+  expectOneLineError(runGlossy({"eval", "--material", (tmp / "broken.toml").string(), "--fit", "cook-torrance:E1"}, "0,0,1,0,0,1\n"),
+                     "broken.toml:7: fit 1 (cook-torrance:E1): key 'm': must be > 0");
+  writeText(tmp / "truncated.binary", std::string(1000, '\0'));
+  expectOneLineError(runGlossy({"eval", "--measured", (tmp / "truncated.binary").string()}, "0,0,1,0,0,1\n"), "truncated.binary");
+  const std::string good = (materialsDir() / "chrome.toml").string();
+  expectOneLineError(runGlossy({"eval", "--material", good, "--fit", "cook-torrance:E1"}, "0,0,1,0,0,1\n0,0,1,0,x\n"), "stdin line 2");
+  expectOneLineError(runGlossy({"eval", "--material", good, "--fit", "cook-torrance:E1"}, "0,0,0,0,0,1\n"), "stdin line 1: a direction is zero");
+  expectOneLineError(runGlossy({"eval", "--material", good, "--fit", "lambertian:E1"}), "has no lambertian:E1 fit");
+  expectOneLineError(runGlossy({"eval", "--material", good, "--fit", "phong:E1"}), "unknown model 'phong'");
+  expectOneLineError(runGlossy({"eval", "--material", (tmp / "absent.toml").string(), "--fit", "smooth:E2"}), "absent.toml");
+  expectOneLineError(runGlossy({"eval", "--measured", (tmp / "absent.binary").string()}), "absent.binary");
+}
+
+TEST(Cli, UsageErrorsExitTwo) {
+  EXPECT_EQ(runGlossy({}).status, 2);
+  EXPECT_EQ(runGlossy({"frobnicate"}).status, 2);
+  EXPECT_EQ(runGlossy({"eval"}).status, 2);
+  EXPECT_EQ(runGlossy({"eval", "--material", "x.toml"}).status, 2) << "--material needs --fit";
+  EXPECT_EQ(runGlossy({"eval", "--measured", "a.binary", "--material", "x.toml", "--fit", "smooth:E2"}).status, 2);
+  EXPECT_EQ(runGlossy({"import"}).status, 2);
+}
+
+TEST(Cli, EverySubcommandHasHelp) {
+  for (const char* sub : {"eval", "import", "list"}) {
+    const RunResult r = runGlossy({sub, "--help"});
+    EXPECT_EQ(r.status, 0) << sub;
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << sub;
+  }
+  EXPECT_EQ(runGlossy({"--help"}).status, 0);
+}
+
+TEST(CliImport, RegeneratesTheCommittedLibraryByteForByte) {
+  GLOSSY_REQUIRE_SHARED("fits");
+  GLOSSY_REQUIRE_SHARED("seed/supplement.txt");
+  TempDir out;
+  std::vector<std::string> args = {"import"};
+  for (const auto& e : std::filesystem::directory_iterator(sharedDir() / "fits"))
+    if (e.path().extension() == ".fit") args.push_back(e.path().string());
+  args.push_back((sharedDir() / "seed/supplement.txt").string());
+  args.insert(args.end(), {"-o", out.path().string()});
+  const RunResult r = runGlossy(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(out.path())) {
+    const auto committed = materialsDir() / e.path().filename();
+    ASSERT_TRUE(std::filesystem::exists(committed)) << e.path().filename() << " is not committed";
+    EXPECT_EQ(readText(e.path()), readText(committed)) << e.path().filename() << " differs: run scripts/generate-materials";
+    ++files;
+  }
+  EXPECT_EQ(files, 100u);
+}
+
+TEST(CliImport, AMalformedExistingFileStopsTheImportBeforeAnythingIsWritten) {
+  GLOSSY_REQUIRE_SHARED("seed/supplement.txt");
+  TempDir out;
+  writeText(out / "chrome.toml", "name = \"chrome\"\n[[fit]]\nmodel = 3\n");
+  const RunResult r = runGlossy({"import", (sharedDir() / "seed/supplement.txt").string(), "-o", out.path().string()});
+  expectOneLineError(r, "chrome.toml");
+  EXPECT_FALSE(std::filesystem::exists(out / "alum-bronze.toml"));
+  const RunResult ok = runGlossy({"import", (sharedDir() / "seed/supplement.txt").string(), "-o", out.path().string(), "--replace"});
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_TRUE(std::filesystem::exists(out / "alum-bronze.toml"));
+  for (const auto& e : std::filesystem::directory_iterator(out.path()))
+    EXPECT_EQ(e.path().string().find(".tmp."), std::string::npos) << "temporary left behind: " << e.path();
+}
+
+TEST(CliList, ListsTheLibrary) {
+  const RunResult r = runGlossy({"list", materialsDir().string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("100 materials, 600 of the grid's fits"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("alum-bronze"), std::string::npos);
+}
+
+}  // namespace glossy::test

@@ -1,0 +1,170 @@
+// The parameter-file loader: every kind of bad value is an error naming the file, the fit and the key;
+// good files round-trip through the writer; every committed library file loads.
+#include "materials/core/input_error.h"
+#include "materials/params/material_file.h"
+#include "tests/support/test_support.h"
+
+namespace glossy::test {
+
+namespace {
+
+const char* kGood = R"(name = "test-material"
+measured = "test-material.binary"
+source = "hand-written"
+
+[[fit]]
+model = "cook-torrance"
+metric = "E1"
+kd = [0.1, 0.2, 0.3]
+ks = [0.05, 0.04, 0.03]
+m = 0.1
+eta = 1.5
+
+[[fit]]
+model = "smooth"
+metric = "E2"
+kd = [0, 0, 0]
+a = [10, 20, 30]
+b = 1000
+c = 0.5
+eta = 2.0
+fresnel = "vh"
+)";
+
+struct BadCase {
+  const char* what;
+  const char* from;  // text in kGood to replace
+  const char* to;
+  std::vector<const char*> mentions;  // all must appear in the one-line message
+};
+
+std::string replaceOnce(std::string s, const std::string& from, const std::string& to) {
+  const size_t at = s.find(from);
+  if (at == std::string::npos) throw std::logic_error("test case text not found: " + from);
+  return s.replace(at, from.size(), to);
+}
+
+}  // namespace
+
+TEST(MaterialFile, GoodFileLoadsAndRoundTrips) {
+  const MaterialFile m = parseMaterialToml(kGood, "good.toml");
+  EXPECT_EQ(m.name, "test-material");
+  EXPECT_EQ(m.measured, "test-material.binary");
+  ASSERT_EQ(m.fits.size(), 2u);
+  EXPECT_EQ(m.fits[0].id.str(), "smooth:E2");  // kept in the comparison grid's order
+  EXPECT_EQ(m.fits[1].id.str(), "cook-torrance:E1");
+  EXPECT_EQ(m.fits[1].params.scalar("m"), 0.1);
+  const MaterialFile again = parseMaterialToml(toToml(m), "again.toml");
+  EXPECT_EQ(again.name, m.name);
+  EXPECT_EQ(again.measured, m.measured);
+  EXPECT_EQ(again.source, m.source);
+  EXPECT_EQ(again.fits, m.fits);
+  const Brdf smooth = makeBrdf(m.fits[0]);
+  EXPECT_TRUE(std::get<Smooth>(smooth).fresnelVH);
+}
+
+class BadMaterialFile : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadMaterialFile, IsAnErrorNamingFileFitAndKey) {
+  const BadCase& c = GetParam();
+  TempDir tmp;
+  writeText(tmp / "broken.toml", replaceOnce(kGood, c.from, c.to));
+  try {
+    loadMaterialFile(tmp / "broken.toml");
+    FAIL() << c.what << ": loaded without error";
+  } catch (const InputError& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    EXPECT_NE(msg.find("broken.toml"), std::string::npos) << msg;
+    for (const char* m : c.mentions) EXPECT_NE(msg.find(m), std::string::npos) << c.what << ": '" << m << "' not in: " << msg;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EachKindOfBadValue, BadMaterialFile,
+    ::testing::Values(
+        BadCase{"negative kd", "kd = [0.1, 0.2, 0.3]", "kd = [0.1, -0.2, 0.3]", {"fit 1 (cook-torrance:E1)", "'kd' (G)", ">= 0"}},
+        BadCase{"negative ks", "ks = [0.05, 0.04, 0.03]", "ks = [-0.05, 0.04, 0.03]", {"fit 1 (cook-torrance:E1)", "'ks' (R)", ">= 0"}},
+        BadCase{"negative a", "a = [10, 20, 30]", "a = [10, 20, -30]", {"fit 2 (smooth:E2)", "'a' (B)"}},
+        BadCase{"negative b", "b = 1000", "b = -1000", {"fit 2 (smooth:E2)", "'b'", ">= 0"}},
+        BadCase{"zero m", "m = 0.1", "m = 0.0", {"broken.toml:10: fit 1 (cook-torrance:E1): key 'm'", "> 0"}},
+        BadCase{"negative m", "m = 0.1", "m = -0.1", {"'m'", "> 0"}},
+        BadCase{"c zero", "c = 0.5", "c = 0", {"fit 2 (smooth:E2)", "'c'", "> 0"}},
+        BadCase{"eta equal 1", "eta = 1.5", "eta = 1.0", {"fit 1 (cook-torrance:E1)", "'eta'", "> 1"}},
+        BadCase{"eta below 1", "eta = 2.0", "eta = 0.7", {"fit 2 (smooth:E2)", "'eta'", "> 1"}},
+        BadCase{"nan", "m = 0.1", "m = nan", {"'m'", "finite"}},
+        BadCase{"inf", "b = 1000", "b = inf", {"'b'", "finite"}},
+        BadCase{"-inf in rgb", "kd = [0.1, 0.2, 0.3]", "kd = [0.1, 0.2, -inf]", {"'kd' (B)", "finite"}},
+        BadCase{"missing key", "m = 0.1\n", "", {"fit 1 (cook-torrance:E1)", "missing key 'm'"}},
+        BadCase{"missing model", "model = \"cook-torrance\"\n", "", {"fit 1", "missing key 'model'"}},
+        BadCase{"missing metric", "metric = \"E1\"\n", "", {"fit 1", "missing key 'metric'"}},
+        BadCase{"unknown fit key", "m = 0.1", "m = 0.1\nroughness = 0.2", {"fit 1 (cook-torrance:E1)", "'roughness'", "unknown key"}},
+        BadCase{"key of another model", "c = 0.5", "c = 0.5\nks = [1, 1, 1]", {"fit 2 (smooth:E2)", "'ks'", "unknown key"}},
+        BadCase{"unknown top-level key", "source = \"hand-written\"", "colour = \"red\"", {"'colour'", "unknown key"}},
+        BadCase{"unknown model", "model = \"cook-torrance\"", "model = \"phong\"", {"fit 1", "'model'", "unknown model 'phong'"}},
+        BadCase{"bad metric", "metric = \"E1\"", "metric = \"E3\"", {"fit 1", "'metric'", "E1 or E2"}},
+        BadCase{"two-channel rgb", "kd = [0.1, 0.2, 0.3]", "kd = [0.1, 0.2]", {"'kd'", "3 numbers"}},
+        BadCase{"string for number", "m = 0.1", "m = \"0.1\"", {"'m'", "a number"}},
+        BadCase{"scalar for rgb", "ks = [0.05, 0.04, 0.03]", "ks = 0.05", {"'ks'", "3 numbers"}},
+        BadCase{"bad fresnel choice", "fresnel = \"vh\"", "fresnel = \"schlick\"", {"fit 2 (smooth:E2)", "'fresnel'", "projected, vh"}},
+        BadCase{"duplicate fit", "[[fit]]\nmodel = \"smooth\"",
+                "[[fit]]\nmodel = \"cook-torrance\"\nmetric = \"E1\"\nkd = [0, 0, 0]\nks = [0, 0, 0]\nm = 0.2\neta = 1.3\n\n"
+                "[[fit]]\nmodel = \"smooth\"",
+                {"fit 2 (cook-torrance:E1)", "second cook-torrance:E1"}},
+        BadCase{"missing name", "name = \"test-material\"\n", "", {"missing key 'name'"}},
+        BadCase{"syntax error", "m = 0.1", "m = = 0.1", {"TOML syntax error", ":10:"}}),
+    [](const auto& info) {
+      std::string s = info.param.what;
+      for (char& c : s)
+        if (!isalnum(static_cast<unsigned char>(c))) c = '_';
+      return s;
+    });
+
+TEST(MaterialFile, MissingFileIsAnErrorNamingIt) {
+  try {
+    loadMaterialFile("/nonexistent/nowhere.toml");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/nowhere.toml"), std::string::npos);
+  }
+}
+
+TEST(MaterialFile, FitIdsParseAndRejectUnknowns) {
+  EXPECT_EQ(FitId::parse("microfacet:E2", "--fit").str(), "microfacet:E2");
+  EXPECT_THROW(FitId::parse("microfacet", "--fit"), InputError);
+  EXPECT_THROW(FitId::parse("blinn:E1", "--fit"), InputError);
+  EXPECT_THROW(FitId::parse("smooth:E9", "--fit"), InputError);
+}
+
+TEST(MaterialFile, EveryCommittedLibraryFileLoadsWithTheSixPublishedFits) {
+  size_t files = 0;
+  for (const auto& e : std::filesystem::directory_iterator(materialsDir())) {
+    if (e.path().extension() != ".toml") continue;
+    const MaterialFile m = loadMaterialFile(e.path());
+    EXPECT_EQ(m.name + ".toml", e.path().filename().string());
+    EXPECT_EQ(m.measured, m.name + ".binary");
+    EXPECT_EQ(m.fits.size(), 6u) << m.name;
+    for (const char* id : {"microfacet:E2", "smooth:E2", "ashikhmin-shirley:E1", "ashikhmin-shirley:E2", "cook-torrance:E1", "cook-torrance:E2"})
+      EXPECT_NE(m.find(FitId::parse(id, "test")), nullptr) << m.name << " lacks " << id;
+    ++files;
+  }
+  EXPECT_EQ(files, 100u);
+}
+
+TEST(MaterialFile, MeasuredResolvesAgainstMerlDirThenEnvironmentAndAcceptsXz) {
+  TempDir a, b;
+  writeText(a / "x.binary", "");
+  writeText(b / "y.binary.xz", "");
+  MaterialFile m;
+  m.measured = "x.binary";
+  EXPECT_EQ(resolveMeasured(m, a.path()), a / "x.binary");
+  m.measured = "y.binary";
+  EXPECT_EQ(resolveMeasured(m, a.path()), std::nullopt);
+  setenv("GLOSSY_MERL_DIR", b.path().c_str(), 1);
+  EXPECT_EQ(resolveMeasured(m, a.path()), b / "y.binary.xz");
+  unsetenv("GLOSSY_MERL_DIR");
+  m.measured.clear();
+  EXPECT_EQ(resolveMeasured(m, a.path()), std::nullopt);
+}
+
+}  // namespace glossy::test

@@ -1,0 +1,136 @@
+// Properties of the models that hold for every fit of the library: reciprocity, zero below the horizon,
+// finite values at grazing angles and exactly at the mirror peak, the numerical guards, and the interim
+// sampler's pdf/weight consistency.
+#include "materials/models/brdf.h"
+#include "materials/models/fresnel.h"
+#include "materials/models/half_vector.h"
+#include "materials/params/material_file.h"
+#include "tests/support/test_support.h"
+
+#include <cmath>
+#include <random>
+
+namespace glossy::test {
+
+namespace {
+
+std::vector<std::pair<std::string, Brdf>> libraryBrdfs() {
+  std::vector<std::pair<std::string, Brdf>> all;
+  for (const auto& e : std::filesystem::directory_iterator(materialsDir())) {
+    if (e.path().extension() != ".toml") continue;
+    const MaterialFile m = loadMaterialFile(e.path());
+    for (const Fit& f : m.fits) all.emplace_back(m.name + " " + f.id.str(), makeBrdf(f));
+  }
+  return all;
+}
+
+Vec3 dir(double theta, double phi) {
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+bool finiteNonNegative(const Rgb& c) {
+  return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b) && c.r >= 0 && c.g >= 0 && c.b >= 0;
+}
+
+}  // namespace
+
+TEST(Fresnel, LimitsAndNormalIncidence) {
+  for (double eta : {1.0001, 1.5, 2.236525, 9.79957, 99.999413}) {
+    const double f0 = (eta - 1) / (eta + 1);
+    EXPECT_NEAR(fresnelCookTorrance(1.0, eta), f0 * f0, 1e-15) << eta;
+    EXPECT_NEAR(fresnelCookTorrance(0.0, eta), 1.0, 1e-15) << eta;
+    // Against the textbook form: the mean of the s and p reflectances with Snell's law.
+    for (double c = 0.0; c <= 1.0; c += 1.0 / 64) {
+      const double ct = std::sqrt(1.0 - (1.0 - c * c) / (eta * eta));
+      const double rs = (c - eta * ct) / (c + eta * ct), rp = (eta * c - ct) / (eta * c + ct);
+      EXPECT_NEAR(fresnelCookTorrance(c, eta), 0.5 * (rs * rs + rp * rp), 1e-13) << "eta " << eta << " c " << c;
+    }
+  }
+}
+
+TEST(HalfVector, OneMinusCosineWithoutCancellation) {
+  // A pair 1e-7 rad off the mirror direction: 1 − cos θ_h ~ 1e-15, where the subtraction keeps no digits.
+  for (double offset : {1e-3, 1e-5, 1e-7, 1e-9}) {
+    const double thetaV = 0.7;
+    const Vec3 V = dir(thetaV, 0.0), L = dir(thetaV + offset, kPi);
+    const HalfVector h(L, V);
+    const long double th = offset / 2.0L;  // θ_h is half the angular offset for an in-plane pair
+    const long double exact = 2.0L * std::sin(th / 2.0L) * std::sin(th / 2.0L);
+    EXPECT_NEAR(h.oneMinusCosTheta, static_cast<double>(exact), 1e-6 * static_cast<double>(exact)) << offset;
+    EXPECT_NEAR(h.tan2Theta, static_cast<double>(std::tan(th) * std::tan(th)), 1e-6 * static_cast<double>(std::tan(th) * std::tan(th)));
+  }
+}
+
+TEST(Library, EveryFitIsReciprocalFiniteAndZeroBelowTheHorizon) {
+  const auto brdfs = libraryBrdfs();
+  ASSERT_EQ(brdfs.size(), 600u);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const auto& [name, brdf] : brdfs) {
+    for (int i = 0; i < 64; ++i) {
+      const Vec3 L = dir(std::acos(u(rng)), 2 * kPi * u(rng)), V = dir(std::acos(u(rng)), 2 * kPi * u(rng));
+      const Rgb a = eval(brdf, L, V), b = eval(brdf, V, L);
+      ASSERT_TRUE(finiteNonNegative(a)) << name;
+      for (int c = 0; c < 3; ++c) ASSERT_NEAR(a[c], b[c], 1e-12 * std::max(1.0, std::abs(a[c]))) << name;
+      EXPECT_EQ(eval(brdf, Vec3(L.x, L.y, -L.z), V), Rgb(0.0)) << name;
+      EXPECT_EQ(eval(brdf, L, Vec3(V.x, V.y, -V.z)), Rgb(0.0)) << name;
+    }
+    // The mirror peak, grazing pairs, and the horizon itself.
+    for (double theta : {0.0, 1e-8, 0.5, 1.5, 1.5707, kPi / 2 - 1e-9}) {
+      const Vec3 V = dir(theta, 0.3), mirror(-V.x, -V.y, V.z);
+      ASSERT_TRUE(finiteNonNegative(eval(brdf, mirror, V))) << name << " θ=" << theta;
+      ASSERT_TRUE(finiteNonNegative(eval(brdf, dir(kPi / 2 - 1e-12, 2.0), V))) << name;
+    }
+    EXPECT_EQ(eval(brdf, Vec3(std::cos(1.0), std::sin(1.0), 0.0), dir(0.3, 0.0)), Rgb(0.0)) << name << ": L on the horizon";
+  }
+}
+
+TEST(Smooth, FresnelOptionsAgreeAtTheMirrorConfiguration) {
+  Smooth projected{Rgb(0.0), Rgb(1.0), 100.0, 1.0, 1.5, false};
+  Smooth vh = projected;
+  vh.fresnelVH = true;
+  for (double theta : {0.1, 0.6, 1.2}) {
+    const Vec3 V = dir(theta, 0.4), L(-V.x, -V.y, V.z);
+    EXPECT_NEAR(projected.eval(L, V).r, vh.eval(L, V).r, 1e-12);
+  }
+  // …and differ off the peak, where the convention matters (B = 0 leaves F alone).
+  projected.b = vh.b = 0.0;
+  const Vec3 V = dir(1.2, 0.0), L = dir(0.4, 2.0);
+  EXPECT_GT(std::abs(projected.eval(L, V).r / vh.eval(L, V).r - 1.0), 0.01);
+}
+
+TEST(Sampling, PdfIsTheDensitySampleDrawsAndWeightIsRhoCosOverPdf) {
+  const auto brdfs = libraryBrdfs();
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (size_t k = 0; k < brdfs.size(); k += 7) {
+    const auto& [name, brdf] = brdfs[k];
+    for (double theta : {0.0, 0.7, 1.4}) {
+      const Vec3 V = dir(theta, 1.0);
+      for (int i = 0; i < 16; ++i) {
+        const BrdfSample s = sample(brdf, V, u(rng), Vec2(u(rng), u(rng)));
+        if (!s.valid()) continue;
+        EXPECT_NEAR(s.pdf, pdf(brdf, s.L, V), 1e-12 * s.pdf) << name;
+        const Rgb expected = eval(brdf, s.L, V) * (s.L.z / s.pdf);
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.weight[c], expected[c], 1e-9 * std::max(1.0, expected[c])) << name;
+      }
+    }
+  }
+}
+
+TEST(Sampling, PdfIntegratesToOneOverTheHemisphere) {
+  // Midpoint rule in (cos θ, φ): the interim cosine sampler never rejects, so its pdf integrates to 1.
+  const Brdf brdf = CookTorrance{Rgb(0.1), Rgb(0.2), 0.3, 1.5};
+  const Vec3 V = dir(0.8, 0.0);
+  const int n = 400;
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double mu = (i + 0.5) / n, phi = 2 * kPi * (j + 0.5) / n;
+      sum += pdf(brdf, dir(std::acos(mu), phi), V) * (1.0 / n) * (2 * kPi / n);
+    }
+  EXPECT_NEAR(sum, 1.0, 1e-4);
+  EXPECT_EQ(pdf(brdf, dir(0.3, 0.0), dir(0.3, 0.0) * Vec3(1, 1, -1)), 0.0) << "no density for V below the horizon";
+}
+
+}  // namespace glossy::test

@@ -1,0 +1,133 @@
+#include "tests/support/test_support.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace glossy::test {
+
+std::filesystem::path sharedDir() {
+  if (const char* env = std::getenv("GLOSSY_SHARED_DIR"); env && *env) return env;
+  return GLOSSY_SHARED_DIR;
+}
+std::filesystem::path sourceDir() { return GLOSSY_SOURCE_DIR; }
+std::filesystem::path materialsDir() { return sourceDir() / "materials"; }
+
+namespace {
+
+std::string shellQuote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) {
+    if (c == '\'')
+      q.append("'\\''");
+    else
+      q.push_back(c);
+  }
+  return q + "'";
+}
+
+}  // namespace
+
+RunResult runGlossy(const std::vector<std::string>& args, const std::string& input) {
+  TempDir tmp;
+  writeText(tmp / "stdin", input);
+  std::string cmd = shellQuote(GLOSSY_EXE);
+  for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
+  cmd.append(" <").append(shellQuote((tmp / "stdin").string()));
+  cmd.append(" >").append(shellQuote((tmp / "stdout").string()));
+  cmd.append(" 2>").append(shellQuote((tmp / "stderr").string()));
+  RunResult r;
+  const int raw = std::system(cmd.c_str());
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = readText(tmp / "stdout");
+  r.err = readText(tmp / "stderr");
+  return r;
+}
+
+TempDir::TempDir() {
+  std::string tmpl = (std::filesystem::temp_directory_path() / "glossy-test-XXXXXX").string();
+  if (!mkdtemp(tmpl.data())) throw std::runtime_error("mkdtemp failed");
+  path_ = tmpl;
+}
+
+TempDir::~TempDir() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+std::string readText(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<std::map<std::string, std::string>> readCsv(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  auto split = [](const std::string& line) {
+    std::vector<std::string> cells;
+    std::stringstream s(line);
+    std::string c;
+    while (std::getline(s, c, ',')) cells.push_back(c);
+    return cells;
+  };
+  std::string line;
+  std::getline(in, line);
+  const auto header = split(line);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    const auto cells = split(line);
+    std::map<std::string, std::string> row;
+    for (size_t i = 0; i < header.size() && i < cells.size(); ++i) row[header[i]] = cells[i];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string syntheticMerlBytes(const MerlFiller& f) {
+  constexpr int nh = 90, nd = 90, np = 180;
+  constexpr size_t bins = size_t(nh) * nd * np;
+  std::string bytes(12 + 3 * bins * 8, '\0');
+  const int32_t dims[3] = {nh, nd, np};
+  std::memcpy(bytes.data(), dims, sizeof dims);
+  for (int h = 0; h < nh; ++h)
+    for (int d = 0; d < nd; ++d)
+      for (int p = 0; p < np; ++p) {
+        const Rgb v = f(h, d, p);
+        const size_t idx = size_t(p) + np * (size_t(d) + nd * size_t(h));
+        for (int c = 0; c < 3; ++c) {
+          const double x = v[c];
+          std::memcpy(bytes.data() + 12 + (c * bins + idx) * 8, &x, 8);
+        }
+      }
+  return bytes;
+}
+
+std::pair<Vec3, Vec3> fromHalfDiff(double thetaH, double thetaD, double phiD, double phiH) {
+  // D in the half-vector frame, then rotate about y by θ_h and about z by φ_h (the inverse of the
+  // MERL reference's to-half/diff rotation); V is the reflection of L about H.
+  const Vec3 d(std::sin(thetaD) * std::cos(phiD), std::sin(thetaD) * std::sin(phiD), std::cos(thetaD));
+  const double ct = std::cos(thetaH), st = std::sin(thetaH);
+  const Vec3 l1(d.x * ct + d.z * st, d.y, -d.x * st + d.z * ct);
+  const double cp = std::cos(phiH), sp = std::sin(phiH);
+  const Vec3 L(l1.x * cp - l1.y * sp, l1.x * sp + l1.y * cp, l1.z);
+  const Vec3 H(st * cp, st * sp, ct);
+  const double hl = L.x * H.x + L.y * H.y + L.z * H.z;
+  const Vec3 V = 2.0 * hl * H - L;
+  return {L, V};
+}
+
+}  // namespace glossy::test

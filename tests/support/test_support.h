@@ -1,0 +1,60 @@
+// Helpers shared by the tests: where the reference data is, running the glossy command, temporary
+// folders, and writing synthetic MERL-format tables.
+#pragma once
+
+#include "materials/core/types.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace glossy::test {
+
+// ../shared beside the checkout ($GLOSSY_SHARED_DIR overrides).
+std::filesystem::path sharedDir();
+std::filesystem::path sourceDir();
+std::filesystem::path materialsDir();
+
+// Skips the calling test, with a message naming the folder, when shared/<sub> is absent.
+#define GLOSSY_REQUIRE_SHARED(sub)                                                                       \
+  do {                                                                                                   \
+    if (!std::filesystem::exists(::glossy::test::sharedDir() / (sub)))                                   \
+      GTEST_SKIP() << "reference data " << (::glossy::test::sharedDir() / (sub)).string() << " is absent"; \
+  } while (0)
+
+struct RunResult {
+  int status = -1;
+  std::string out, err;
+};
+// Runs the glossy executable with `args` (shell-quoted here) and `input` on stdin.
+RunResult runGlossy(const std::vector<std::string>& args, const std::string& input = "");
+
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+void writeText(const std::filesystem::path& path, const std::string& text);
+std::string readText(const std::filesystem::path& path);
+
+// Rows of a CSV file with a header line, as maps from column name to text.
+std::vector<std::map<std::string, std::string>> readCsv(const std::filesystem::path& path);
+
+// The bytes of a MERL .binary whose stored (unscaled) value at bin (θh, θd, φd) is f(θh, θd, φd).
+using MerlFiller = std::function<Rgb(int thetaH, int thetaD, int phiD)>;
+std::string syntheticMerlBytes(const MerlFiller& f);
+
+// L and V (local frame) with the given half/difference angles; φ_h rotates the pair about N.
+std::pair<Vec3, Vec3> fromHalfDiff(double thetaH, double thetaD, double phiD, double phiH = 0.0);
+
+}  // namespace glossy::test
