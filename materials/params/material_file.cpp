@@ -84,36 +84,39 @@ std::optional<double> asNumber(const toml::node& node) {
   return std::nullopt;
 }
 
-std::string fitContext(const std::string& source, size_t index, const FitId& id) {
-  std::string s = source + "fit " + std::to_string(index + 1);
+// "fit 2 (cook-torrance:E1)", with as much of the id as is known.
+std::string fitLabel(size_t index, const FitId& id) {
+  std::string s = "fit " + std::to_string(index + 1);
   if (!id.model.empty()) s += " (" + id.model + ":" + (id.metric.empty() ? "?" : id.metric) + ")";
   return s;
 }
 
-std::string requiredString(const toml::table& t, std::string_view key, const std::string& where) {
+std::string stringOr(const toml::table& t, std::string_view key) {
+  const toml::node* n = t.get(key);
+  return n && n->is_string() ? n->as_string()->get() : std::string();
+}
+
+void requireString(const toml::table& t, std::string_view key, const std::string& where) {
   const toml::node* n = t.get(key);
   if (!n) throw InputError(where + ": missing key '" + std::string(key) + "'");
   if (!n->is_string()) throw InputError(where + ": key '" + std::string(key) + "' must be a string");
-  return n->as_string()->get();
 }
 
 Fit readFit(const toml::table& t, size_t index, const std::string& source) {
   Fit fit;
-  if (const toml::node* m = t.get("model"); m && m->is_string()) fit.id.model = m->as_string()->get();
-  if (const toml::node* m = t.get("metric"); m && m->is_string()) fit.id.metric = m->as_string()->get();
-  const std::string where = at(source, t) + fitContext("", index, fit.id);
-
-  fit.id.model = requiredString(t, "model", where);
+  fit.id = {stringOr(t, "model"), stringOr(t, "metric")};
+  const std::string where = at(source, t) + fitLabel(index, fit.id);
+  requireString(t, "model", where);
+  requireString(t, "metric", where);
   const ModelInfo* model = findModel(fit.id.model);
   if (!model)
     throw InputError(where + ": key 'model': unknown model '" + fit.id.model + "' (known: " + knownModelNames() + ")");
-  fit.id.metric = requiredString(t, "metric", where);
   if (std::find(std::begin(kMetrics), std::end(kMetrics), fit.id.metric) == std::end(kMetrics))
     throw InputError(where + ": key 'metric': must be E1 or E2, got '" + fit.id.metric + "'");
 
   for (auto&& [k, node] : t) {
     const std::string key(k.str());
-    const std::string here = at(source, node) + fitContext("", index, fit.id) + ": key '" + key + "'";
+    const std::string here = at(source, node) + fitLabel(index, fit.id) + ": key '" + key + "'";
     if (key == "model" || key == "metric") continue;
     if (key == "source") {
       if (!node.is_string()) throw InputError(here + ": must be a string");
@@ -219,6 +222,8 @@ void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::stri
 void validateFit(const Fit& fit, const std::string& context) {
   const ModelInfo* model = findModel(fit.id.model);
   if (!model) throw InputError(context + ": unknown model '" + fit.id.model + "' (known: " + knownModelNames() + ")");
+  if (std::find(std::begin(kMetrics), std::end(kMetrics), fit.id.metric) == std::end(kMetrics))
+    throw InputError(context + ": metric must be E1 or E2, got '" + fit.id.metric + "'");
   for (const auto& [key, value] : fit.params.values()) {
     auto spec = std::find_if(model->params.begin(), model->params.end(), [&](const ParamSpec& s) { return s.key == key; });
     if (spec == model->params.end()) throw InputError(context + ": key '" + key + "': unknown for the " + fit.id.model + " model");
@@ -254,7 +259,7 @@ MaterialFile parseMaterialToml(std::string_view text, const std::string& source)
       for (size_t i = 0; i < fits->size(); ++i) {
         Fit fit = readFit(*fits->get(i)->as_table(), i, source);
         if (m.find(fit.id))
-          throw InputError(at(source, *fits->get(i)) + fitContext("", i, fit.id) + ": a second " + fit.id.str() +
+          throw InputError(at(source, *fits->get(i)) + fitLabel(i, fit.id) + ": a second " + fit.id.str() +
                            " fit (a material has at most one fit per model and metric)");
         m.put(std::move(fit));
       }
