@@ -1,0 +1,46 @@
+// Distant lighting from a lat-long (equirectangular) map or a constant, with importance sampling.
+// Direction convention (shared/spec/interfaces.md, = Mitsuba 3's envmap with identity transform):
+// world direction d (Y up) ↦ u = atan2(d_x, −d_z)/(2π) wrapped to [0,1), v = acos(d_y)/π (v = 0 top row).
+// Lookup is bilinear with columns at texel centres (x = u·W − ½, wrapping) and rows spanning pole to pole
+// (y = v·(H − 1), row 0 exactly +Y). --env-rotate rotates the map about +Y.
+#pragma once
+
+#include "materials/core/types.h"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace glossy {
+
+class Environment {
+ public:
+  struct Sample {
+    Vec3 dir{0.0};     // world direction toward the light (away from the scene)
+    Rgb radiance{0.0};
+    double pdf = 0.0;  // solid angle; 0 = invalid
+  };
+
+  // .exr or .hdr via OpenImageIO. Throws InputError naming the file (unreadable, not RGB(A), non-finite
+  // or negative texels). rotateDegrees rotates the map about +Y (right-handed).
+  static Environment load(const std::filesystem::path& path, double rotateDegrees = 0.0);
+  static Environment constant(const Rgb& radiance);
+  // A procedural sky the project makes itself: soft gradient sky, a bright sun-like key, a darker ground.
+  static Environment makeDefault(double rotateDegrees = 0.0);
+
+  Rgb radiance(const Vec3& dir) const;     // radiance arriving from direction dir
+  Sample sample(Vec2 u) const;              // importance-sampled by sin θ-weighted luminance
+  double pdf(const Vec3& dir) const;        // exactly the density sample() draws from
+  const std::string& description() const;  // for image metadata: file name, "constant r,g,b", "default sky"
+
+  Environment(Environment&&) noexcept;
+  Environment& operator=(Environment&&) noexcept;
+  ~Environment();
+
+ private:
+  struct Impl;
+  explicit Environment(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace glossy

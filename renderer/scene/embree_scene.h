@@ -1,0 +1,48 @@
+// The scene's triangles in an Embree 3 BVH: closest-hit and occlusion queries.
+#pragma once
+
+#include "renderer/scene/scene.h"
+
+#include <embree3/rtcore.h>
+
+namespace glossy {
+
+struct Ray {
+  Vec3 origin;
+  Vec3 dir;  // unit
+  double tnear = 0.0;
+  double tfar = 1e30;
+};
+
+struct Hit {
+  double t = 0.0;
+  uint32_t mesh = 0;      // index into SceneDescription::meshes
+  uint32_t triangle = 0;
+  double u = 0.0, v = 0.0;  // barycentrics of vertices 1 and 2
+  Vec3 position{0.0};
+  Vec3 geometricNormal{0.0};  // unit, as wound (not flipped toward the ray)
+  Vec3 shadingNormal{0.0};    // unit, interpolated vertex normals, or the geometric normal
+};
+
+class EmbreeScene {
+ public:
+  explicit EmbreeScene(const SceneDescription& scene);
+  ~EmbreeScene();
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+  bool intersect(const Ray& ray, Hit& hit) const;  // closest hit within [tnear, tfar]
+  bool occluded(const Ray& ray) const;             // any hit within [tnear, tfar]
+  // Bounding sphere of all geometry (for placing the environment's sampling and default cameras).
+  Vec3 boundsCenter() const { return center_; }
+  double boundsRadius() const { return radius_; }
+
+ private:
+  const SceneDescription& scene_;
+  RTCDevice device_ = nullptr;
+  RTCScene rtcScene_ = nullptr;
+  Vec3 center_{0.0};
+  double radius_ = 0.0;
+};
+
+}  // namespace glossy

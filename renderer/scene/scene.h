@@ -1,0 +1,57 @@
+// A scene as the renderer sees it: triangle meshes flattened to world space, their materials, and the
+// cameras, loaded from glTF 2.0 (shared/spec/interfaces.md). World space is glTF's: Y up, metres.
+#pragma once
+
+#include "materials/core/types.h"
+
+#include <glm/mat4x4.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace glossy {
+
+struct SceneMaterial {
+  std::string name;
+  Rgb baseColor{0.8};    // Lambertian albedo when no glossy material is bound
+  Rgb emission{0.0};     // emissiveFactor × KHR_materials_emissive_strength; non-zero makes an area light
+  // extras.glossy binding, or empty: {"material": "materials/x.toml", "fit": "microfacet:E2"}; the
+  // material path is as written in the file (resolved by the caller against the scene's folder, then cwd).
+  std::string glossyMaterial;
+  std::string glossyFit;
+  bool isEmissive() const { return emission.r > 0.0 || emission.g > 0.0 || emission.b > 0.0; }
+};
+
+struct Mesh {
+  std::string name;                // "node 'Sphere' / mesh 'Sphere' / primitive 0", for messages
+  std::vector<glm::vec3> positions;  // world space
+  std::vector<glm::vec3> normals;    // world space, unit; empty = use geometric normals
+  std::vector<uint32_t> indices;     // 3 per triangle, into positions (non-indexed input is expanded)
+  int material = -1;                 // index into SceneDescription::materials; -1 = default grey Lambertian
+};
+
+struct Camera {
+  enum class Type { Perspective, Orthographic };
+  std::string name;
+  Type type = Type::Perspective;
+  glm::dmat4 cameraToWorld{1.0};  // glTF camera: looks down −Z, +Y up, in its node's frame
+  double yfov = 0.6;              // perspective: vertical field of view, radians
+  double aspectRatio = 0.0;       // perspective: 0 = use the image's
+  double xmag = 1.0, ymag = 1.0;  // orthographic: half extents of the view
+};
+
+struct SceneDescription {
+  std::filesystem::path source;
+  std::vector<Mesh> meshes;
+  std::vector<SceneMaterial> materials;
+  std::vector<Camera> cameras;  // in glTF node order; the first is the default
+};
+
+// Loads .gltf (external or embedded buffers) or .glb. Throws InputError naming the file and the
+// node/mesh for malformed or degenerate input (no triangles at all, bad indices, non-finite positions,
+// unsupported primitive modes are skipped with a warning on stderr only if other geometry remains).
+SceneDescription loadGltf(const std::filesystem::path& path);
+
+}  // namespace glossy
