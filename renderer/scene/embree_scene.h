@@ -38,7 +38,11 @@ class EmbreeScene {
   double boundsRadius() const { return radius_; }
 
  private:
+  void throwIfEmbreeFailed(const char* doing) const;
+  void release();
+
   const SceneDescription& scene_;
+  std::string embreeError_;  // set by Embree's error callback, turned into an exception by throwIfEmbreeFailed
   RTCDevice device_ = nullptr;
   RTCScene rtcScene_ = nullptr;
   Vec3 center_{0.0};

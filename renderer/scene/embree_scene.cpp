@@ -1,0 +1,166 @@
+// The scene's meshes as Embree 3 triangle geometries (geomID = mesh index) in one high-quality BVH, and
+// the two queries the renderer needs. Hit geometry is recomputed in double from the mesh data, so normals
+// do not inherit Embree's float rounding or its (clockwise) normal convention.
+#include "renderer/scene/embree_scene.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <mutex>
+#include <stdexcept>
+
+namespace glossy {
+
+namespace {
+
+std::mutex embreeErrorMutex;
+
+// Embree reports errors through this callback (possibly from its build threads); throwing from inside
+// Embree's C API is not allowed, so the first message is kept and thrown after the call returns.
+void recordEmbreeError(void* userPtr, RTCError code, const char* message) {
+  auto& error = *static_cast<std::string*>(userPtr);
+  const std::lock_guard<std::mutex> lock(embreeErrorMutex);
+  if (error.empty())
+    error = message && *message ? std::string(message) : "error code " + std::to_string(int(code));
+}
+
+float toFloatDistance(double t) {
+  return t >= double(std::numeric_limits<float>::max()) ? std::numeric_limits<float>::infinity() : float(t);
+}
+
+RTCRay toRtcRay(const Ray& ray) {
+  RTCRay r;
+  r.org_x = float(ray.origin.x);
+  r.org_y = float(ray.origin.y);
+  r.org_z = float(ray.origin.z);
+  r.dir_x = float(ray.dir.x);
+  r.dir_y = float(ray.dir.y);
+  r.dir_z = float(ray.dir.z);
+  r.tnear = float(std::max(ray.tnear, 0.0));
+  r.tfar = toFloatDistance(ray.tfar);
+  r.time = 0.0f;
+  r.mask = ~0u;
+  r.id = 0;
+  r.flags = 0;
+  return r;
+}
+
+}  // namespace
+
+EmbreeScene::EmbreeScene(const SceneDescription& scene) : scene_(scene) {
+  try {
+    device_ = rtcNewDevice(nullptr);
+    if (!device_)
+      throw std::runtime_error("Embree: cannot create a device (error code " +
+                               std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+    rtcSetDeviceErrorFunction(device_, recordEmbreeError, &embreeError_);
+    rtcScene_ = rtcNewScene(device_);
+    rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
+    throwIfEmbreeFailed("creating the scene");
+
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+      const Mesh& mesh = scene.meshes[m];
+      // Embree reads indices unchecked: a bad mesh built in code must not become an out-of-bounds read.
+      if (mesh.indices.size() % 3 != 0 ||
+          std::any_of(mesh.indices.begin(), mesh.indices.end(), [&](uint32_t i) { return i >= mesh.positions.size(); }) ||
+          (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size()))
+        throw std::runtime_error("Embree scene: " + mesh.name + ": inconsistent indices or normals");
+      if (mesh.indices.empty()) continue;
+
+      RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+      rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_HIGH);
+      auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                                   RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                                   mesh.positions.size()));
+      auto* triangles = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0,
+                                                                      RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
+                                                                      mesh.indices.size() / 3));
+      if (vertices && triangles) {
+        std::memcpy(vertices, mesh.positions.data(), mesh.positions.size() * 3 * sizeof(float));
+        std::memcpy(triangles, mesh.indices.data(), mesh.indices.size() * sizeof(uint32_t));
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometryByID(rtcScene_, geometry, unsigned(m));
+      }
+      rtcReleaseGeometry(geometry);
+      throwIfEmbreeFailed("adding a mesh");
+
+      for (const glm::vec3& p : mesh.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+      }
+    }
+    rtcCommitScene(rtcScene_);
+    throwIfEmbreeFailed("building the BVH");
+
+    if (lo.x <= hi.x) {
+      center_ = (Vec3(lo) + Vec3(hi)) * 0.5;
+      for (const Mesh& mesh : scene.meshes)
+        for (const glm::vec3& p : mesh.positions) radius_ = std::max(radius_, glm::distance(center_, Vec3(p)));
+    }
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+EmbreeScene::~EmbreeScene() { release(); }
+
+void EmbreeScene::release() {
+  if (rtcScene_) rtcReleaseScene(rtcScene_);
+  if (device_) rtcReleaseDevice(device_);
+  rtcScene_ = nullptr;
+  device_ = nullptr;
+}
+
+void EmbreeScene::throwIfEmbreeFailed(const char* doing) const {
+  const std::lock_guard<std::mutex> lock(embreeErrorMutex);
+  if (!embreeError_.empty()) throw std::runtime_error(std::string("Embree error while ") + doing + ": " + embreeError_);
+}
+
+bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRayHit rayHit;
+  rayHit.ray = toRtcRay(ray);
+  rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayHit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  rtcIntersect1(rtcScene_, &context, &rayHit);
+  if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+
+  hit.t = rayHit.ray.tfar;
+  hit.mesh = rayHit.hit.geomID;
+  hit.triangle = rayHit.hit.primID;
+  hit.u = rayHit.hit.u;
+  hit.v = rayHit.hit.v;
+  hit.position = ray.origin + hit.t * ray.dir;
+
+  const Mesh& mesh = scene_.meshes[hit.mesh];
+  const uint32_t* corner = &mesh.indices[3 * size_t(hit.triangle)];
+  const Vec3 p0(mesh.positions[corner[0]]), p1(mesh.positions[corner[1]]), p2(mesh.positions[corner[2]]);
+  hit.geometricNormal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+  hit.shadingNormal = hit.geometricNormal;
+  if (!mesh.normals.empty()) {
+    const Vec3 n = (1.0 - hit.u - hit.v) * Vec3(mesh.normals[corner[0]]) + hit.u * Vec3(mesh.normals[corner[1]]) +
+                   hit.v * Vec3(mesh.normals[corner[2]]);
+    const double len = glm::length(n);
+    if (len > 1e-12 && std::isfinite(len)) hit.shadingNormal = n / len;
+  }
+  return true;
+}
+
+bool EmbreeScene::occluded(const Ray& ray) const {
+  if (!(ray.tfar >= ray.tnear)) return false;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  RTCRay r = toRtcRay(ray);
+  rtcOccluded1(rtcScene_, &context, &r);
+  // Embree marks an occluded ray by setting tfar to −∞.
+  return r.tfar == -std::numeric_limits<float>::infinity();
+}
+
+}  // namespace glossy
