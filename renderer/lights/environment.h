@@ -22,7 +22,8 @@ class Environment {
   };
 
   // .exr or .hdr via OpenImageIO. Throws InputError naming the file (unreadable, not RGB(A), non-finite
-  // or negative texels). rotateDegrees rotates the map about +Y (right-handed).
+  // or negative texels). rotateDegrees rotates the map about +Y (right-handed): a positive angle turns its
+  // features counter-clockwise seen from above, +Z towards +X (90° moves what was at +X to −Z).
   static Environment load(const std::filesystem::path& path, double rotateDegrees = 0.0);
   static Environment constant(const Rgb& radiance);
   // A procedural sky the project makes itself: soft gradient sky, a bright sun-like key, a darker ground.

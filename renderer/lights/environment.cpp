@@ -1,0 +1,206 @@
+// The environment light: loading lat-long maps, the constant and default skies, and importance sampling
+// of the bilinearly interpolated map.
+#include "renderer/lights/environment.h"
+
+#include "materials/core/input_error.h"
+#include "renderer/lights/default_sky.h"
+#include "renderer/lights/latlong.h"
+#include "renderer/sampling/distribution.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <sstream>
+
+namespace glossy {
+
+namespace {
+
+constexpr double kInv4Pi = 0.25 * kInvPi;
+
+double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+// OpenImageIO's messages may span lines; InputError's must not.
+std::string oneLine(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text.empty() ? "unknown error" : text;
+}
+
+std::string formatNumber(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+std::string withRotation(std::string description, double rotateDegrees) {
+  if (rotateDegrees != 0.0) description += " rotated " + formatNumber(rotateDegrees) + "°";
+  return description;
+}
+
+void checkRotation(double rotateDegrees) {
+  if (!std::isfinite(rotateDegrees))
+    throw InputError("environment rotation " + formatNumber(rotateDegrees) + " is not a finite angle");
+}
+
+LatLongImage readLatLong(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  auto fail = [&](const std::string& problem) { return InputError(name + ": " + oneLine(problem)); };
+
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw fail("environment map not found");
+  auto input = OIIO::ImageInput::open(name);
+  if (!input) throw fail("cannot read environment map (" + OIIO::geterror() + ")");
+  const OIIO::ImageSpec& spec = input->spec();
+  if (spec.width <= 0 || spec.height <= 0) throw fail("environment map has no pixels");
+  if (spec.depth > 1) throw fail("environment map is a volume, not a lat-long image");
+  if (spec.nchannels < 3)
+    throw fail("environment map has " + std::to_string(spec.nchannels) + " channel(s), needs RGB or RGBA");
+
+  LatLongImage image{spec.width, spec.height, std::vector<float>(std::size_t(spec.width) * spec.height * 3)};
+  // Channels 0–2 only, converted to float by OpenImageIO: alpha and any extra layers are not radiance.
+  if (!input->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.rgb.data()))
+    throw fail("cannot read environment map pixels (" + input->geterror() + ")");
+  input->close();
+
+  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
+    const float value = image.rgb[i];
+    if (!std::isfinite(value) || value < 0.0f) {
+      const std::size_t texel = i / 3;
+      throw fail("texel (" + std::to_string(texel % std::size_t(image.width)) + ", " +
+                 std::to_string(texel / std::size_t(image.width)) + ") is " +
+                 (std::isfinite(value) ? "negative" : "not finite") + "; radiance must be finite and ≥ 0");
+    }
+  }
+  // Rows are interpolated pole to pole, so a single row stands for both poles.
+  if (image.height == 1) {
+    image.rgb.insert(image.rgb.end(), image.rgb.begin(), image.rgb.end());
+    image.height = 2;
+  }
+  return image;
+}
+
+}  // namespace
+
+struct Environment::Impl {
+  std::string description;
+  bool isConstant = false;
+  Rgb constantRadiance{0.0};
+
+  LatLongImage map;
+  // Rotation about +Y by α shifts every feature's u by −α/(2π) (φ ↦ φ − α for a right-handed turn):
+  // the map is looked up at u_world + uOffset.
+  double uOffset = 0.0;
+  // Over (s, v) with s = u_map − ½/W: its cells are the bilinear patches between adjacent texel centres,
+  // W × (H − 1) of them, so each cell's value can bound the interpolated function exactly.
+  Distribution2D distribution;
+
+  Vec2 mapUv(const Vec3& dir) const {
+    Vec2 uv = latLongFromDirection(dir);
+    uv.x = wrapUnit(uv.x + uOffset);
+    return uv;
+  }
+
+  void buildDistribution() {
+    const int width = map.width, cells = map.height - 1;
+    std::vector<double> rowLuminance(std::size_t(width) * map.height);
+    for (int row = 0; row < map.height; ++row)
+      for (int column = 0; column < width; ++column)
+        rowLuminance[std::size_t(row) * width + column] = luminance(map.texel(column, row));
+
+    std::vector<double> weights(std::size_t(width) * cells);
+    for (int cell = 0; cell < cells; ++cell) {
+      // Mean of sin θ over the cell's latitude band: the Jacobian of (u, v) ↦ direction, up to 2π².
+      const double v0 = double(cell) / cells, v1 = double(cell + 1) / cells;
+      const double meanSinTheta = (std::cos(kPi * v0) - std::cos(kPi * v1)) / (kPi * (v1 - v0));
+      const double* top = &rowLuminance[std::size_t(cell) * width];
+      const double* bottom = top + width;
+      for (int column = 0; column < width; ++column) {
+        const int next = column + 1 == width ? 0 : column + 1;
+        // The corners' mean is the bilinear function's mean over the patch; it is zero only where the
+        // whole patch is black, so every direction with radiance keeps a non-zero pdf (needed by MIS).
+        const double meanLuminance = 0.25 * (top[column] + top[next] + bottom[column] + bottom[next]);
+        weights[std::size_t(cell) * width + column] = meanLuminance * meanSinTheta;
+      }
+    }
+    distribution = Distribution2D(weights, std::size_t(width), std::size_t(cells));
+  }
+
+  static std::unique_ptr<Impl> fromMap(LatLongImage map, double rotateDegrees, std::string description) {
+    auto impl = std::make_unique<Impl>();
+    impl->description = withRotation(std::move(description), rotateDegrees);
+    impl->map = std::move(map);
+    impl->uOffset = wrapUnit(rotateDegrees / 360.0);
+    impl->buildDistribution();
+    return impl;
+  }
+};
+
+Environment::Environment(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Environment::Environment(Environment&&) noexcept = default;
+Environment& Environment::operator=(Environment&&) noexcept = default;
+Environment::~Environment() = default;
+
+Environment Environment::load(const std::filesystem::path& path, double rotateDegrees) {
+  checkRotation(rotateDegrees);
+  return Environment(Impl::fromMap(readLatLong(path), rotateDegrees, path.filename().string()));
+}
+
+Environment Environment::constant(const Rgb& radiance) {
+  for (int c = 0; c < 3; ++c)
+    if (!std::isfinite(radiance[c]) || radiance[c] < 0.0)
+      throw InputError("constant environment radiance " + formatNumber(radiance.r) + "," +
+                       formatNumber(radiance.g) + "," + formatNumber(radiance.b) + " must be finite and ≥ 0");
+  auto impl = std::make_unique<Impl>();
+  impl->isConstant = true;
+  impl->constantRadiance = radiance;
+  impl->description = "constant " + formatNumber(radiance.r) + "," + formatNumber(radiance.g) + "," +
+                      formatNumber(radiance.b);
+  return Environment(std::move(impl));
+}
+
+Environment Environment::makeDefault(double rotateDegrees) {
+  checkRotation(rotateDegrees);
+  return Environment(Impl::fromMap(makeDefaultSky(), rotateDegrees, "default sky"));
+}
+
+Rgb Environment::radiance(const Vec3& dir) const {
+  if (impl_->isConstant) return impl_->constantRadiance;
+  return impl_->map.lookup(impl_->mapUv(dir));
+}
+
+Environment::Sample Environment::sample(Vec2 u) const {
+  const Impl& env = *impl_;
+  if (env.isConstant) {
+    // Uniform over the sphere: no direction is more important than another.
+    const double cosTheta = 1.0 - 2.0 * std::clamp(u.x, 0.0, 1.0);
+    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+    const double phi = 2.0 * kPi * u.y;
+    return {Vec3(sinTheta * std::cos(phi), cosTheta, sinTheta * std::sin(phi)), env.constantRadiance, kInv4Pi};
+  }
+
+  const Distribution2D::Sample cell = env.distribution.sample(u);
+  const double v = cell.point.y;
+  const double sinTheta = std::sin(kPi * v);
+  // At a pole the lat-long Jacobian vanishes and the solid-angle density is unbounded: no usable sample.
+  if (cell.pdf <= 0.0 || sinTheta <= 0.0) return {};
+
+  const double uMap = wrapUnit(cell.point.x + 0.5 / env.map.width);
+  const double phi = 2.0 * kPi * wrapUnit(uMap - env.uOffset);
+  const Vec3 dir(sinTheta * std::sin(phi), std::cos(kPi * v), -sinTheta * std::cos(phi));
+  return {dir, env.map.lookup({uMap, v}), cell.pdf / (2.0 * kPi * kPi * sinTheta)};
+}
+
+double Environment::pdf(const Vec3& dir) const {
+  const Impl& env = *impl_;
+  if (env.isConstant) return kInv4Pi;
+  const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
+  if (!(sinTheta > 0.0)) return 0.0;
+  const Vec2 uv = env.mapUv(dir);
+  const double s = wrapUnit(uv.x - 0.5 / env.map.width);
+  return env.distribution.pdf({s, uv.y}) / (2.0 * kPi * kPi * sinTheta);
+}
+
+const std::string& Environment::description() const { return impl_->description; }
+
+}  // namespace glossy

@@ -1,0 +1,77 @@
+// Piecewise-constant probability densities on [0,1) and [0,1)², sampled by exact inversion of their CDFs
+// (after pbrt's Distribution1D/2D). Shared by the environment light and, later, the measured-BRDF sampler.
+//
+// A tabulated function f of n non-negative bins defines the density p(x) = f(⌊x·n⌋) / ∫f on [0,1).
+// Degenerate tables never produce NaN: when every value is zero the density is uniform (p ≡ 1), so the
+// caller still gets valid samples and must weight them by its own (zero) integrand. Everything is double:
+// maps of a million texels with a bright sun span more than float's CDF resolution.
+//
+// sample / pdf / the inversions allocate nothing and are safe to call concurrently.
+#pragma once
+
+#include "materials/core/types.h"
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace glossy {
+
+class Distribution1D {
+ public:
+  Distribution1D() = default;
+  // values: the bins' non-negative, finite weights (throws std::invalid_argument otherwise, or if empty).
+  explicit Distribution1D(std::span<const double> values);
+
+  std::size_t size() const { return values_.size(); }
+  double value(std::size_t bin) const { return values_[bin]; }
+  // ∫₀¹ f(x) dx = mean of the values; 0 for an all-zero table (whose density is then uniform).
+  double integral() const { return integral_; }
+  // cdf[i] = P(x < i/n); cdf[0] = 0 and cdf[n] = 1 exactly.
+  std::span<const double> cdf() const { return cdf_; }
+
+  // Inverts the CDF: returns x in [0,1) with P(X < x) = u (piecewise linear within a bin). u outside [0,1)
+  // is clamped into it. Never lands in a zero-weight bin (unless all are zero). pdf = p(x), offset = bin.
+  double sampleContinuous(double u, double* pdf = nullptr, std::size_t* offset = nullptr) const;
+  // The bin containing u in the CDF, with its probability mass; for choosing among discrete items.
+  std::size_t sampleDiscrete(double u, double* probability = nullptr) const;
+
+  double pdf(double x) const;  // density p(x); 0 outside [0,1] (x = 1 counts as the last bin)
+  double discreteProbability(std::size_t bin) const;
+
+ private:
+  std::size_t binOf(double u) const;  // the bin whose CDF interval [cdf[i], cdf[i+1]) holds u
+  double density(std::size_t bin) const;
+
+  std::vector<double> values_;
+  std::vector<double> cdf_;
+  double integral_ = 0.0;
+};
+
+// A density on the unit square [0,1)² from a width × height table, row-major (values[y·width + x]),
+// x along the first coordinate. Sampled as the marginal over rows, then the chosen row's conditional.
+// Rows whose values are all zero have probability 0; an all-zero table is uniform (pdf ≡ 1).
+class Distribution2D {
+ public:
+  struct Sample {
+    Vec2 point{0.0};   // in [0,1)²
+    double pdf = 0.0;  // with respect to area on the unit square
+  };
+
+  Distribution2D() = default;
+  Distribution2D(std::span<const double> values, std::size_t width, std::size_t height);
+
+  std::size_t width() const { return conditional_.empty() ? 0 : conditional_.front().size(); }
+  std::size_t height() const { return conditional_.size(); }
+  double integral() const { return marginal_.integral(); }  // ∫∫ f over the unit square
+
+  // u in [0,1)² (clamped). pdf(sample(u).point) == sample(u).pdf exactly.
+  Sample sample(Vec2 u) const;
+  double pdf(Vec2 point) const;  // 0 outside [0,1]²
+
+ private:
+  std::vector<Distribution1D> conditional_;  // one per row, over x
+  Distribution1D marginal_;                   // over rows, weighted by each row's integral
+};
+
+}  // namespace glossy
