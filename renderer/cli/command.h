@@ -16,6 +16,7 @@ struct Command {
 Command addEvalCommand(CLI::App& parent);
 Command addImportCommand(CLI::App& parent);
 Command addListCommand(CLI::App& parent);
+Command addRenderCommand(CLI::App& parent);
 
 // The committed material library: ./materials when run from a checkout, else the source tree's.
 std::filesystem::path defaultMaterialsDir();

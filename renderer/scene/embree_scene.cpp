@@ -27,7 +27,10 @@ void recordEmbreeError(void* userPtr, RTCError code, const char* message) {
     error = message && *message ? std::string(message) : "error code " + std::to_string(int(code));
 }
 
-float toFloatDistance(double t) {
+
+}  // namespace
+
+static float toFloatDistance(double t) {
   return t >= double(std::numeric_limits<float>::max()) ? std::numeric_limits<float>::infinity() : float(t);
 }
 
@@ -47,8 +50,6 @@ RTCRay toRtcRay(const Ray& ray) {
   r.flags = 0;
   return r;
 }
-
-}  // namespace
 
 EmbreeScene::EmbreeScene(const SceneDescription& scene) : scene_(scene) {
   try {
@@ -122,6 +123,8 @@ void EmbreeScene::throwIfEmbreeFailed(const char* doing) const {
 }
 
 bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
+  if (recorder_) [[unlikely]]
+    recorder_->record(ray, false);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rayHit;
@@ -155,6 +158,8 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
 
 bool EmbreeScene::occluded(const Ray& ray) const {
   if (!(ray.tfar >= ray.tnear)) return false;
+  if (recorder_) [[unlikely]]
+    recorder_->record(ray, true);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRay r = toRtcRay(ray);

@@ -24,6 +24,17 @@ struct Hit {
   Vec3 shadingNormal{0.0};    // unit, interpolated vertex normals, or the geometric normal
 };
 
+// The Embree form of a ray (float; tfar beyond float range becomes +∞).
+RTCRay toRtcRay(const Ray& ray);
+
+// Sees every query an EmbreeScene answers; the benchmark uses it to replay the renderer's exact ray
+// distribution through raw Embree. Must be thread-safe.
+class RayRecorder {
+ public:
+  virtual ~RayRecorder() = default;
+  virtual void record(const Ray& ray, bool shadow) = 0;
+};
+
 class EmbreeScene {
  public:
   explicit EmbreeScene(const SceneDescription& scene);
@@ -37,6 +48,9 @@ class EmbreeScene {
   Vec3 boundsCenter() const { return center_; }
   double boundsRadius() const { return radius_; }
 
+  void setRecorder(RayRecorder* recorder) { recorder_ = recorder; }  // nullptr (default): none
+  RTCScene handle() const { return rtcScene_; }                      // for raw-Embree benchmarks
+
  private:
   void throwIfEmbreeFailed(const char* doing) const;
   void release();
@@ -47,6 +61,7 @@ class EmbreeScene {
   RTCScene rtcScene_ = nullptr;
   Vec3 center_{0.0};
   double radius_ = 0.0;
+  RayRecorder* recorder_ = nullptr;
 };
 
 }  // namespace glossy

@@ -1,0 +1,149 @@
+// glossy render: one image of a glTF scene under an environment, as shared/spec/interfaces.md states.
+#include "materials/core/input_error.h"
+#include "materials/params/material_file.h"
+#include "renderer/cli/command.h"
+#include "renderer/integrator/path_tracer.h"
+#include "renderer/scene/material_binding.h"
+
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+namespace glossy::cli {
+
+namespace {
+
+struct RenderOptions {
+  std::string scene, material, fit, measured, merlDir, env, envConstant, camera, output = "out/render.exr";
+  double envRotate = 0.0;
+  RenderSettings settings;
+  bool half = false;
+};
+
+Rgb parseRgb(const std::string& text, const std::string& option) {
+  std::stringstream s(text);
+  std::vector<double> v;
+  std::string item;
+  while (std::getline(s, item, ',')) {
+    try {
+      size_t used = 0;
+      v.push_back(std::stod(item, &used));
+      if (used != item.size()) throw std::invalid_argument(item);
+    } catch (const std::exception&) {
+      throw InputError(option + ": '" + text + "' is not a number or R,G,B");
+    }
+  }
+  if (v.size() == 1) v.assign(3, v[0]);
+  if (v.size() != 3) throw InputError(option + ": '" + text + "' is not a number or R,G,B");
+  for (double x : v)
+    if (!std::isfinite(x) || x < 0.0) throw InputError(option + ": radiance must be finite and >= 0, got '" + text + "'");
+  return {v[0], v[1], v[2]};
+}
+
+int runRender(RenderOptions o) {
+  std::string scenePath = o.scene;
+  if (scenePath.empty()) {
+    const std::filesystem::path preview = std::filesystem::path(GLOSSY_SOURCE_DIR) / "scenes/preview.gltf";
+    scenePath = std::filesystem::exists(preview) ? preview.string() : (std::filesystem::path(GLOSSY_SOURCE_DIR) / "scenes/sphere.gltf").string();
+  }
+  const SceneDescription description = loadGltf(scenePath);
+
+  std::optional<BrdfChoice> override;
+  if (!o.measured.empty()) {
+    MaterialFile named;
+    named.measured = o.measured;
+    const auto path = resolveMeasured(named, o.merlDir);
+    if (!path) throw InputError(o.measured + ": measured table not found (looked in --merl-dir, $GLOSSY_MERL_DIR, the working folder)");
+    override = BrdfChoice{Measured{std::make_shared<const MerlTable>(MerlTable::load(*path))}, path->string(), "measured"};
+  } else if (!o.material.empty()) {
+    override = brdfFromMaterialFile(o.material, o.fit);
+  }
+
+  MaterialBinding binding = bindMaterials(description, override);
+  RenderScene scene{&description, nullptr, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, nullptr, nullptr};
+  if (override) scene.defaultBrdf = override->brdf;
+
+  const Environment environment = !o.envConstant.empty() ? Environment::constant(parseRgb(o.envConstant, "--env-constant"))
+                                  : !o.env.empty()       ? Environment::load(o.env, o.envRotate)
+                                                         : Environment::makeDefault(o.envRotate);
+  const EmbreeScene bvh(description);
+  const AreaLights areaLights(description);
+  scene.bvh = &bvh;
+  scene.environment = &environment;
+  scene.areaLights = &areaLights;
+
+  if (description.cameras.empty()) throw InputError(scenePath + ": the scene has no camera");
+  const Camera* camera = &description.cameras.front();
+  if (!o.camera.empty()) {
+    camera = nullptr;
+    for (const Camera& c : description.cameras)
+      if (c.name == o.camera) camera = &c;
+    if (!camera) throw InputError(scenePath + ": no camera named '" + o.camera + "'");
+  }
+
+  RenderStats stats;
+  const RgbImage image = render(scene, *camera, o.settings, stats);
+
+  std::string materialText = override ? override->material : "";
+  if (!override)
+    for (const auto& b : binding.bindings) materialText += (materialText.empty() ? "" : "; ") + b;
+  const std::vector<ImageAttribute> metadata = {
+      {"glossy:material", materialText.empty() ? std::string("scene base colours") : materialText},
+      {"glossy:fit", override ? override->fit : std::string("per scene binding")},
+      {"glossy:spp", o.settings.spp},
+      {"glossy:seed", int(o.settings.seed)},
+      {"glossy:maxDepth", o.settings.maxDepth},
+      {"glossy:scene", scenePath},
+      {"glossy:env", environment.description()},
+      {"glossy:smoothFresnel", binding.smoothFresnel},
+      {"glossy:conventions", std::string("microfacet, cook-torrance: 1/pi in the specular denominator; Fresnel at <V,H>; "
+                                         "smooth: Fresnel at the projected cos theta_d unless smoothFresnel = vh")},
+      {"glossy:droppedSamples", int(std::min<uint64_t>(stats.droppedSamples, uint64_t(INT32_MAX)))},
+      {"glossy:renderSeconds", float(stats.seconds)},
+      {"glossy:version", std::string(GLOSSY_VERSION)},
+  };
+  const std::filesystem::path out = o.output;
+  if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+  writeExr(out, image, metadata, o.half ? PixelType::Half : PixelType::Float);
+  std::cerr << "glossy: wrote " << out.string() << " (" << o.settings.width << "x" << o.settings.height << ", "
+            << o.settings.spp << " spp, " << stats.seconds << " s";
+  if (stats.droppedSamples) std::cerr << ", " << stats.droppedSamples << " non-finite samples dropped";
+  std::cerr << ")\n";
+  return 0;
+}
+
+}  // namespace
+
+Command addRenderCommand(CLI::App& parent) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* app = parent.add_subcommand("render",
+      "Render a glTF scene under an environment into a linear EXR. With no options: the material-preview "
+      "scene with its bound material under the built-in sky.");
+  app->add_option("--scene", o->scene, "glTF scene (.gltf or .glb); default: scenes/preview.gltf");
+  auto* material = app->add_option("--material", o->material, "Material file for every non-emissive mesh");
+  auto* fit = app->add_option("--fit", o->fit, "Fit of --material: MODEL:METRIC");
+  auto* measured = app->add_option("--measured", o->measured, "MERL table for every non-emissive mesh instead");
+  app->add_option("--merl-dir", o->merlDir, "Folder with MERL tables");
+  auto* env = app->add_option("--env", o->env, "Lat-long environment map (.exr, .hdr); default: the built-in sky");
+  auto* constant = app->add_option("--env-constant", o->envConstant, "Constant environment radiance: V or R,G,B");
+  app->add_option("--env-rotate", o->envRotate, "Rotate the environment about +Y, degrees");
+  app->add_option("--spp", o->settings.spp, "Samples per pixel")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--seed", o->settings.seed, "Random seed")->capture_default_str();
+  app->add_option("--threads", o->settings.threads, "Threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  app->add_option("--width", o->settings.width, "Image width")->check(CLI::Range(1, 1 << 15))->capture_default_str();
+  app->add_option("--height", o->settings.height, "Image height")->check(CLI::Range(1, 1 << 15))->capture_default_str();
+  app->add_option("--max-depth", o->settings.maxDepth, "Path segments at most (1 = emitters only, 3 = one indirect bounce)")
+      ->check(CLI::Range(1, 1000))->capture_default_str();
+  app->add_option("--camera", o->camera, "Camera by name (default: the scene's first)");
+  app->add_flag("--half", o->half, "Write half-float EXR (default: float)");
+  app->add_option("-o,--output", o->output, "Output EXR")->capture_default_str();
+  material->needs(fit);
+  fit->needs(material);
+  measured->excludes(material)->excludes(fit);
+  env->excludes(constant);
+  return {app, [o] { return runRender(*o); }};
+}
+
+}  // namespace glossy::cli

@@ -1,0 +1,51 @@
+// Unidirectional path tracing with next-event estimation to the environment and to area lights, combined
+// with BSDF sampling by multiple importance sampling (power heuristic), and Russian roulette.
+//
+// Depth follows Mitsuba 3: maxDepth counts path segments, so 1 shows only directly visible emitters,
+// 2 adds direct lighting, 3 one indirect bounce (the speed benchmark's setting), and so on.
+#pragma once
+
+#include "materials/models/brdf.h"
+#include "renderer/image/exr_image.h"
+#include "renderer/lights/area_lights.h"
+#include "renderer/lights/environment.h"
+#include "renderer/scene/embree_scene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace glossy {
+
+struct RenderSettings {
+  int width = 512, height = 512;
+  int spp = 64;
+  int maxDepth = 8;
+  int rouletteDepth = 4;  // Russian roulette from this depth on
+  uint32_t seed = 0;
+  int threads = 0;        // 0 = all cores
+  bool progress = true;
+};
+
+// What the integrator needs of a scene, built once: the BVH, the BRDF of each scene material, the lights.
+struct RenderScene {
+  const SceneDescription* description;
+  const EmbreeScene* bvh;
+  std::vector<Brdf> brdfs;  // per SceneDescription::materials entry
+  Brdf defaultBrdf = Lambertian{Rgb(0.5)};
+  const Environment* environment;
+  const AreaLights* areaLights;
+
+  const Brdf& brdfOf(uint32_t mesh) const {
+    const int m = description->meshes[mesh].material;
+    return m < 0 ? defaultBrdf : brdfs[size_t(m)];
+  }
+};
+
+struct RenderStats {
+  uint64_t droppedSamples = 0;  // non-finite path contributions, discarded
+  double seconds = 0.0;
+};
+
+RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSettings& settings, RenderStats& stats);
+
+}  // namespace glossy
