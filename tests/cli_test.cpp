@@ -1,5 +1,6 @@
 // The glossy command as the interface contract states it: eval (test vectors, --pdf), import (the
 // committed library regenerates byte for byte), exit status 2 with one line naming the file for bad input.
+#include "materials/params/material_file.h"
 #include "tests/support/test_support.h"
 
 #include <cmath>
@@ -80,14 +81,17 @@ TEST(CliEval, ReproducesTheMeasuredTestVectorsFromTheCompressedTable) {
 }
 
 TEST(CliEval, PdfColumnIsTheSamplersDensity) {
-  const RunResult r = runGlossy({"eval", "--material", (materialsDir() / "gold-paint.toml").string(), "--fit", "cook-torrance:E2", "--pdf"},
+  const auto file = materialsDir() / "gold-paint.toml";
+  const RunResult r = runGlossy({"eval", "--material", file.string(), "--fit", "cook-torrance:E2", "--pdf"},
                                 "0,0,1,0,0,1\n0.6,0,0.8,-0.6,0,0.8\n 0.3 , 0.4 , 0 , 0,0,1\n0,0,2,0,0,3\n");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto got = parseOutput(r.out);
   ASSERT_EQ(got.size(), 4u);
-  EXPECT_DOUBLE_EQ(got[0][3], 1.0 / M_PI);
-  EXPECT_DOUBLE_EQ(got[1][3], 0.8 / M_PI);
-  EXPECT_EQ(got[2][3], 0.0);
+  const Brdf brdf = makeBrdf(*loadMaterialFile(file).find(FitId::parse("cook-torrance:E2", "test")));
+  EXPECT_DOUBLE_EQ(got[0][3], pdf(brdf, Vec3(0, 0, 1), Vec3(0, 0, 1)));
+  EXPECT_DOUBLE_EQ(got[1][3], pdf(brdf, Vec3(0.6, 0, 0.8), Vec3(-0.6, 0, 0.8)));
+  EXPECT_GT(got[1][3], 0.8 / M_PI) << "the mirror direction is sampled more often than by the cosine lobe";
+  EXPECT_EQ(got[2][3], 0.0) << "no density on the horizon";
   EXPECT_EQ(got[3], got[0]) << "directions are normalised";
 }
 

@@ -118,19 +118,57 @@ TEST(Sampling, PdfIsTheDensitySampleDrawsAndWeightIsRhoCosOverPdf) {
   }
 }
 
-TEST(Sampling, PdfIntegratesToOneOverTheHemisphere) {
-  // Midpoint rule in (cos θ, φ): the interim cosine sampler never rejects, so its pdf integrates to 1.
-  const Brdf brdf = CookTorrance{Rgb(0.1), Rgb(0.2), 0.3, 1.5};
-  const Vec3 V = dir(0.8, 0.0);
-  const int n = 400;
-  double sum = 0.0;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const double mu = (i + 0.5) / n, phi = 2 * kPi * (j + 0.5) / n;
-      sum += pdf(brdf, dir(std::acos(mu), phi), V) * (1.0 / n) * (2 * kPi / n);
+TEST(Sampling, PdfIntegratesToTheSamplersAcceptanceProbability) {
+  // Lobes broad enough for a midpoint rule in (cos θ, φ); the sampler may reject (a reflected direction
+  // below the horizon, Smooth's points outside the unit disk), and the pdf is not renormalised, so its
+  // integral is the acceptance probability: ≤ 1, and equal to the fraction of valid samples.
+  const std::pair<const char*, Brdf> cases[] = {
+      {"cook-torrance m=0.3", CookTorrance{Rgb(0.1), Rgb(0.2), 0.3, 1.5}},
+      {"ashikhmin-shirley n=20", AshikhminShirley{Rgb(0.05), Rgb(0.5), 20.0, 1.8}},
+      {"microfacet C=1.5", Microfacet{Rgb(0.05), Rgb(2.0), 50.0, 1.5, 1.5}},
+      {"microfacet C=1", Microfacet{Rgb(0.05), Rgb(2.0), 50.0, 1.0, 1.5}},
+      {"smooth C=0.5", Smooth{Rgb(0.05), Rgb(2.0), 10.0, 0.5, 1.5, false}},
+      {"lambertian", Lambertian{Rgb(0.5)}},
+  };
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  for (const auto& [name, brdf] : cases)
+    for (double thetaV : {0.0, 0.9, 1.45}) {
+      const Vec3 V = dir(thetaV, 0.3);
+      const int n = 500;
+      double integral = 0.0;
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < 2 * n; ++j) {
+          const double mu = (i + 0.5) / n, phi = 2 * kPi * (j + 0.5) / (2 * n);
+          integral += pdf(brdf, dir(std::acos(mu), phi), V) * (1.0 / n) * (kPi / n);
+        }
+      const int samples = 400000;
+      int valid = 0;
+      for (int k = 0; k < samples; ++k) valid += sample(brdf, V, uni(rng), Vec2(uni(rng), uni(rng))).valid();
+      const double acceptance = double(valid) / samples;
+      EXPECT_LE(integral, 1.0 + 2e-3) << name << " θv=" << thetaV;
+      EXPECT_NEAR(integral, acceptance, 3e-3) << name << " θv=" << thetaV;
     }
-  EXPECT_NEAR(sum, 1.0, 1e-4);
-  EXPECT_EQ(pdf(brdf, dir(0.3, 0.0), dir(0.3, 0.0) * Vec3(1, 1, -1)), 0.0) << "no density for V below the horizon";
+  EXPECT_EQ(pdf(Brdf(CookTorrance{Rgb(0.1), Rgb(0.2), 0.3, 1.5}), dir(0.3, 0.0), dir(0.3, 0.0) * Vec3(1, 1, -1)), 0.0)
+      << "no density for V below the horizon";
+}
+
+TEST(Sampling, NoNonFiniteSampleAtTheEndsOfTheUnitSquareForTheMostExtremeFits) {
+  const Brdf extreme[] = {
+      AshikhminShirley{Rgb(0.0), Rgb(1.0), 6.2e5, 99.999}, Microfacet{Rgb(0.0), Rgb(1e3), 8.1e6, 0.014, 1.5},
+      Smooth{Rgb(0.0), Rgb(1e3), 8.1e6, 0.014, 1.5, false}, CookTorrance{Rgb(0.0), Rgb(1.0), 0.0018, 99.999},
+      Microfacet{Rgb(0.1), Rgb(1.0), 0.0, 1.0, 1.5}, Smooth{Rgb(0.1), Rgb(1.0), 0.0, 2.0, 1.5, false}};
+  const double ends[] = {0.0, 1e-300, 1e-17, 0.5, 1.0 - 1e-16, std::nextafter(1.0, 0.0)};
+  for (const Brdf& brdf : extreme)
+    for (double thetaV : {0.0, 1e-6, 0.7, 1.5707})
+      for (double a : ends)
+        for (double b : ends)
+          for (double lobe : {0.0, 0.999}) {
+            const BrdfSample s = sample(brdf, dir(thetaV, 0.2), lobe, Vec2(a, b));
+            if (!s.valid()) continue;
+            ASSERT_TRUE(std::isfinite(s.pdf) && std::isfinite(s.L.x) && std::isfinite(s.L.z));
+            ASSERT_TRUE(finiteNonNegative(s.weight)) << a << " " << b;
+          }
 }
 
 }  // namespace glossy::test

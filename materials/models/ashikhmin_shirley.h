@@ -39,8 +39,22 @@ struct AshikhminShirley {
                         (8.0 * kPi * h.cosVH * std::max(L.z, V.z));
     return kd * kInvPi + ks * spec;
   }
-  BrdfSample sample(const Vec3& V, double /*uLobe*/, Vec2 u) const { return sampleCosineLobe(*this, V, u); }
-  double pdf(const Vec3& L, const Vec3& V) const { return V.z > 0.0 ? cosineHemispherePdf(L) : 0.0; }
+
+  // Sampling: cos θ_h = ξ^(1/(n+1)), i.e. 1 − cos θ_h = −expm1(ln ξ / (n+1)); pdf_h = (n+1)/(2π) cosⁿθ_h.
+  double specularProbability() const {
+    // Head-on lobe albedo ≈ Ks F(1): the (n+1)/(2π) cosⁿ lobe integrates to 1 over H's hemisphere.
+    return lobeProbability(meanOf(ks) * fresnelCookTorrance(1.0, eta), kd);
+  }
+  bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const {
+    return reflectAboutHalfVector(V, -std::expm1(std::log(u.x) / (n + 1.0)), 2.0 * kPi * u.y, L);
+  }
+  double lobePdf(const Vec3& L, const Vec3& V) const {
+    const HalfVector h(L, V);
+    if (h.cosVH <= 0.0) return 0.0;
+    return (n + 1.0) / (2.0 * kPi) * std::exp(n * std::log1p(-h.oneMinusCosTheta)) / (4.0 * h.cosVH);
+  }
+  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
+  double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
 };
 
 }  // namespace glossy

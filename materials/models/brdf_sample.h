@@ -1,9 +1,13 @@
-// What a BRDF's sample() returns, and the cosine-lobe sampler every model uses until it samples its own
-// lobe (lobe sampling is issue #4; until then the pdf is exactly cos θ_L / π, never an approximation).
+// What a BRDF's sample() returns; the cosine-lobe sampler (Lambertian, and measured data until it gets its
+// own); and the one-sample mixture every analytic model uses: its specular lobe with probability
+// pSpecular, the cosine lobe otherwise.
 #pragma once
 
 #include "materials/core/types.h"
 #include "materials/models/warp.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace glossy {
 
@@ -24,6 +28,56 @@ BrdfSample sampleCosineLobe(const Model& model, const Vec3& V, Vec2 u) {
   // ρ cos/pdf = ρ π: no division, so no blow-up near the horizon.
   s.weight = model.eval(s.L, V) * kPi;
   return s;
+}
+
+// Probability of sampling the specular lobe, from the lobes' approximate albedos (the diffuse one is the
+// mean of Kd). Each lobe keeps some probability unless its albedo is zero, so MIS always has both.
+inline double meanOf(const Rgb& c) { return (c.r + c.g + c.b) / 3.0; }
+
+inline double lobeProbability(double specularAlbedo, const Rgb& kd) {
+  const double diffuse = meanOf(kd);
+  if (!(specularAlbedo > 0.0)) return 0.0;
+  if (!(diffuse > 0.0)) return 1.0;
+  const double p = specularAlbedo / (specularAlbedo + diffuse);
+  return p < 0.05 ? 0.05 : p > 0.95 ? 0.95 : p;
+}
+
+// The mixture sampler. Model provides eval(L, V), specularProbability(), sampleLobe(V, u, L) (false when
+// the lobe gives no direction) and lobePdf(L, V) (solid angle, exactly what sampleLobe draws from).
+// A direction below the horizon is an invalid sample; the pdf is not renormalised for it.
+template <class Model>
+double mixturePdf(const Model& model, const Vec3& L, const Vec3& V) {
+  if (V.z <= 0.0 || L.z <= 0.0) return 0.0;
+  const double p = model.specularProbability();
+  return (p > 0.0 ? p * model.lobePdf(L, V) : 0.0) + (p < 1.0 ? (1.0 - p) * L.z * kInvPi : 0.0);
+}
+
+template <class Model>
+BrdfSample sampleMixture(const Model& model, const Vec3& V, double uLobe, Vec2 u) {
+  if (V.z <= 0.0) return {};
+  BrdfSample s;
+  if (uLobe < model.specularProbability()) {
+    if (!model.sampleLobe(V, u, s.L)) return {};
+  } else {
+    s.L = squareToCosineHemisphere(u);
+  }
+  if (s.L.z <= 0.0) return {};
+  s.pdf = mixturePdf(model, s.L, V);
+  if (!(s.pdf > 0.0) || !std::isfinite(s.pdf)) return {};
+  s.weight = model.eval(s.L, V) * (s.L.z / s.pdf);
+  return s;
+}
+
+// The half-vector warp every microfacet-style sampler shares: H from (1 − cos θ_h, φ), L = reflect(V, H).
+// False when L would face away from H's side of V.
+inline bool reflectAboutHalfVector(const Vec3& V, double oneMinusCos, double phi, Vec3& L) {
+  const double cosTheta = 1.0 - oneMinusCos;
+  const double sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
+  const Vec3 H(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
+  const double vh = V.x * H.x + V.y * H.y + V.z * H.z;
+  if (vh <= 0.0) return false;
+  L = 2.0 * vh * H - V;
+  return true;
 }
 
 }  // namespace glossy

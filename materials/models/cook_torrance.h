@@ -40,8 +40,25 @@ struct CookTorrance {
     const double spec = d * fresnelCookTorrance(h.cosVH, eta) * g / (kPi * L.z * V.z);
     return kd * kInvPi + ks * spec;
   }
-  BrdfSample sample(const Vec3& V, double /*uLobe*/, Vec2 u) const { return sampleCosineLobe(*this, V, u); }
-  double pdf(const Vec3& L, const Vec3& V) const { return V.z > 0.0 ? cosineHemispherePdf(L) : 0.0; }
+
+  // Sampling (Beckmann): tan²θ_h = −m² ln(1 − ξ), φ_h uniform; pdf_h = exp(−tan²θ_h/m²) / (π m² cos³θ_h).
+  double specularProbability() const {
+    // Head-on lobe albedo ≈ 4 Ks F(1): D cos θ_h integrates to π over the hemisphere (G ≈ 1).
+    return lobeProbability(4.0 * meanOf(ks) * fresnelCookTorrance(1.0, eta), kd);
+  }
+  bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const {
+    const double tan2 = -m * m * std::log1p(-u.x);
+    const double sec = std::sqrt(1.0 + tan2);  // 1 − cos θ = tan² / (sec (sec + 1)), no cancellation
+    return reflectAboutHalfVector(V, tan2 / (sec * (sec + 1.0)), 2.0 * kPi * u.y, L);
+  }
+  double lobePdf(const Vec3& L, const Vec3& V) const {
+    const HalfVector h(L, V);
+    if (h.cosVH <= 0.0) return 0.0;
+    const double m2 = m * m;
+    return std::exp(-h.tan2Theta / m2) / (kPi * m2 * h.cosTheta * h.cosTheta * h.cosTheta * 4.0 * h.cosVH);
+  }
+  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
+  double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
 };
 
 }  // namespace glossy

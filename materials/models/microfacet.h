@@ -6,6 +6,7 @@
 //   [convention] Fresnel at ⟨V,H⟩, never ⟨N,H⟩.
 #pragma once
 
+#include "materials/models/abc_profile.h"
 #include "materials/models/brdf_sample.h"
 #include "materials/models/fresnel.h"
 #include "materials/models/half_vector.h"
@@ -39,8 +40,24 @@ struct Microfacet {
     const double spec = s * fresnelCookTorrance(h.cosVH, eta) * g / (kPi * L.z * V.z);
     return kd * kInvPi + a * spec;
   }
-  BrdfSample sample(const Vec3& V, double /*uLobe*/, Vec2 u) const { return sampleCosineLobe(*this, V, u); }
-  double pdf(const Vec3& L, const Vec3& V) const { return V.z > 0.0 ? cosineHemispherePdf(L) : 0.0; }
+
+  // Sampling: x = 1 − cos θ_h with density ∝ (1 + Bx)^(−C) on [0, 1], φ_h uniform, L = reflect(V, H);
+  // pdf(L) = pdf_h / (4⟨V,H⟩), pdf_h = S(x) / (2π ∫₀¹ S).
+  double specularProbability() const {
+    // Head-on lobe albedo ≈ 8 A F(1) ∫ S(x) dx over H within 45° of N (G ≈ 1).
+    return lobeProbability(8.0 * meanOf(a) * fresnelCookTorrance(1.0, eta) * AbcProfile{b, c}.integral(1.0 - std::sqrt(0.5)), kd);
+  }
+  bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const {
+    return reflectAboutHalfVector(V, AbcProfile{b, c}.invert(u.x, 1.0), 2.0 * kPi * u.y, L);
+  }
+  double lobePdf(const Vec3& L, const Vec3& V) const {
+    const HalfVector h(L, V);
+    if (h.cosVH <= 0.0) return 0.0;
+    const AbcProfile s{b, c};
+    return s(h.oneMinusCosTheta) / (s.integral(1.0) * 2.0 * kPi * 4.0 * h.cosVH);
+  }
+  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
+  double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
 };
 
 }  // namespace glossy

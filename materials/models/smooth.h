@@ -5,6 +5,7 @@
 //                fresnel = "vh" uses ⟨V,H⟩ instead. No π and no cosine factors on the specular term (G' = 1).
 #pragma once
 
+#include "materials/models/abc_profile.h"
 #include "materials/models/brdf_sample.h"
 #include "materials/models/fresnel.h"
 #include "materials/models/common_params.h"
@@ -49,8 +50,31 @@ struct Smooth {
     const double s = std::exp(-c * std::log1p(b * dp2));
     return kd * kInvPi + a * (fresnelCookTorrance(cosThetaD, eta) * s);
   }
-  BrdfSample sample(const Vec3& V, double /*uLobe*/, Vec2 u) const { return sampleCosineLobe(*this, V, u); }
-  double pdf(const Vec3& L, const Vec3& V) const { return V.z > 0.0 ? cosineHemispherePdf(L) : 0.0; }
+
+  // Sampling: the projected point L_p on the unit disk with density ∝ (1 + B|L_p − r_p|²)^(−C), r_p = −V_p:
+  // d² = |L_p − r_p|² from the ABC profile on [0, (1 + |V_p|)²], the angle uniform, |L_p| ≥ 1 rejected;
+  // pdf(L) = p_disk(L_p) cos θ_L with p_disk = S(d²) / (π ∫₀^{R²} S). Exact for every C.
+  double specularProbability() const {
+    // Head-on lobe albedo ≈ π A F(1) ∫₀¹ S(s) ds (s = sin²θ_L).
+    return lobeProbability(kPi * meanOf(a) * fresnelCookTorrance(1.0, eta) * AbcProfile{b, c}.integral(1.0), kd);
+  }
+  bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const {
+    const double r = 1.0 + std::sqrt(V.x * V.x + V.y * V.y);
+    const double d = std::sqrt(AbcProfile{b, c}.invert(u.x, r * r)), psi = 2.0 * kPi * u.y;
+    const double lx = -V.x + d * std::cos(psi), ly = -V.y + d * std::sin(psi);
+    const double r2 = lx * lx + ly * ly;
+    if (r2 >= 1.0) return false;
+    L = Vec3(lx, ly, std::sqrt(1.0 - r2));
+    return true;
+  }
+  double lobePdf(const Vec3& L, const Vec3& V) const {
+    const double r = 1.0 + std::sqrt(V.x * V.x + V.y * V.y);
+    const double dx = L.x + V.x, dy = L.y + V.y;
+    const AbcProfile s{b, c};
+    return s(dx * dx + dy * dy) / (kPi * s.integral(r * r)) * L.z;
+  }
+  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
+  double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
 };
 
 }  // namespace glossy
