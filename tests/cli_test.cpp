@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <sstream>
+#include <cmath>
 
 namespace glossy::test {
 
@@ -111,6 +112,53 @@ TEST(CliEval, BadInputExitsTwoWithOneLineNamingTheFile) {
   expectOneLineError(runGlossy({"eval", "--measured", (tmp / "absent.binary").string()}), "absent.binary");
 }
 
+TEST(CliSample, SamplesAgreeWithEvalAndArePerSeedDeterministic) {
+  const std::string file = (materialsDir() / "alum-bronze.toml").string();
+  const std::vector<std::string> args = {"sample", "--material", file, "--fit", "microfacet:E2", "--wo", "0.5,0,0.866", "-n", "200", "--seed", "4"};
+  const RunResult r = runGlossy(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(runGlossy(args).out, r.out) << "same seed, same samples";
+  auto other = args;
+  other.back() = "5";
+  EXPECT_NE(runGlossy(other).out, r.out);
+  const auto rows = parseOutput(r.out);
+  ASSERT_EQ(rows.size(), 200u);
+  // Feed the valid directions back through eval --pdf (at full precision): pdf and ρ·cos/pdf must match.
+  std::vector<std::vector<double>> valid;
+  for (const auto& row : rows) {
+    ASSERT_EQ(row.size(), 7u);
+    if (row[3] != 0.0) valid.push_back(row);
+  }
+  ASSERT_GT(valid.size(), 150u);
+  std::string pairs;
+  for (const auto& row : valid) {
+    std::ostringstream line;
+    line.precision(17);
+    line << row[0] << "," << row[1] << "," << row[2] << ",0.5,0,0.866\n";
+    pairs += line.str();
+  }
+  const RunResult e = runGlossy({"eval", "--material", file, "--fit", "microfacet:E2", "--pdf"}, pairs);
+  ASSERT_EQ(e.status, 0) << e.err;
+  const auto evals = parseOutput(e.out);
+  ASSERT_EQ(evals.size(), valid.size());
+  for (size_t i = 0; i < valid.size(); ++i) {
+    EXPECT_NEAR(evals[i][3], valid[i][3], 1e-9 * valid[i][3]);
+    const double cosL = valid[i][2] / std::sqrt(valid[i][0] * valid[i][0] + valid[i][1] * valid[i][1] + valid[i][2] * valid[i][2]);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(valid[i][4 + c], evals[i][c] * cosL / valid[i][3], 1e-7 * valid[i][4 + c] + 1e-12);
+  }
+}
+
+TEST(CliSample, InvalidSamplesAndBadInput) {
+  const std::string file = (materialsDir() / "chrome.toml").string();
+  const RunResult below = runGlossy({"sample", "--material", file, "--fit", "smooth:E2", "--wo", "0.3,0,-0.9", "-n", "3"});
+  ASSERT_EQ(below.status, 0) << below.err;
+  EXPECT_EQ(below.out, "0,0,0,0,0,0,0\n0,0,0,0,0,0,0\n0,0,0,0,0,0,0\n") << "no valid sample for a viewer below the surface";
+  expectOneLineError(runGlossy({"sample", "--material", file, "--fit", "smooth:E2", "--wo", "0,0,0", "-n", "3"}), "--wo");
+  expectOneLineError(runGlossy({"sample", "--material", file, "--fit", "smooth:E2", "--wo", "1,x", "-n", "3"}), "--wo");
+  expectOneLineError(runGlossy({"sample", "--measured", "/nonexistent/t.binary", "--wo", "0,0,1", "-n", "3"}), "t.binary");
+  EXPECT_EQ(runGlossy({"sample", "--material", file, "--fit", "smooth:E2", "-n", "3"}).status, 2) << "--wo is required";
+}
+
 TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(runGlossy({}).status, 2);
   EXPECT_EQ(runGlossy({"frobnicate"}).status, 2);
@@ -121,7 +169,7 @@ TEST(Cli, UsageErrorsExitTwo) {
 }
 
 TEST(Cli, EverySubcommandHasHelp) {
-  for (const char* sub : {"eval", "import", "list"}) {
+  for (const char* sub : {"eval", "import", "list", "render", "sample"}) {
     const RunResult r = runGlossy({sub, "--help"});
     EXPECT_EQ(r.status, 0) << sub;
     EXPECT_NE(r.out.find("Usage"), std::string::npos) << sub;

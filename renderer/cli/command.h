@@ -17,6 +17,7 @@ Command addEvalCommand(CLI::App& parent);
 Command addImportCommand(CLI::App& parent);
 Command addListCommand(CLI::App& parent);
 Command addRenderCommand(CLI::App& parent);
+Command addSampleCommand(CLI::App& parent);
 
 // The committed material library: ./materials when run from a checkout, else the source tree's.
 std::filesystem::path defaultMaterialsDir();

@@ -1,8 +1,9 @@
 // glossy eval: BRDF values for direction pairs read from stdin (shared/spec/interfaces.md).
 #include "materials/core/input_error.h"
 #include "materials/models/brdf.h"
-#include "materials/params/material_file.h"
+#include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/number_format.h"
 
 #include <charconv>
 #include <cmath>
@@ -16,7 +17,7 @@ namespace glossy::cli {
 namespace {
 
 struct EvalOptions {
-  std::string material, fit, measured, smoothFresnel;
+  BrdfOptions brdf;
   bool pdf = false;
 };
 
@@ -48,28 +49,8 @@ std::pair<Vec3, Vec3> parseDirections(const std::string& line, size_t number) {
   return {L, V};
 }
 
-void appendNumber(std::string& out, double v) {
-  char buf[32];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);  // shortest form that reads back exactly
-  out.append(buf, end);
-}
-
 int runEval(const EvalOptions& o) {
-  Brdf brdf;
-  if (!o.measured.empty()) {
-    brdf = Measured{std::make_shared<const MerlTable>(MerlTable::load(o.measured))};
-  } else {
-    const MaterialFile material = loadMaterialFile(o.material);
-    const FitId id = FitId::parse(o.fit, "--fit");
-    const Fit* fit = material.find(id);
-    if (!fit) throw InputError(o.material + ": has no " + id.str() + " fit");
-    Fit chosen = *fit;
-    if (!o.smoothFresnel.empty()) {
-      if (id.model != "smooth") throw InputError("--smooth-fresnel applies to smooth fits only, not " + id.str());
-      chosen.params.set("fresnel", o.smoothFresnel);
-    }
-    brdf = makeBrdf(chosen);
-  }
+  const Brdf brdf = o.brdf.load();
 
   // Parse everything first: bad input produces an error and no partial output.
   std::vector<std::pair<Vec3, Vec3>> pairs;
@@ -105,20 +86,8 @@ Command addEvalCommand(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand("eval",
       "Evaluate a BRDF. Reads lines Lx,Ly,Lz,Vx,Vy,Vz (local frame, N = +z, L toward the light, V toward the "
       "viewer) on stdin; writes R,G,B (with --pdf: R,G,B,pdf) per line on stdout in full double precision.");
-  auto* material = app->add_option("--material", o->material, "Material parameter file (TOML)");
-  auto* fit = app->add_option("--fit", o->fit, "Which fit of the material: MODEL:METRIC, e.g. microfacet:E2");
-  auto* measured = app->add_option("--measured", o->measured, "MERL .binary (or .binary.xz) table to evaluate instead");
+  o->brdf.addTo(app);
   app->add_flag("--pdf", o->pdf, "Also print the solid-angle pdf of the BRDF's sampler for L given V");
-  app->add_option("--smooth-fresnel", o->smoothFresnel,
-                  "Override a smooth fit's Fresnel angle: projected (the fits' convention) or vh")
-      ->check(CLI::IsMember({"projected", "vh"}));
-  material->needs(fit);
-  fit->needs(material);
-  measured->excludes(material)->excludes(fit);
-  app->callback([app, measured, material] {
-    if (measured->count() == 0 && material->count() == 0)
-      throw CLI::RequiredError("eval: give --material F --fit MODEL:METRIC, or --measured F.binary");
-  });
   return {app, [o] { return runEval(*o); }};
 }
 

@@ -1,0 +1,39 @@
+#include "renderer/cli/brdf_options.h"
+
+#include "materials/core/input_error.h"
+#include "materials/params/material_file.h"
+
+#include <memory>
+
+namespace glossy::cli {
+
+void BrdfOptions::addTo(CLI::App* app) {
+  auto* materialOpt = app->add_option("--material", material, "Material parameter file (TOML)");
+  auto* fitOpt = app->add_option("--fit", fit, "Which fit of the material: MODEL:METRIC, e.g. microfacet:E2");
+  auto* measuredOpt = app->add_option("--measured", measured, "MERL .binary (or .binary.xz) table instead");
+  app->add_option("--smooth-fresnel", smoothFresnel, "Override a smooth fit's Fresnel angle: projected (the fits' convention) or vh")
+      ->check(CLI::IsMember({"projected", "vh"}));
+  materialOpt->needs(fitOpt);
+  fitOpt->needs(materialOpt);
+  measuredOpt->excludes(materialOpt)->excludes(fitOpt);
+  app->callback([app, materialOpt, measuredOpt] {
+    if (measuredOpt->count() == 0 && materialOpt->count() == 0)
+      throw CLI::RequiredError(app->get_name() + ": give --material F --fit MODEL:METRIC, or --measured F.binary");
+  });
+}
+
+Brdf BrdfOptions::load() const {
+  if (!measured.empty()) return Measured{std::make_shared<const MerlTable>(MerlTable::load(measured))};
+  const MaterialFile file = loadMaterialFile(material);
+  const FitId id = FitId::parse(fit, "--fit");
+  const Fit* found = file.find(id);
+  if (!found) throw InputError(material + ": has no " + id.str() + " fit");
+  Fit chosen = *found;
+  if (!smoothFresnel.empty()) {
+    if (id.model != Smooth::kName) throw InputError("--smooth-fresnel applies to smooth fits only, not " + id.str());
+    chosen.params.set("fresnel", smoothFresnel);
+  }
+  return makeBrdf(chosen);
+}
+
+}  // namespace glossy::cli

@@ -1,0 +1,92 @@
+// glossy sample: directions drawn from a BRDF's sampler for one outgoing direction, with their pdf and
+// weight, so that anyone can check the sampler (shared/spec/interfaces.md).
+#include "materials/core/input_error.h"
+#include "renderer/cli/brdf_options.h"
+#include "renderer/cli/command.h"
+#include "renderer/cli/number_format.h"
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <random>
+#include <sstream>
+
+namespace glossy::cli {
+
+namespace {
+
+struct SampleOptions {
+  BrdfOptions brdf;
+  std::string wo;
+  long long count = 0;
+  uint64_t seed = 0;
+};
+
+Vec3 parseDirection(const std::string& text) {
+  std::stringstream s(text);
+  std::string item;
+  double v[3];
+  int n = 0;
+  while (std::getline(s, item, ',')) {
+    size_t used = 0;
+    try {
+      if (n < 3) v[n] = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (n >= 3 || used != item.size()) throw InputError("--wo: '" + text + "' is not x,y,z");
+    ++n;
+  }
+  if (n != 3) throw InputError("--wo: '" + text + "' is not x,y,z");
+  const Vec3 d(v[0], v[1], v[2]);
+  const double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  if (!std::isfinite(len) || len == 0.0) throw InputError("--wo: '" + text + "' is zero or not finite");
+  return d / len;
+}
+
+int runSample(const SampleOptions& o) {
+  const Brdf brdf = o.brdf.load();
+  const Vec3 V = parseDirection(o.wo);
+  // Independent uniform numbers (not the renderer's low-discrepancy points), so the output is an i.i.d.
+  // sample that a χ² test may take as multinomial.
+  std::mt19937_64 rng(o.seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::string out;
+  out.reserve(size_t(std::min<long long>(o.count, 1 << 20)) * 120);
+  for (long long i = 0; i < o.count; ++i) {
+    const double uLobe = uniform(rng), u1 = uniform(rng), u2 = uniform(rng);
+    const BrdfSample s = sample(brdf, V, uLobe, Vec2(u1, u2));
+    if (!s.valid()) {
+      out += "0,0,0,0,0,0,0\n";
+    } else {
+      for (double x : {s.L.x, s.L.y, s.L.z, s.pdf, s.weight.r, s.weight.g, s.weight.b}) {
+        appendNumber(out, x);
+        out += ',';
+      }
+      out.back() = '\n';
+    }
+    if (out.size() > (1u << 24)) {
+      std::fwrite(out.data(), 1, out.size(), stdout);
+      out.clear();
+    }
+  }
+  std::fwrite(out.data(), 1, out.size(), stdout);
+  return std::fflush(stdout) == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+Command addSampleCommand(CLI::App& parent) {
+  auto o = std::make_shared<SampleOptions>();
+  CLI::App* app = parent.add_subcommand("sample",
+      "Draw directions from a BRDF's sampler for the outgoing direction --wo (local frame, N = +z). Writes N lines "
+      "Lx,Ly,Lz,pdf,wR,wG,wB with w = ρ cos θ_L / pdf; an invalid sample (below the horizon, rejected) is the line "
+      "0,0,0,0,0,0,0.");
+  o->brdf.addTo(app);
+  app->add_option("--wo", o->wo, "Outgoing direction toward the viewer, x,y,z (normalised here)")->required();
+  app->add_option("-n", o->count, "Number of samples")->required()->check(CLI::NonNegativeNumber);
+  app->add_option("--seed", o->seed, "Seed of the uniform random numbers")->capture_default_str();
+  return {app, [o] { return runSample(*o); }};
+}
+
+}  // namespace glossy::cli
