@@ -18,6 +18,7 @@ namespace {
 struct RenderOptions {
   std::string scene, material, fit, measured, merlDir, env, envConstant, camera, output = "out/render.exr";
   double envRotate = 0.0;
+  std::string brdfSampling = "lobe";
   RenderSettings settings;
   bool half = false;
 };
@@ -83,6 +84,7 @@ int runRender(RenderOptions o) {
     if (!camera) throw InputError(scenePath + ": no camera named '" + o.camera + "'");
   }
 
+  o.settings.cosineBrdfSampling = o.brdfSampling == "cosine";
   RenderStats stats;
   const RgbImage image = render(scene, *camera, o.settings, stats);
 
@@ -95,6 +97,7 @@ int runRender(RenderOptions o) {
       {"glossy:spp", o.settings.spp},
       {"glossy:seed", int(o.settings.seed)},
       {"glossy:maxDepth", o.settings.maxDepth},
+      {"glossy:brdfSampling", o.brdfSampling},
       {"glossy:scene", scenePath},
       {"glossy:env", environment.description()},
       {"glossy:smoothFresnel", binding.smoothFresnel},
@@ -138,6 +141,9 @@ Command addRenderCommand(CLI::App& parent) {
       ->check(CLI::Range(1, 1000))->capture_default_str();
   app->add_option("--camera", o->camera, "Camera by name (default: the scene's first)");
   app->add_flag("--half", o->half, "Write half-float EXR (default: float)");
+  app->add_option("--brdf-sampling", o->brdfSampling,
+                  "lobe: each model samples its own lobe (default); cosine: the cosine lobe, to see what lobe sampling is worth")
+      ->check(CLI::IsMember({"lobe", "cosine"}))->capture_default_str();
   app->add_option("-o,--output", o->output, "Output EXR")->capture_default_str();
   material->needs(fit);
   fit->needs(material);

@@ -92,7 +92,7 @@ class PathTracer {
       radiance += throughput * sampleLight(hit.position, ng, frame, woLocal, brdf, sampler);
 
       const double uLobe = sampler.get1D();
-      const BrdfSample s = sample(brdf, woLocal, uLobe, sampler.get2D());
+      const BrdfSample s = sampleBrdf(brdf, woLocal, uLobe, sampler.get2D());
       if (!s.valid()) break;
       const Vec3 wi = frame.toWorld(s.L);
       if (glm::dot(wi, ng) <= 0.0) break;  // below the geometric surface: no leaking through it
@@ -110,6 +110,19 @@ class PathTracer {
   }
 
  private:
+  BrdfSample sampleBrdf(const Brdf& brdf, const Vec3& wo, double uLobe, Vec2 u) const {
+    if (!settings_.cosineBrdfSampling) return sample(brdf, wo, uLobe, u);
+    BrdfSample s;
+    s.L = squareToCosineHemisphere(u);
+    s.pdf = cosineHemispherePdf(s.L);
+    if (s.pdf <= 0.0) return {};
+    s.weight = eval(brdf, s.L, wo) * kPi;
+    return s;
+  }
+  double pdfBrdf(const Brdf& brdf, const Vec3& wi, const Vec3& wo) const {
+    return settings_.cosineBrdfSampling ? cosineHemispherePdf(wi) : pdf(brdf, wi, wo);
+  }
+
   const SceneMaterial* materialOf(uint32_t mesh) const {
     const int m = scene_.description->meshes[mesh].material;
     return m < 0 ? nullptr : &scene_.description->materials[size_t(m)];
@@ -156,7 +169,7 @@ class PathTracer {
     const Rgb f = eval(brdf, wiLocal, woLocal);
     if (maxComponent(f) <= 0.0) return Rgb(0.0);
     if (shadow.tfar <= 0.0 || scene_.bvh->occluded(shadow)) return Rgb(0.0);
-    const double w = powerHeuristic(pdfLight, pdf(brdf, wiLocal, woLocal));
+    const double w = powerHeuristic(pdfLight, pdfBrdf(brdf, wiLocal, woLocal));
     return f * le * (wiLocal.z * w / pdfLight);
   }
 

@@ -24,6 +24,9 @@ struct RenderSettings {
   uint32_t seed = 0;
   int threads = 0;        // 0 = all cores
   bool progress = true;
+  // Sample every BRDF's cosine lobe instead of its own (exact pdf either way): only to measure what lobe
+  // sampling is worth.
+  bool cosineBrdfSampling = false;
 };
 
 // What the integrator needs of a scene, built once: the BVH, the BRDF of each scene material, the lights.
