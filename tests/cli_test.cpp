@@ -33,14 +33,6 @@ std::string directions(const std::vector<std::map<std::string, std::string>>& ro
   return in;
 }
 
-void expectOneLineError(const RunResult& r, const std::string& mention) {
-  EXPECT_EQ(r.status, 2) << r.err;
-  EXPECT_TRUE(r.out.empty()) << r.out;
-  ASSERT_FALSE(r.err.empty());
-  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
-  EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
-}
-
 }  // namespace
 
 TEST(CliEval, ReproducesEveryAnalyticTestVector) {

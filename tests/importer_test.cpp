@@ -19,17 +19,6 @@ const Fit& fitOf(const MaterialFile& m, const char* id) {
   return *f;
 }
 
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return {};
-}
-
 const char* kRow =
     "Cook-Torrance\t$E_1$\tR: $K_d = 0.1063, K_s = 0.058727$ G: $K_d = 0.0816, K_s = 0.043676$ B: $K_d = 0.0557, "
     "K_s = 0.052230$ Common: $m = 0.017044, \\eta = 1.464929$";
@@ -61,19 +50,19 @@ TEST(ImportSupplement, ReadsAllSixMaterialsAndThirtySixFits) {
 TEST(ImportSupplement, RowErrorsNameFileLineAndProblem) {
   const std::string head = "## 2 Material Name: test\n\nModel\tFitting Metric\tModel Parameters\n";
   EXPECT_EQ(importSupplement(head + kRow + "\n", "s.txt").at(0).fits.size(), 1u);
-  std::string e = errorOf([&] { importSupplement(head + std::string(kRow).replace(std::string(kRow).find("Common"), 6, "Shared") + "\n", "s.txt"); });
+  std::string e = expectInputError([&] { importSupplement(head + std::string(kRow).replace(std::string(kRow).find("Common"), 6, "Shared") + "\n", "s.txt"); });
   EXPECT_NE(e.find("s.txt:4: test cook-torrance:E1: expected the groups"), std::string::npos) << e;
-  e = errorOf([&] { importSupplement(head + std::string(kRow).replace(std::string(kRow).find("m = 0.017044"), 12, "m = -0.017") + "\n", "s.txt"); });
+  e = expectInputError([&] { importSupplement(head + std::string(kRow).replace(std::string(kRow).find("m = 0.017044"), 12, "m = -0.017") + "\n", "s.txt"); });
   EXPECT_NE(e.find("s.txt:4"), std::string::npos) << e;
   EXPECT_NE(e.find("'m'"), std::string::npos) << e;
-  e = errorOf([&] { importSupplement(head + std::string(kRow).replace(std::string(kRow).find("K_s = 0.043676"), 14, "Q = 0.043676") + "\n", "s.txt"); });
+  e = expectInputError([&] { importSupplement(head + std::string(kRow).replace(std::string(kRow).find("K_s = 0.043676"), 14, "Q = 0.043676") + "\n", "s.txt"); });
   EXPECT_NE(e.find("unknown parameter 'Q'"), std::string::npos) << e;
-  e = errorOf([&] { importSupplement(std::string(kRow) + "\n", "s.txt"); });
+  e = expectInputError([&] { importSupplement(std::string(kRow) + "\n", "s.txt"); });
   EXPECT_NE(e.find("s.txt:1: parameter row before any 'Material Name:'"), std::string::npos) << e;
-  e = errorOf([&] { importSupplement(head + kRow + "\n" + kRow + "\n", "s.txt"); });
+  e = expectInputError([&] { importSupplement(head + kRow + "\n" + kRow + "\n", "s.txt"); });
   EXPECT_NE(e.find("s.txt:5"), std::string::npos) << e;
   EXPECT_NE(e.find("second cook-torrance:E1"), std::string::npos) << e;
-  e = errorOf([&] { importSupplement(head, "s.txt"); });
+  e = expectInputError([&] { importSupplement(head, "s.txt"); });
   EXPECT_NE(e.find("material 'test' has no parameter rows"), std::string::npos) << e;
 }
 
@@ -106,26 +95,26 @@ TEST(ImportFitLines, MetricComesFromTheFileNameOrTheHeaderComment) {
       "x = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), LowCookTorrance(albedo = [0.01, 0.02, 0.03], roughness = 0.1, eta = 1.5))\n";
   EXPECT_EQ(importFitLines(line, "dir/low_cooktorrance_E2.fit").at(0).fits[0].id.str(), "cook-torrance:E2");
   EXPECT_EQ(importFitLines("# the E1 fits of the model\n" + line, "ct.fit").at(0).fits[0].id.str(), "cook-torrance:E1");
-  EXPECT_NE(errorOf([&] { importFitLines(line, "ct.fit"); }).find("ct.fit: cannot tell the metric"), std::string::npos);
+  EXPECT_NE(expectInputError([&] { importFitLines(line, "ct.fit"); }).find("ct.fit: cannot tell the metric"), std::string::npos);
 }
 
 TEST(ImportFitLines, LineErrorsNameFileAndLine) {
   const std::string ok =
       "a = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), LowSmooth(A = [1, 2, 3], B = 10, C = 0.5, eta = 1.5))\n";
-  std::string e = errorOf([&] { importFitLines(ok + "b = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), Phong(n = 3))\n", "f_E2.fit"); });
+  std::string e = expectInputError([&] { importFitLines(ok + "b = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), Phong(n = 3))\n", "f_E2.fit"); });
   EXPECT_NE(e.find("f_E2.fit:2: unknown model 'Phong'"), std::string::npos) << e;
-  e = errorOf([&] { importFitLines(ok + "garbage\n", "f_E2.fit"); });
+  e = expectInputError([&] { importFitLines(ok + "garbage\n", "f_E2.fit"); });
   EXPECT_NE(e.find("f_E2.fit:2: not a fit line"), std::string::npos) << e;
-  e = errorOf([&] { importFitLines("a = Aggregate(Lambertian(albedo = [0.1, 0.2]), LowSmooth(A = [1, 2, 3], B = 10, C = 0.5, eta = 1.5))\n", "f_E2.fit"); });
+  e = expectInputError([&] { importFitLines("a = Aggregate(Lambertian(albedo = [0.1, 0.2]), LowSmooth(A = [1, 2, 3], B = 10, C = 0.5, eta = 1.5))\n", "f_E2.fit"); });
   EXPECT_NE(e.find("f_E2.fit:1"), std::string::npos) << e;
   EXPECT_NE(e.find("expected 3 values"), std::string::npos) << e;
-  e = errorOf([&] { importFitLines("a = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), LowSmooth(A = [1, 2, 3], B = 10, C = 0, eta = 1.5))\n", "f_E2.fit"); });
+  e = expectInputError([&] { importFitLines("a = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), LowSmooth(A = [1, 2, 3], B = 10, C = 0, eta = 1.5))\n", "f_E2.fit"); });
   EXPECT_NE(e.find("'c'"), std::string::npos) << e;
-  e = errorOf([&] { importFitLines("a = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), LowSmooth(A = [1, 2, 3], B = 10, D = 3, C = 1, eta = 1.5))\n", "f_E2.fit"); });
+  e = expectInputError([&] { importFitLines("a = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), LowSmooth(A = [1, 2, 3], B = 10, D = 3, C = 1, eta = 1.5))\n", "f_E2.fit"); });
   EXPECT_NE(e.find("unknown argument 'D'"), std::string::npos) << e;
-  e = errorOf([&] { importFitLines("a = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), LowSmooth(A = [1, 2, 3], B = 10, eta = 1.5))\n", "f_E2.fit"); });
+  e = expectInputError([&] { importFitLines("a = Aggregate(Lambertian(albedo = [0.1, 0.2, 0.3]), LowSmooth(A = [1, 2, 3], B = 10, eta = 1.5))\n", "f_E2.fit"); });
   EXPECT_NE(e.find("missing key 'c'"), std::string::npos) << e;
-  e = errorOf([&] { importFitLines(ok + ok, "f_E2.fit"); });
+  e = expectInputError([&] { importFitLines(ok + ok, "f_E2.fit"); });
   EXPECT_NE(e.find("f_E2.fit:2: material 'a' appears twice"), std::string::npos) << e;
 }
 
@@ -168,8 +157,8 @@ TEST(Importer, RejectsFilesOfNeitherKind) {
   TempDir tmp;
   writeText(tmp / "notes.txt", "nothing to see\n");
   Importer imp;
-  EXPECT_NE(errorOf([&] { imp.addFile(tmp / "notes.txt"); }).find("notes.txt: neither"), std::string::npos);
-  EXPECT_NE(errorOf([&] { imp.addFile(tmp / "absent.fit"); }).find("absent.fit: cannot open"), std::string::npos);
+  EXPECT_NE(expectInputError([&] { imp.addFile(tmp / "notes.txt"); }).find("notes.txt: neither"), std::string::npos);
+  EXPECT_NE(expectInputError([&] { imp.addFile(tmp / "absent.fit"); }).find("absent.fit: cannot open"), std::string::npos);
 }
 
 }  // namespace glossy::test

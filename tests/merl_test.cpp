@@ -35,18 +35,6 @@ MerlBin lookedUp(const Vec3& L, const Vec3& V) {
 
 double thetaHEdge(int i) { return double(i) * i / (90.0 * 90.0) * kHalfPi; }  // lower edge of bin i
 
-// The error's message, which must be one line.
-std::string expectError(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return {};
-}
-
 std::string xzCompress(const std::string& data) {
   std::string out(lzma_stream_buffer_bound(data.size()), '\0');
   size_t pos = 0;
@@ -154,7 +142,7 @@ TEST(Merl, BadFilesAreErrorsNamingTheFile) {
   TempDir tmp;
   auto loadBytes = [&](const std::string& name, const std::string& bytes) {
     writeText(tmp / name, bytes);
-    return expectError([&] { MerlTable::load(tmp / name); });
+    return expectInputError([&] { MerlTable::load(tmp / name); });
   };
   std::string e = loadBytes("truncated.binary", good.substr(0, good.size() - 8));
   EXPECT_NE(e.find("truncated.binary"), std::string::npos) << e;
@@ -172,9 +160,9 @@ TEST(Merl, BadFilesAreErrorsNamingTheFile) {
   std::memcpy(nan.data() + 12 + 8 * 1000, &q, 8);
   e = loadBytes("nan.binary", nan);
   EXPECT_NE(e.find("nan.binary: non-finite value"), std::string::npos) << e;
-  e = expectError([&] { MerlTable::load(tmp / "missing.binary"); });
+  e = expectInputError([&] { MerlTable::load(tmp / "missing.binary"); });
   EXPECT_NE(e.find("missing.binary: cannot open"), std::string::npos) << e;
-  e = expectError([&] { MerlTable::load(tmp.path()); });
+  e = expectInputError([&] { MerlTable::load(tmp.path()); });
   EXPECT_NE(e.find("is a directory"), std::string::npos) << e;
 }
 
@@ -188,10 +176,10 @@ TEST(Merl, CompressedTablesReadLikePlainOnesAndStandInForAbsentOnes) {
   const MerlTable packed = MerlTable::load(tmp / "packed.binary");  // absent: NAME.binary.xz stands in
   for (size_t i = 0; i < MerlTable::kBins; i += 997) EXPECT_EQ(plain.value(i), packed.value(i));
   writeText(tmp / "cut.binary.xz", xz.substr(0, xz.size() / 2));
-  std::string e = expectError([&] { MerlTable::load(tmp / "cut.binary.xz"); });
+  std::string e = expectInputError([&] { MerlTable::load(tmp / "cut.binary.xz"); });
   EXPECT_NE(e.find("cut.binary.xz: truncated xz data"), std::string::npos) << e;
   writeText(tmp / "junk.binary.xz", "not xz at all");
-  e = expectError([&] { MerlTable::load(tmp / "junk.binary.xz"); });
+  e = expectInputError([&] { MerlTable::load(tmp / "junk.binary.xz"); });
   EXPECT_NE(e.find("junk.binary.xz: not an xz file"), std::string::npos) << e;
 }
 

@@ -15,13 +15,6 @@ std::vector<std::string> small(const TempDir& tmp, const std::string& name, std:
   return args;
 }
 
-void expectOneLineError(const RunResult& r, const std::string& mention) {
-  EXPECT_EQ(r.status, 2) << r.err;
-  ASSERT_FALSE(r.err.empty());
-  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
-  EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
-}
-
 }  // namespace
 
 TEST(CliRender, WritesAnExrWithTheContractsMetadata) {

@@ -1,5 +1,7 @@
 #include "tests/support/test_support.h"
 
+#include "materials/core/input_error.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -47,6 +49,25 @@ RunResult runGlossy(const std::vector<std::string>& args, const std::string& inp
   r.out = readText(tmp / "stdout");
   r.err = readText(tmp / "stderr");
   return r;
+}
+
+std::string expectInputError(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << "not one line: " << e.what();
+    return e.what();
+  }
+  ADD_FAILURE() << "no InputError";
+  return {};
+}
+
+void expectOneLineError(const RunResult& r, const std::string& mention) {
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
+  EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
 }
 
 TempDir::TempDir() {

@@ -33,6 +33,12 @@ struct RunResult {
 // Runs the glossy executable with `args` (shell-quoted here) and `input` on stdin.
 RunResult runGlossy(const std::vector<std::string>& args, const std::string& input = "");
 
+// Runs f, which must throw InputError with a one-line message; returns the message.
+std::string expectInputError(const std::function<void()>& f);
+// A glossy run that must fail as bad input: exit status 2, nothing on stdout, one line on stderr that
+// mentions `mention`.
+void expectOneLineError(const RunResult& r, const std::string& mention);
+
 class TempDir {
  public:
   TempDir();
