@@ -1,0 +1,256 @@
+#include "tests/support/chi2.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+namespace glossy::test {
+
+namespace {
+
+Vec3 direction(double theta, double phi) {
+  const double s = std::sin(theta);
+  return {s * std::cos(phi), s * std::sin(phi), std::cos(theta)};
+}
+
+// 7-point Gauss-Legendre on [−1, 1]: exact for polynomials of degree 13.
+constexpr double kNodes[7] = {-0.9491079123427585, -0.7415311855993945, -0.4058451513773972, 0.0,
+                              0.4058451513773972,  0.7415311855993945,  0.9491079123427585};
+constexpr double kWeights[7] = {0.1294849661688697, 0.2797053914892766, 0.3818300505051189, 0.4179591836734694,
+                                0.3818300505051189, 0.2797053914892766, 0.1294849661688697};
+
+struct Rect {
+  double t0, t1, p0, p1;  // θ and absolute φ bounds
+};
+
+double gaussLegendre(const Rect& r, const std::function<double(const Vec3&)>& f) {
+  const double ht = 0.5 * (r.t1 - r.t0), hp = 0.5 * (r.p1 - r.p0);
+  const double ct = 0.5 * (r.t1 + r.t0), cp = 0.5 * (r.p1 + r.p0);
+  double sum = 0.0;
+  for (int i = 0; i < 7; ++i) {
+    const double theta = ct + ht * kNodes[i];
+    const double sinTheta = std::sin(theta);
+    double row = 0.0;
+    for (int j = 0; j < 7; ++j) row += kWeights[j] * f(direction(theta, cp + hp * kNodes[j]));
+    sum += kWeights[i] * sinTheta * row;
+  }
+  return sum * ht * hp;
+}
+
+// Splits into four until the four halves agree with the whole; the tolerance is far below the Poisson noise
+// of any cell (1e6 samples: a relative 1e-3 on the fullest cell).
+double adaptive(const Rect& r, double whole, const std::function<double(const Vec3&)>& f, int depth) {
+  const double tm = 0.5 * (r.t0 + r.t1), pm = 0.5 * (r.p0 + r.p1);
+  const Rect q[4] = {{r.t0, tm, r.p0, pm}, {tm, r.t1, r.p0, pm}, {r.t0, tm, pm, r.p1}, {tm, r.t1, pm, r.p1}};
+  double parts[4], sum = 0.0;
+  for (int k = 0; k < 4; ++k) sum += parts[k] = gaussLegendre(q[k], f);
+  if (depth >= 10 || std::abs(sum - whole) <= 1e-9 * std::abs(sum) + 1e-14) return sum;
+  sum = 0.0;
+  for (int k = 0; k < 4; ++k) sum += adaptive(q[k], parts[k], f, depth + 1);
+  return sum;
+}
+
+// Regularised upper incomplete gamma Q(a, x): series for P below x = a + 1, Lentz's continued fraction above.
+double gammaQ(double a, double x) {
+  if (x <= 0.0) return 1.0;
+  const double logPrefix = -x + a * std::log(x) - std::lgamma(a);
+  if (x < a + 1.0) {
+    double term = 1.0 / a, sum = term;
+    for (int n = 1; n < 100000; ++n) {
+      term *= x / (a + n);
+      sum += term;
+      if (std::abs(term) < std::abs(sum) * 1e-16) break;
+    }
+    return std::max(0.0, 1.0 - sum * std::exp(logPrefix));
+  }
+  constexpr double tiny = 1e-300;
+  double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
+  for (int i = 1; i < 100000; ++i) {
+    const double an = -i * (i - a);
+    b += 2.0;
+    d = an * d + b;
+    if (std::abs(d) < tiny) d = tiny;
+    c = b + an / c;
+    if (std::abs(c) < tiny) c = tiny;
+    d = 1.0 / d;
+    const double delta = d * c;
+    h *= delta;
+    if (std::abs(delta - 1.0) < 1e-16) break;
+  }
+  return std::exp(logPrefix) * h;
+}
+
+}  // namespace
+
+LobeGrid::LobeGrid(const Vec3& centre, double sigma, int thetaCells, int phiCells) {
+  thetaC_ = std::atan2(std::hypot(centre.x, centre.y), centre.z);
+  phiC_ = (centre.x == 0.0 && centre.y == 0.0) ? 0.0 : std::atan2(centre.y, centre.x);
+  thetaSigma_ = sigma;
+  // Around the pole a lobe covers every φ: there the φ cells become uniform (σ_φ ≫ π).
+  phiSigma_ = std::min(1e6, sigma / std::max(std::sin(thetaC_), 1e-300));
+
+  tTheta0_ = std::asinh(-thetaC_ / thetaSigma_);
+  dtTheta_ = (std::asinh((kPi / 2 - thetaC_) / thetaSigma_) - tTheta0_) / thetaCells;
+  thetaEdges_.resize(thetaCells + 1);
+  for (int i = 0; i <= thetaCells; ++i) thetaEdges_[i] = thetaC_ + thetaSigma_ * std::sinh(tTheta0_ + i * dtTheta_);
+  thetaEdges_.front() = 0.0;
+  thetaEdges_.back() = kPi / 2;
+
+  tPhi0_ = -std::asinh(kPi / phiSigma_);
+  dtPhi_ = -2.0 * tPhi0_ / phiCells;
+  phiEdges_.resize(phiCells + 1);
+  for (int j = 0; j <= phiCells; ++j) phiEdges_[j] = phiSigma_ * std::sinh(tPhi0_ + j * dtPhi_);
+  phiEdges_.front() = -kPi;
+  phiEdges_.back() = kPi;
+}
+
+int LobeGrid::cellOf(const Vec3& L) const {
+  if (!(L.z > 0.0)) return -1;
+  const double theta = std::atan2(std::hypot(L.x, L.y), L.z);
+  const double phi = std::remainder(std::atan2(L.y, L.x) - phiC_, 2.0 * kPi);
+  const int nt = int(thetaEdges_.size()) - 1, np = int(phiEdges_.size()) - 1;
+  int i = int(std::floor((std::asinh((theta - thetaC_) / thetaSigma_) - tTheta0_) / dtTheta_));
+  int j = int(std::floor((std::asinh(phi / phiSigma_) - tPhi0_) / dtPhi_));
+  i = std::clamp(i, 0, nt - 1);
+  j = std::clamp(j, 0, np - 1);
+  // The edges were rounded at the ends and by sinh: settle the last ulp against the stored edges.
+  while (i > 0 && theta < thetaEdges_[i]) --i;
+  while (i < nt - 1 && theta >= thetaEdges_[i + 1]) ++i;
+  while (j > 0 && phi < phiEdges_[j]) --j;
+  while (j < np - 1 && phi >= phiEdges_[j + 1]) ++j;
+  return i * np + j;
+}
+
+double LobeGrid::integrate(int cell, const std::function<double(const Vec3&)>& f) const {
+  const int np = int(phiEdges_.size()) - 1;
+  const int i = cell / np, j = cell % np;
+  const Rect r{thetaEdges_[i], thetaEdges_[i + 1], phiC_ + phiEdges_[j], phiC_ + phiEdges_[j + 1]};
+  return adaptive(r, gaussLegendre(r, f), f, 0);
+}
+
+std::string LobeGrid::describe(int cell) const {
+  const int np = int(phiEdges_.size()) - 1;
+  const int i = cell / np, j = cell % np;
+  std::ostringstream s;
+  s << "θ ∈ [" << thetaEdges_[i] << ", " << thetaEdges_[i + 1] << "], φ−φc ∈ [" << phiEdges_[j] << ", "
+    << phiEdges_[j + 1] << "]";
+  return s.str();
+}
+
+Chi2Result chi2Test(const DirectionSampler& sampler, const DirectionPdf& pdf, const LobeGrid& grid, long samples,
+                    unsigned seed, double alpha) {
+  Chi2Result result;
+  const int cells = grid.cellCount();
+  const int invalidCell = cells;
+  std::vector<double> observed(cells + 1, 0.0), expected(cells + 1, 0.0);
+
+  std::mt19937_64 rng(seed);
+  long belowHorizon = 0, nonFinite = 0;
+  for (long k = 0; k < samples; ++k) {
+    const std::optional<Vec3> L = sampler(rng);
+    if (!L) {
+      observed[invalidCell] += 1;
+      continue;
+    }
+    if (!std::isfinite(L->x) || !std::isfinite(L->y) || !std::isfinite(L->z)) {
+      ++nonFinite;
+      continue;
+    }
+    const int c = grid.cellOf(*L);
+    if (c < 0) {
+      ++belowHorizon;
+      continue;
+    }
+    observed[c] += 1;
+  }
+  result.acceptance = 1.0 - observed[invalidCell] / double(samples);
+
+  double integral = 0.0;
+  for (int c = 0; c < cells; ++c) {
+    const double p = grid.integrate(c, pdf);
+    integral += p;
+    expected[c] = p * double(samples);
+  }
+  result.pdfIntegral = integral;
+  expected[invalidCell] = std::max(0.0, 1.0 - integral) * double(samples);
+
+  std::ostringstream summary;
+  summary << "∫pdf = " << integral << ", acceptance = " << result.acceptance << " (" << samples << " samples)";
+  if (nonFinite > 0 || belowHorizon > 0) {
+    result.message = summary.str() + "; " + std::to_string(nonFinite) + " non-finite and " +
+                     std::to_string(belowHorizon) + " below-horizon directions marked valid";
+    return result;
+  }
+  // ∫pdf > 1 beyond quadrature error: the pdf cannot be any sampler's density.
+  if (integral > 1.0 + 1e-7) {
+    result.message = summary.str() + "; the pdf integrates to more than 1";
+    return result;
+  }
+  for (int c = 0; c < cells; ++c)
+    if (expected[c] == 0.0 && observed[c] > 0.0) {
+      result.message = summary.str() + "; " + std::to_string(long(observed[c])) +
+                       " samples where the pdf is 0: " + grid.describe(c);
+      return result;
+    }
+
+  // Pool the cells expected to hold fewer than 5 samples (the χ² approximation needs ≥ 5 per cell).
+  std::vector<int> order(cells + 1);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return expected[a] < expected[b]; });
+  double poolE = 0.0, poolO = 0.0;
+  std::vector<int> kept;
+  for (int c : order) {
+    if (expected[c] < 5.0) {
+      poolE += expected[c];
+      poolO += observed[c];
+      ++result.pooledCells;
+    } else {
+      kept.push_back(c);
+    }
+  }
+  struct Term {
+    double o, e;
+    int cell;  // −1: the pool
+  };
+  std::vector<Term> terms;
+  for (int c : kept) terms.push_back({observed[c], expected[c], c});
+  if (poolE >= 5.0 || terms.empty()) {
+    terms.push_back({poolO, poolE, -1});
+  } else if (poolE > 0.0 || poolO > 0.0) {
+    terms.front().o += poolO;  // the smallest kept cell absorbs a pool too small to stand alone
+    terms.front().e += poolE;
+  }
+  double chi2 = 0.0;
+  for (const Term& t : terms)
+    if (t.e > 0.0) chi2 += (t.o - t.e) * (t.o - t.e) / t.e;
+  result.cells = int(terms.size());
+  result.degreesOfFreedom = std::max(1, result.cells - 1);
+  result.statistic = chi2;
+  result.pValue = chi2Survival(chi2, result.degreesOfFreedom);
+  result.passed = result.pValue >= alpha;
+
+  summary << "; χ² = " << chi2 << " with " << result.degreesOfFreedom << " dof (" << result.pooledCells
+          << " cells pooled), p = " << result.pValue << " vs α = " << alpha;
+  if (!result.passed) {
+    std::sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) {
+      return (a.o - a.e) * (a.o - a.e) / a.e > (b.o - b.e) * (b.o - b.e) / b.e;
+    });
+    summary << "; worst cells:";
+    for (size_t k = 0; k < std::min<size_t>(4, terms.size()); ++k) {
+      const Term& t = terms[k];
+      summary << "\n  observed " << t.o << ", expected " << t.e << " in "
+              << (t.cell < 0 ? std::string("the pooled cells")
+                  : t.cell == invalidCell ? std::string("the rejected samples")
+                                          : grid.describe(t.cell));
+    }
+  }
+  result.message = summary.str();
+  return result;
+}
+
+double sidakAlpha(double familyAlpha, int tests) { return -std::expm1(std::log1p(-familyAlpha) / tests); }
+
+double chi2Survival(double x, int dof) { return gammaQ(0.5 * dof, 0.5 * x); }
+
+}  // namespace glossy::test

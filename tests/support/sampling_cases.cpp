@@ -1,0 +1,174 @@
+#include "tests/support/sampling_cases.h"
+
+#include "tests/support/test_support.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <set>
+
+namespace glossy::test {
+
+namespace {
+
+struct FitRecord {
+  std::string material;
+  Fit fit;
+};
+
+std::vector<FitRecord> libraryRecords() {
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(materialsDir()))
+    if (e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::vector<FitRecord> all;
+  for (const auto& path : files) {
+    const MaterialFile m = loadMaterialFile(path);
+    for (const Fit& f : m.fits) all.push_back({m.name, f});
+  }
+  return all;
+}
+
+LibraryFit toLibraryFit(const FitRecord& r) { return {r.material + " " + r.fit.id.str(), makeBrdf(r.fit)}; }
+
+const std::set<std::string> kSupplementMaterials = {"alum-bronze", "blue-acrylic", "blue-rubber",
+                                                    "chrome", "gold-metallic-paint2", "gold-paint"};
+
+// x in [0, xMax] below which a fraction q of the profile (1 + B x)^(−C) lies (closed form of its integral).
+double abcQuantile(double b, double c, double xMax, double q) {
+  if (b * xMax < 1e-9) return q * xMax;
+  if (std::abs(1.0 - c) < 1e-9) return std::expm1(q * std::log1p(b * xMax)) / b;
+  const double k = 1.0 - c;
+  return std::expm1(std::log1p(q * std::expm1(k * std::log1p(b * xMax))) / k) / b;
+}
+
+}  // namespace
+
+std::vector<LibraryFit> libraryFits() {
+  std::vector<LibraryFit> all;
+  for (const FitRecord& r : libraryRecords()) all.push_back(toLibraryFit(r));
+  return all;
+}
+
+std::vector<LibraryFit> supplementFits() {
+  std::vector<LibraryFit> out;
+  for (const FitRecord& r : libraryRecords())
+    if (kSupplementMaterials.count(r.material)) out.push_back(toLibraryFit(r));
+  return out;
+}
+
+std::vector<LibraryFit> extremeFits() {
+  std::vector<FitRecord> candidates;
+  for (FitRecord& r : libraryRecords())
+    if (!kSupplementMaterials.count(r.material)) candidates.push_back(std::move(r));
+
+  std::vector<FitRecord> chosen;
+  std::set<std::string> seen;
+  const auto take = [&](const std::string& model, const char* key, bool largest, size_t count) {
+    std::vector<const FitRecord*> ofModel;
+    for (const FitRecord& r : candidates)
+      if (r.fit.id.model == model) ofModel.push_back(&r);
+    std::sort(ofModel.begin(), ofModel.end(), [&](const FitRecord* a, const FitRecord* b) {
+      const double x = a->fit.params.scalar(key), y = b->fit.params.scalar(key);
+      return largest ? x > y : x < y;
+    });
+    size_t taken = 0;
+    for (size_t k = 0; k < ofModel.size() && taken < count; ++k)
+      if (seen.insert(ofModel[k]->material + ofModel[k]->fit.id.str()).second) {
+        chosen.push_back(*ofModel[k]);
+        ++taken;
+      }
+  };
+  take("ashikhmin-shirley", "n", true, 5);
+  take("cook-torrance", "m", false, 3);
+  take("cook-torrance", "m", true, 3);
+  take("microfacet", "b", true, 3);
+  take("microfacet", "c", false, 2);
+  take("smooth", "b", true, 3);
+  take("smooth", "c", false, 2);
+  for (const FitRecord& r : candidates)
+    if (r.fit.params.has("eta") && r.fit.params.scalar("eta") >= 99.99 && seen.insert(r.material + r.fit.id.str()).second)
+      chosen.push_back(r);
+
+  std::vector<LibraryFit> out;
+  for (const FitRecord& r : chosen) out.push_back(toLibraryFit(r));
+  return out;
+}
+
+Vec3 viewDirection(double theta) {
+  const double phi = 0.6;
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+std::string SamplingCase::label() const {
+  return fit.name + " at θv = " + std::to_string(int(std::lround(thetaV * 180.0 / kPi))) + "°";
+}
+
+std::string SamplingCase::testName() const {
+  std::string s = fit.name + "_view" + std::to_string(int(std::lround(thetaV * 180.0 / kPi)));
+  for (char& ch : s)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return s;
+}
+
+unsigned SamplingCase::seed() const {
+  uint32_t h = 2166136261u;
+  for (unsigned char ch : testName()) h = (h ^ ch) * 16777619u;
+  return h;
+}
+
+std::vector<SamplingCase> atViewAngles(const LibraryFit& fit) {
+  std::vector<SamplingCase> out;
+  for (double theta : kViewAngles) out.push_back({fit, theta});
+  return out;
+}
+
+void PrintTo(const SamplingCase& c, std::ostream* os) { *os << c.label(); }
+
+double lobeWidth(const Brdf& brdf) {
+  constexpr double q = 0.25;
+  struct Width {
+    // Half-vector lobes: the angle of L from the mirror direction is about twice θ_h.
+    double operator()(const AshikhminShirley& m) const {
+      return 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m.n + 1.0)));  // cos θ_h = ξ^(1/(n+1))
+    }
+    double operator()(const CookTorrance& m) const {
+      return 2.0 * std::atan(m.m * std::sqrt(-std::log(1.0 - q)));  // tan² θ_h = −m² ln(1 − ξ)
+    }
+    double operator()(const Microfacet& m) const {
+      const double x = abcQuantile(m.b, m.c, 1.0, q);  // x = 1 − cos θ_h
+      return 2.0 * std::sqrt(x * (2.0 - x));
+    }
+    double operator()(const Smooth& m) const { return std::sqrt(abcQuantile(m.b, m.c, 4.0, q)); }  // d = |D_P|
+    double operator()(const Lambertian&) const { return 0.5; }
+    double operator()(const Measured&) const { return 0.5; }
+  };
+  return std::clamp(std::visit(Width{}, brdf), 1e-5, 0.5);
+}
+
+LobeGrid gridFor(const Brdf& brdf, const Vec3& V) {
+  return LobeGrid(Vec3(-V.x, -V.y, V.z), lobeWidth(brdf), 32, 32);
+}
+
+SamplingCheck checkSampler(const SamplingCase& c, long samples, unsigned seed, double alpha) {
+  SamplingCheck check;
+  const Brdf& brdf = c.fit.brdf;
+  const Vec3 V = viewDirection(c.thetaV);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const DirectionSampler draw = [&](std::mt19937_64& rng) -> std::optional<Vec3> {
+    const double lobe = u(rng), u1 = u(rng), u2 = u(rng);
+    const BrdfSample s = sample(brdf, V, lobe, Vec2(u1, u2));
+    if (!s.valid()) return std::nullopt;
+    const double p = pdf(brdf, s.L, V);
+    const Rgb expected = eval(brdf, s.L, V) * (s.L.z / s.pdf);
+    bool ok = std::abs(p - s.pdf) <= 1e-12 * s.pdf;
+    for (int k = 0; k < 3; ++k) ok = ok && std::abs(s.weight[k] - expected[k]) <= 1e-9 * std::max(1.0, expected[k]);
+    check.weightMismatches += !ok;
+    return s.L;
+  };
+  const DirectionPdf density = [&](const Vec3& L) { return pdf(brdf, L, V); };
+  check.chi2 = chi2Test(draw, density, gridFor(brdf, V), samples, seed, alpha);
+  return check;
+}
+
+}  // namespace glossy::test
