@@ -75,4 +75,38 @@ TEST(CliRender, OrthographicCameraAndConstantEnvironmentByName) {
   EXPECT_EQ(readImageAttribute(tmp / "o.exr", "glossy:env"), "constant 1,1,1");
 }
 
+TEST(CliRender, MetadataNamesTheSceneBoundFitAndSeedsBeyondInt) {
+  TempDir tmp;
+  // The preview scene binds one fit (extras.glossy): glossy:fit names it, not just "per scene binding".
+  const RunResult r = runGlossy({"render", "--width", "16", "--height", "16", "--spp", "1", "--seed", "4294967295",
+                                 "-o", (tmp / "p.exr").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readImageAttribute(tmp / "p.exr", "glossy:fit"), "microfacet:E2");
+  EXPECT_EQ(readImageAttribute(tmp / "p.exr", "glossy:seed"), "4294967295");
+}
+
+TEST(CliRender, MeasuredTablesReportTheirUnmeasuredBins) {
+  TempDir tmp;
+  // A table whose first θ_h row is unmeasured: 90 × 180 = 16200 bins.
+  writeText(tmp / "holes.binary", syntheticMerlBytes([](int h, int, int) { return h == 0 ? Rgb(-1.0) : Rgb(300.0); }));
+  const RunResult r = runGlossy(small(tmp, "m.exr", {"--measured", (tmp / "holes.binary").string()}));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readImageAttribute(tmp / "m.exr", "glossy:measuredInvalidBins"), "16200");
+  EXPECT_NE(r.err.find("16200 of 1458000 bins unmeasured"), std::string::npos) << r.err;
+  const RunResult e = runGlossy({"eval", "--measured", (tmp / "holes.binary").string()}, "0.3,0,0.954,-0.3,0,0.954\n");
+  ASSERT_EQ(e.status, 0) << e.err;
+  EXPECT_NE(e.err.find("holes.binary: 16200 of 1458000 bins unmeasured"), std::string::npos) << e.err;
+}
+
+TEST(CliRender, AnEmissionThatOverflowsIsBadInput) {
+  TempDir tmp;
+  writeText(tmp / "hot.gltf", R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_materials_emissive_strength"],
+    "materials": [{"name": "hot", "emissiveFactor": [1e300, 1, 1],
+                   "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 1e300}}}],
+    "meshes": [], "nodes": [], "scenes": [{"nodes": []}], "scene": 0})");
+  expectOneLineError(runGlossy({"render", "--scene", (tmp / "hot.gltf").string(), "-o", (tmp / "x.exr").string()}),
+                     "overflows");
+  EXPECT_FALSE(std::filesystem::exists(tmp / "x.exr"));
+}
+
 }  // namespace glossy::test

@@ -3,6 +3,7 @@
 #include "materials/core/input_error.h"
 #include "materials/params/material_file.h"
 
+#include <cstdio>
 #include <memory>
 
 namespace glossy::cli {
@@ -23,7 +24,11 @@ void BrdfOptions::addTo(CLI::App* app) {
 }
 
 Brdf BrdfOptions::load() const {
-  if (!measured.empty()) return Measured{std::make_shared<const MerlTable>(MerlTable::load(measured))};
+  if (!measured.empty()) {
+    auto table = std::make_shared<const MerlTable>(MerlTable::load(measured));
+    reportInvalidBins(*table);
+    return Measured{std::move(table)};
+  }
   const MaterialFile file = loadMaterialFile(material);
   const FitId id = FitId::parse(fit, "--fit");
   const Fit* found = file.find(id);
@@ -34,6 +39,12 @@ Brdf BrdfOptions::load() const {
     chosen.params.set("fresnel", smoothFresnel);
   }
   return makeBrdf(chosen);
+}
+
+void reportInvalidBins(const MerlTable& table) {
+  if (table.invalidBins() == 0) return;
+  std::fprintf(stderr, "glossy: %s: %zu of %zu bins unmeasured (they evaluate to 0)\n", table.source().c_str(),
+               table.invalidBins(), MerlTable::kBins);
 }
 
 }  // namespace glossy::cli

@@ -17,4 +17,8 @@ struct BrdfOptions {
   Brdf load() const;  // InputError naming the file for anything missing or malformed
 };
 
+// One line on stderr when a measured table has unmeasured bins (they evaluate to 0): merl.md asks for
+// the count to be reported wherever the data is used.
+void reportInvalidBins(const MerlTable& table);
+
 }  // namespace glossy::cli

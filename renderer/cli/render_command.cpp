@@ -1,6 +1,7 @@
 // glossy render: one image of a glTF scene under an environment, as shared/spec/interfaces.md states.
 #include "materials/core/input_error.h"
 #include "materials/params/material_file.h"
+#include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/scene/material_binding.h"
@@ -52,12 +53,16 @@ int runRender(RenderOptions o) {
   const SceneDescription description = loadGltf(scenePath);
 
   std::optional<BrdfChoice> override;
+  int measuredInvalidBins = -1;
   if (!o.measured.empty()) {
     MaterialFile named;
     named.measured = o.measured;
     const auto path = resolveMeasured(named, o.merlDir);
     if (!path) throw InputError(o.measured + ": measured table not found (looked in --merl-dir, $GLOSSY_MERL_DIR, the working folder)");
-    override = BrdfChoice{Measured{std::make_shared<const MerlTable>(MerlTable::load(*path))}, path->string(), "measured"};
+    auto table = std::make_shared<const MerlTable>(MerlTable::load(*path));
+    measuredInvalidBins = int(table->invalidBins());
+    reportInvalidBins(*table);
+    override = BrdfChoice{Measured{std::move(table)}, path->string(), "measured"};
   } else if (!o.material.empty()) {
     override = brdfFromMaterialFile(o.material, o.fit);
   }
@@ -91,11 +96,13 @@ int runRender(RenderOptions o) {
   std::string materialText = override ? override->material : "";
   if (!override)
     for (const auto& b : binding.bindings) materialText += (materialText.empty() ? "" : "; ") + b;
-  const std::vector<ImageAttribute> metadata = {
+  std::vector<ImageAttribute> metadata = {
       {"glossy:material", materialText.empty() ? std::string("scene base colours") : materialText},
-      {"glossy:fit", override ? override->fit : std::string("per scene binding")},
+      {"glossy:fit", override ? override->fit : binding.commonFit.empty() ? std::string("per scene binding") : binding.commonFit},
       {"glossy:spp", o.settings.spp},
-      {"glossy:seed", int(o.settings.seed)},
+      // EXR has no unsigned attribute: seeds beyond int's range are written as their decimal text.
+      o.settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(o.settings.seed)}
+                                             : ImageAttribute{"glossy:seed", std::to_string(o.settings.seed)},
       {"glossy:maxDepth", o.settings.maxDepth},
       {"glossy:brdfSampling", o.brdfSampling},
       {"glossy:scene", scenePath},
@@ -107,6 +114,7 @@ int runRender(RenderOptions o) {
       {"glossy:renderSeconds", float(stats.seconds)},
       {"glossy:version", std::string(GLOSSY_VERSION)},
   };
+  if (measuredInvalidBins >= 0) metadata.push_back({"glossy:measuredInvalidBins", measuredInvalidBins});
   const std::filesystem::path out = o.output;
   if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
   writeExr(out, image, metadata, o.half ? PixelType::Half : PixelType::Float);
@@ -132,7 +140,7 @@ Command addRenderCommand(CLI::App& parent) {
   auto* env = app->add_option("--env", o->env, "Lat-long environment map (.exr, .hdr); default: the built-in sky");
   auto* constant = app->add_option("--env-constant", o->envConstant, "Constant environment radiance: V or R,G,B");
   app->add_option("--env-rotate", o->envRotate, "Rotate the environment about +Y, degrees");
-  app->add_option("--spp", o->settings.spp, "Samples per pixel")->check(CLI::PositiveNumber)->capture_default_str();
+  app->add_option("--spp", o->settings.spp, "Samples per pixel")->check(CLI::Range(1, INT32_MAX))->capture_default_str();
   app->add_option("--seed", o->settings.seed, "Random seed")->capture_default_str();
   app->add_option("--threads", o->settings.threads, "Threads (0 = all cores)")->check(CLI::NonNegativeNumber);
   app->add_option("--width", o->settings.width, "Image width")->check(CLI::Range(1, 1 << 15))->capture_default_str();

@@ -168,6 +168,8 @@ class GltfReader {
           strength = s.GetNumberAsDouble();
         }
         out.emission = Rgb(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]) * strength;
+        if (!allFinite(std::vector<double>{out.emission.r, out.emission.g, out.emission.b}))
+          fail(where + ": emissiveFactor × emissiveStrength overflows");
       }
       if (m.extras.Has("glossy")) {
         const tinygltf::Value& glossy = m.extras.Get("glossy");

@@ -36,9 +36,16 @@ MaterialBinding bindMaterials(const SceneDescription& scene, const std::optional
     } else if (override) {
       b.brdfs.push_back(override->brdf);
     } else if (!m.glossyMaterial.empty()) {
-      const BrdfChoice c = brdfFromMaterialFile(findMaterialFile(m.glossyMaterial, scene.source.parent_path()), m.glossyFit);
+      BrdfChoice c;
+      try {
+        c = brdfFromMaterialFile(findMaterialFile(m.glossyMaterial, scene.source.parent_path()), m.glossyFit);
+      } catch (const InputError& e) {
+        // Name the scene and its material too: the parameter file alone does not say who asked for it.
+        throw InputError(scene.source.string() + ": material '" + m.name + "' (extras.glossy): " + e.what());
+      }
       b.brdfs.push_back(c.brdf);
       b.bindings.push_back(c.material + " " + c.fit);
+      b.commonFit = b.bindings.size() == 1 || b.commonFit == c.fit ? c.fit : "";
       if (c.fit.rfind("smooth:", 0) == 0) b.smoothFresnel = c.smoothFresnel;
     } else {
       b.brdfs.push_back(Lambertian{m.baseColor});

@@ -24,6 +24,7 @@ BrdfChoice brdfFromMaterialFile(const std::filesystem::path& file, const std::st
 struct MaterialBinding {
   std::vector<Brdf> brdfs;            // per SceneDescription::materials entry
   std::vector<std::string> bindings;  // "file fit" of each extras.glossy binding used
+  std::string commonFit;              // the fit every extras.glossy binding names, if they agree; else ""
   std::string smoothFresnel = "projected";
 };
 
