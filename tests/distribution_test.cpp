@@ -1,6 +1,6 @@
 // Piecewise-constant 1D and 2D distributions: CDF inversion checked against the CDF written out here,
 // densities that integrate to 1, zero-weight bins and rows, all-zero tables and the ends of [0,1).
-#include "renderer/sampling/distribution.h"
+#include "materials/sampling/distribution.h"
 
 #include <gtest/gtest.h>
 

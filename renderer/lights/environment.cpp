@@ -5,7 +5,7 @@
 #include "materials/core/input_error.h"
 #include "renderer/lights/default_sky.h"
 #include "renderer/lights/latlong.h"
-#include "renderer/sampling/distribution.h"
+#include "materials/sampling/distribution.h"
 
 #include <OpenImageIO/imageio.h>
 

@@ -21,35 +21,39 @@ constexpr double kWeights[7] = {0.1294849661688697, 0.2797053914892766, 0.381830
                                 0.3818300505051189, 0.2797053914892766, 0.1294849661688697};
 
 struct Rect {
-  double t0, t1, p0, p1;  // θ and absolute φ bounds
+  double a0, a1, b0, b1;
 };
 
-double gaussLegendre(const Rect& r, const std::function<double(const Vec3&)>& f) {
-  const double ht = 0.5 * (r.t1 - r.t0), hp = 0.5 * (r.p1 - r.p0);
-  const double ct = 0.5 * (r.t1 + r.t0), cp = 0.5 * (r.p1 + r.p0);
+// ∫∫ g(a, b) da db over the rectangle.
+using Integrand = std::function<double(double, double)>;
+
+double gaussLegendre(const Rect& r, const Integrand& g) {
+  const double ha = 0.5 * (r.a1 - r.a0), hb = 0.5 * (r.b1 - r.b0);
+  const double ca = 0.5 * (r.a1 + r.a0), cb = 0.5 * (r.b1 + r.b0);
   double sum = 0.0;
   for (int i = 0; i < 7; ++i) {
-    const double theta = ct + ht * kNodes[i];
-    const double sinTheta = std::sin(theta);
+    const double a = ca + ha * kNodes[i];
     double row = 0.0;
-    for (int j = 0; j < 7; ++j) row += kWeights[j] * f(direction(theta, cp + hp * kNodes[j]));
-    sum += kWeights[i] * sinTheta * row;
+    for (int j = 0; j < 7; ++j) row += kWeights[j] * g(a, cb + hb * kNodes[j]);
+    sum += kWeights[i] * row;
   }
-  return sum * ht * hp;
+  return sum * ha * hb;
 }
 
-// Splits into four until the four halves agree with the whole; the tolerance is far below the Poisson noise
-// of any cell (1e6 samples: a relative 1e-3 on the fullest cell).
-double adaptive(const Rect& r, double whole, const std::function<double(const Vec3&)>& f, int depth) {
-  const double tm = 0.5 * (r.t0 + r.t1), pm = 0.5 * (r.p0 + r.p1);
-  const Rect q[4] = {{r.t0, tm, r.p0, pm}, {tm, r.t1, r.p0, pm}, {r.t0, tm, pm, r.p1}, {tm, r.t1, pm, r.p1}};
+// Splits into four until the four quarters agree with the whole; the tolerance is far below the Poisson
+// noise of any cell (10⁶ samples: a relative 1e-3 on the fullest cell).
+double adaptive(const Rect& r, double whole, const Integrand& g, int depth) {
+  const double am = 0.5 * (r.a0 + r.a1), bm = 0.5 * (r.b0 + r.b1);
+  const Rect q[4] = {{r.a0, am, r.b0, bm}, {am, r.a1, r.b0, bm}, {r.a0, am, bm, r.b1}, {am, r.a1, bm, r.b1}};
   double parts[4], sum = 0.0;
-  for (int k = 0; k < 4; ++k) sum += parts[k] = gaussLegendre(q[k], f);
+  for (int k = 0; k < 4; ++k) sum += parts[k] = gaussLegendre(q[k], g);
   if (depth >= 10 || std::abs(sum - whole) <= 1e-9 * std::abs(sum) + 1e-14) return sum;
   sum = 0.0;
-  for (int k = 0; k < 4; ++k) sum += adaptive(q[k], parts[k], f, depth + 1);
+  for (int k = 0; k < 4; ++k) sum += adaptive(q[k], parts[k], g, depth + 1);
   return sum;
 }
+
+double integrateRect(const Rect& r, const Integrand& g) { return adaptive(r, gaussLegendre(r, g), g, 0); }
 
 // Regularised upper incomplete gamma Q(a, x): series for P below x = a + 1, Lentz's continued fraction above.
 double gammaQ(double a, double x) {
@@ -126,7 +130,7 @@ double LobeGrid::integrate(int cell, const std::function<double(const Vec3&)>& f
   const int np = int(phiEdges_.size()) - 1;
   const int i = cell / np, j = cell % np;
   const Rect r{thetaEdges_[i], thetaEdges_[i + 1], phiC_ + phiEdges_[j], phiC_ + phiEdges_[j + 1]};
-  return adaptive(r, gaussLegendre(r, f), f, 0);
+  return integrateRect(r, [&](double theta, double phi) { return f(direction(theta, phi)) * std::sin(theta); });
 }
 
 std::string LobeGrid::describe(int cell) const {
@@ -138,7 +142,43 @@ std::string LobeGrid::describe(int cell) const {
   return s.str();
 }
 
-Chi2Result chi2Test(const DirectionSampler& sampler, const DirectionPdf& pdf, const LobeGrid& grid, long samples,
+HalfVectorGrid::HalfVectorGrid(const Vec3& V, std::vector<double> xEdges, int phiCells)
+    : V_(V), phiV_(std::atan2(V.y, V.x)), xEdges_(std::move(xEdges)), phiCells_(phiCells) {}
+
+int HalfVectorGrid::cellOf(const Vec3& L) const {
+  if (!(L.z > 0.0)) return -1;
+  const Vec3 h = L + V_;
+  const double p2 = h.x * h.x + h.y * h.y, len = std::sqrt(p2 + h.z * h.z);
+  const double x = p2 / (len * (len + h.z));  // 1 − cos θ_h without cancellation
+  const int nx = int(xEdges_.size()) - 1;
+  const int i = std::clamp(int(std::upper_bound(xEdges_.begin(), xEdges_.end(), x) - xEdges_.begin()) - 1, 0, nx - 1);
+  const double rel = std::remainder(std::atan2(h.y, h.x) - phiV_, 2.0 * kPi);
+  const int j = std::clamp(int(std::floor((rel + kPi) / (2.0 * kPi) * phiCells_)), 0, phiCells_ - 1);
+  return i * phiCells_ + j;
+}
+
+double HalfVectorGrid::integrate(int cell, const std::function<double(const Vec3&)>& f) const {
+  const int i = cell / phiCells_, j = cell % phiCells_;
+  const double dphi = 2.0 * kPi / phiCells_;
+  const Rect r{xEdges_[i], xEdges_[i + 1], phiV_ - kPi + j * dphi, phiV_ - kPi + (j + 1) * dphi};
+  return integrateRect(r, [&](double x, double phi) {
+    const double s = std::sqrt(std::max(0.0, x * (2.0 - x)));
+    const Vec3 H(s * std::cos(phi), s * std::sin(phi), 1.0 - x);
+    const double vh = V_.x * H.x + V_.y * H.y + V_.z * H.z;
+    if (vh <= 0.0) return 0.0;
+    const Vec3 L = 2.0 * vh * H - V_;
+    return L.z > 0.0 ? f(L) * 4.0 * vh : 0.0;
+  });
+}
+
+std::string HalfVectorGrid::describe(int cell) const {
+  const int i = cell / phiCells_, j = cell % phiCells_;
+  std::ostringstream s;
+  s << "1 − cos θ_h ∈ [" << xEdges_[i] << ", " << xEdges_[i + 1] << "], φ_h − φ_v cell " << j << " of " << phiCells_;
+  return s.str();
+}
+
+Chi2Result chi2Test(const DirectionSampler& sampler, const DirectionPdf& pdf, const Chi2Grid& grid, long samples,
                     unsigned seed, double alpha) {
   Chi2Result result;
   const int cells = grid.cellCount();

@@ -21,23 +21,53 @@
 
 namespace glossy::test {
 
-class LobeGrid {
+// A partition of the upper hemisphere of L into cells, with the integral of a density over each cell.
+class Chi2Grid {
+ public:
+  virtual ~Chi2Grid() = default;
+  virtual int cellCount() const = 0;
+  // The cell holding L (unit, L.z > 0); −1 below the horizon.
+  virtual int cellOf(const Vec3& L) const = 0;
+  // ∫ f(L) dω_L over the cell; f must be 0 below the horizon.
+  virtual double integrate(int cell, const std::function<double(const Vec3&)>& f) const = 0;
+  virtual std::string describe(int cell) const = 0;  // for messages
+};
+
+// Cells in (θ, φ) of L packed around a centre direction (see above).
+class LobeGrid : public Chi2Grid {
  public:
   // centre: unit vector with centre.z ≥ 0; sigma: the lobe's angular width (radians).
   LobeGrid(const Vec3& centre, double sigma, int thetaCells, int phiCells);
 
-  int cellCount() const { return int(thetaEdges_.size() - 1) * int(phiEdges_.size() - 1); }
-  // The cell holding L (unit, L.z > 0); −1 below the horizon.
-  int cellOf(const Vec3& L) const;
-  // ∫ f(L) dω over the cell; f must vanish nowhere it should not be integrated (below the horizon).
-  double integrate(int cell, const std::function<double(const Vec3&)>& f) const;
-  // The cell's centre direction and its (θ, φ) bounds, for messages.
-  std::string describe(int cell) const;
+  int cellCount() const override { return int(thetaEdges_.size() - 1) * int(phiEdges_.size() - 1); }
+  int cellOf(const Vec3& L) const override;
+  double integrate(int cell, const std::function<double(const Vec3&)>& f) const override;
+  std::string describe(int cell) const override;
 
  private:
   double thetaC_, phiC_;
   std::vector<double> thetaEdges_, phiEdges_;  // φ edges relative to φc, spanning [−π, π]
   double thetaSigma_, phiSigma_, tTheta0_, dtTheta_, tPhi0_, dtPhi_;
+};
+
+// Cells in half-vector space for a fixed V: x = 1 − cos θ_h between the given edges × φ_h − φ_v in equal
+// steps over [−π, π); L = reflect(V, H), dω_L = 4⟨V,H⟩ dω_H, dω_H = dx dφ. For tabulated samplers whose
+// density is constant on half-vector cells: with the grid's edges on (or subdividing) the sampler's, each
+// cell's integral is exact wherever its reflection stays above the horizon.
+class HalfVectorGrid : public Chi2Grid {
+ public:
+  HalfVectorGrid(const Vec3& V, std::vector<double> xEdges, int phiCells);
+
+  int cellCount() const override { return int(xEdges_.size() - 1) * phiCells_; }
+  int cellOf(const Vec3& L) const override;
+  double integrate(int cell, const std::function<double(const Vec3&)>& f) const override;
+  std::string describe(int cell) const override;
+
+ private:
+  Vec3 V_;
+  double phiV_;
+  std::vector<double> xEdges_;
+  int phiCells_;
 };
 
 // Draws one direction toward the light (std::nullopt for a rejected/invalid sample) from the rng.
@@ -57,7 +87,7 @@ struct Chi2Result {
 // Draws `samples` directions with a std::mt19937_64 seeded with `seed`, bins them on `grid` and compares
 // with the counts `pdf` predicts. Fails when the p-value is below `alpha`, when a sample lands where the
 // pdf integrates to zero, or when ∫pdf exceeds 1.
-Chi2Result chi2Test(const DirectionSampler& sampler, const DirectionPdf& pdf, const LobeGrid& grid,
+Chi2Result chi2Test(const DirectionSampler& sampler, const DirectionPdf& pdf, const Chi2Grid& grid,
                     long samples, unsigned seed, double alpha);
 
 // The per-test significance that keeps the family-wise error rate at familyAlpha over `tests` independent

@@ -1,5 +1,5 @@
 // Piecewise-constant 1D and 2D distributions: CDF construction and inversion.
-#include "renderer/sampling/distribution.h"
+#include "materials/sampling/distribution.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Piecewise-constant probability densities on [0,1) and [0,1)², sampled by exact inversion of their CDFs
-// (after pbrt's Distribution1D/2D). Shared by the environment light and, later, the measured-BRDF sampler.
+// (after pbrt's Distribution1D/2D). Shared by the environment light and the measured-BRDF sampler.
 //
 // A tabulated function f of n non-negative bins defines the density p(x) = f(⌊x·n⌋) / ∫f on [0,1).
 // Degenerate tables never produce NaN: when every value is zero the density is uniform (p ≡ 1), so the
