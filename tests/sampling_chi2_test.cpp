@@ -3,7 +3,8 @@
 // The family: all 36 fits of the six supplement materials and the most extreme published fits of the
 // library (largest n, largest B, smallest C, smallest and largest m, η = 99.999), each at four view angles
 // up to 82°, plus Lambertian. 10⁶ samples per test on a grid of cells that follows the lobe
-// (tests/support/chi2.h); family-wise significance 0.01 with Šidák's correction. Negative controls show the
+// (tests/support/chi2.h); family-wise significance 0.01 with Šidák's correction, over these and the
+// measured sampler's tests (tests/measured_sampling_test.cpp). Negative controls show the
 // test has the power to reject samplers that are 1–3 % off. The same test over every fit of the library
 // runs as the `sweep` label (tests/sweep/).
 #include "tests/support/chi2.h"
@@ -17,22 +18,10 @@ namespace glossy::test {
 
 namespace {
 
-constexpr double kFamilyAlpha = 0.01;
 constexpr long kSamples = 1000000;
 
-const std::vector<SamplingCase>& family() {
-  static const std::vector<SamplingCase> cases = [] {
-    std::vector<SamplingCase> all;
-    for (const auto& fits : {supplementFits(), extremeFits()})
-      for (const LibraryFit& f : fits)
-        for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
-    for (const SamplingCase& c : atViewAngles({"lambertian", Lambertian{Rgb(0.5)}})) all.push_back(c);
-    return all;
-  }();
-  return cases;
-}
-
-double familyAlpha() { return sidakAlpha(kFamilyAlpha, int(family().size())); }
+const std::vector<SamplingCase>& family() { return analyticChi2Family(); }
+double familyAlpha() { return chi2TestAlpha(); }
 
 class Chi2 : public ::testing::TestWithParam<SamplingCase> {};
 
@@ -45,6 +34,8 @@ TEST(Chi2Family, CoversTheSupplementAndAtLeastTwentyExtremeFitsAtFourViewAngles)
   for (const LibraryFit& f : extremeFits()) names += (names.empty() ? "" : ", ") + f.name;
   RecordProperty("extremeFits", names);
   EXPECT_EQ(family().size(), (supplementFits().size() + extremeFits().size() + 1) * kViewAngles.size());
+  RecordProperty("familySize", int(family().size()) + kMeasuredChi2Tests);
+  RecordProperty("perTestAlpha", std::to_string(familyAlpha()));
 }
 
 TEST(Chi2Statistics, SurvivalFunctionMatchesTabulatedQuantiles) {

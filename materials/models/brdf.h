@@ -14,6 +14,7 @@
 #include "materials/models/microfacet.h"
 #include "materials/models/smooth.h"
 
+#include <memory>
 #include <variant>
 
 namespace glossy {
@@ -28,6 +29,16 @@ inline BrdfSample sample(const Brdf& brdf, const Vec3& V, double uLobe, Vec2 u) 
 }
 inline double pdf(const Brdf& brdf, const Vec3& L, const Vec3& V) {
   return std::visit([&](const auto& m) { return m.pdf(L, V); }, brdf);
+}
+
+// A measured BRDF that also proposes directions from an analytic lobe (its fit), with mixture weight q.
+inline Measured withProposal(Measured m, Brdf lobe, double q) {
+  auto shared = std::make_shared<const Brdf>(std::move(lobe));
+  m.proposal = std::make_shared<const MeasuredProposal>(MeasuredProposal{
+      [shared](const Vec3& V, double uLobe, Vec2 u) { return sample(*shared, V, uLobe, u); },
+      [shared](const Vec3& L, const Vec3& V) { return pdf(*shared, L, V); }});
+  m.proposalWeight = q;
+  return m;
 }
 
 }  // namespace glossy

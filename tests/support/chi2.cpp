@@ -157,17 +157,68 @@ int HalfVectorGrid::cellOf(const Vec3& L) const {
   return i * phiCells_ + j;
 }
 
+namespace {
+
+double gaussLegendre1D(double a, double b, const std::function<double(double)>& g) {
+  const double h = 0.5 * (b - a), c = 0.5 * (a + b);
+  double sum = 0.0;
+  for (int i = 0; i < 7; ++i) sum += kWeights[i] * g(c + h * kNodes[i]);
+  return sum * h;
+}
+
+double adaptive1D(double a, double b, double whole, const std::function<double(double)>& g, int depth) {
+  const double m = 0.5 * (a + b);
+  const double left = gaussLegendre1D(a, m, g), right = gaussLegendre1D(m, b, g);
+  if (depth >= 30 || std::abs(left + right - whole) <= 1e-10 * std::abs(left + right) + 1e-16) return left + right;
+  return adaptive1D(a, m, left, g, depth + 1) + adaptive1D(m, b, right, g, depth + 1);
+}
+
+double integrate1D(double a, double b, const std::function<double(double)>& g) {
+  return adaptive1D(a, b, gaussLegendre1D(a, b, g), g, 0);
+}
+
+}  // namespace
+
 double HalfVectorGrid::integrate(int cell, const std::function<double(const Vec3&)>& f) const {
   const int i = cell / phiCells_, j = cell % phiCells_;
   const double dphi = 2.0 * kPi / phiCells_;
   const Rect r{xEdges_[i], xEdges_[i + 1], phiV_ - kPi + j * dphi, phiV_ - kPi + (j + 1) * dphi};
-  return integrateRect(r, [&](double x, double phi) {
+  const auto halfVector = [](double x, double phi) {
     const double s = std::sqrt(std::max(0.0, x * (2.0 - x)));
-    const Vec3 H(s * std::cos(phi), s * std::sin(phi), 1.0 - x);
+    return Vec3(s * std::cos(phi), s * std::sin(phi), 1.0 - x);
+  };
+  // L_z of the reflection (−1 where ⟨V,H⟩ ≤ 0): the horizon is where it changes sign.
+  const auto reflectedZ = [&](double x, double phi) {
+    const Vec3 H = halfVector(x, phi);
+    const double vh = V_.x * H.x + V_.y * H.y + V_.z * H.z;
+    return vh <= 0.0 ? -1.0 : 2.0 * vh * H.z - V_.z;
+  };
+  const auto g = [&](double x, double phi) {
+    const Vec3 H = halfVector(x, phi);
     const double vh = V_.x * H.x + V_.y * H.y + V_.z * H.z;
     if (vh <= 0.0) return 0.0;
     const Vec3 L = 2.0 * vh * H - V_;
     return L.z > 0.0 ? f(L) * 4.0 * vh : 0.0;
+  };
+  int above = 0, probes = 0;
+  for (int a = 0; a <= 4; ++a)
+    for (int b = 0; b <= 4; ++b, ++probes)
+      above += reflectedZ(r.a0 + (r.a1 - r.a0) * a / 4, r.b0 + (r.b1 - r.b0) * b / 4) > 0.0;
+  if (above == 0) return 0.0;
+  if (above == probes) return integrateRect(r, g);
+  // The cell straddles the horizon, where a tabulated density jumps to 0: integrate along x only up to
+  // the crossing (found by bisection for each φ), so that each inner integral is smooth.
+  return integrate1D(r.b0, r.b1, [&](double phi) {
+    const double za = reflectedZ(r.a0, phi), zb = reflectedZ(r.a1, phi);
+    if (za <= 0.0 && zb <= 0.0) return 0.0;
+    const auto inner = [&](double lo, double hi) { return integrate1D(lo, hi, [&](double x) { return g(x, phi); }); };
+    if (za > 0.0 && zb > 0.0) return inner(r.a0, r.a1);
+    double inside = za > 0.0 ? r.a0 : r.a1, outside = za > 0.0 ? r.a1 : r.a0;
+    for (int k = 0; k < 60; ++k) {
+      const double m = 0.5 * (inside + outside);
+      (reflectedZ(m, phi) > 0.0 ? inside : outside) = m;
+    }
+    return za > 0.0 ? inner(r.a0, inside) : inner(inside, r.a1);
   });
 }
 

@@ -150,10 +150,9 @@ LobeGrid gridFor(const Brdf& brdf, const Vec3& V) {
   return LobeGrid(Vec3(-V.x, -V.y, V.z), lobeWidth(brdf), 32, 32);
 }
 
-SamplingCheck checkSampler(const SamplingCase& c, long samples, unsigned seed, double alpha) {
+SamplingCheck checkSampler(const Brdf& brdf, const Vec3& V, const Chi2Grid& grid, long samples, unsigned seed,
+                           double alpha) {
   SamplingCheck check;
-  const Brdf& brdf = c.fit.brdf;
-  const Vec3 V = viewDirection(c.thetaV);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const DirectionSampler draw = [&](std::mt19937_64& rng) -> std::optional<Vec3> {
     const double lobe = u(rng), u1 = u(rng), u2 = u(rng);
@@ -167,8 +166,27 @@ SamplingCheck checkSampler(const SamplingCase& c, long samples, unsigned seed, d
     return s.L;
   };
   const DirectionPdf density = [&](const Vec3& L) { return pdf(brdf, L, V); };
-  check.chi2 = chi2Test(draw, density, gridFor(brdf, V), samples, seed, alpha);
+  check.chi2 = chi2Test(draw, density, grid, samples, seed, alpha);
   return check;
 }
+
+SamplingCheck checkSampler(const SamplingCase& c, long samples, unsigned seed, double alpha) {
+  const Vec3 V = viewDirection(c.thetaV);
+  return checkSampler(c.fit.brdf, V, gridFor(c.fit.brdf, V), samples, seed, alpha);
+}
+
+const std::vector<SamplingCase>& analyticChi2Family() {
+  static const std::vector<SamplingCase> cases = [] {
+    std::vector<SamplingCase> all;
+    for (const auto& fits : {supplementFits(), extremeFits()})
+      for (const LibraryFit& f : fits)
+        for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
+    for (const SamplingCase& c : atViewAngles({"lambertian", Lambertian{Rgb(0.5)}})) all.push_back(c);
+    return all;
+  }();
+  return cases;
+}
+
+double chi2TestAlpha() { return sidakAlpha(kChi2FamilyAlpha, int(analyticChi2Family().size()) + kMeasuredChi2Tests); }
 
 }  // namespace glossy::test

@@ -53,6 +53,19 @@ struct SamplingCheck {
   Chi2Result chi2;
   long weightMismatches = 0;  // samples whose weight or pdf disagree with eval()/pdf()
 };
+// χ² of brdf's sampler seen from V on `grid`, checking weight = ρ cos θ_L / pdf and pdf(L) = sample.pdf
+// for every sample on the way.
+SamplingCheck checkSampler(const Brdf& brdf, const Vec3& V, const Chi2Grid& grid, long samples, unsigned seed,
+                           double alpha);
+// The same on gridFor(c.fit.brdf, V).
 SamplingCheck checkSampler(const SamplingCase& c, long samples, unsigned seed, double alpha);
+
+// The χ² family of the default suite: analytic samplers (the supplement's and the extreme fits, and
+// Lambertian, at the four view angles) and measured ones (kMeasuredChi2Tests); one family-wise
+// significance of 0.01 over all of them.
+const std::vector<SamplingCase>& analyticChi2Family();
+inline constexpr int kMeasuredChi2Tests = (3 + 6) * 4;  // 3 synthetic tables + shared/merl's 6, 4 views
+inline constexpr double kChi2FamilyAlpha = 0.01;
+double chi2TestAlpha();  // Šidák: per-test α for the whole family
 
 }  // namespace glossy::test
