@@ -4,6 +4,7 @@
 // the constant environment, degenerate inputs, and load errors.
 #include "materials/core/input_error.h"
 #include "renderer/lights/environment.h"
+#include "tests/support/chi2.h"
 #include "tests/support/test_support.h"
 
 #include <OpenImageIO/imageio.h>
@@ -87,31 +88,6 @@ void forEachDirection(int nu, int nv, F f) {
       f(specDirection(u, v), u, v, dOmega);
     }
   }
-}
-
-// Regularised upper incomplete gamma Q(a, x) (Numerical Recipes §6.2), for χ² p-values.
-double gammaQ(double a, double x) {
-  if (x <= 0.0) return 1.0;
-  const double logPrefix = -x + a * std::log(x) - std::lgamma(a);
-  if (x < a + 1.0) {
-    double term = 1.0 / a, sum = term;
-    for (int n = 1; n < 100000 && std::abs(term) > std::abs(sum) * 1e-16; ++n) sum += term *= x / (a + n);
-    return 1.0 - sum * std::exp(logPrefix);
-  }
-  const double tiny = 1e-300;
-  double b = x + 1.0 - a, c = 1.0 / tiny, d = 1.0 / b, h = d;
-  for (int i = 1; i < 100000; ++i) {
-    const double an = -i * (i - a);
-    b += 2.0;
-    d = an * d + b;
-    if (std::abs(d) < tiny) d = tiny;
-    c = b + an / c;
-    if (std::abs(c) < tiny) c = tiny;
-    d = 1.0 / d;
-    h *= d * c;
-    if (std::abs(d * c - 1.0) < 1e-16) break;
-  }
-  return std::exp(logPrefix) * h;
 }
 
 // ---------------------------------------------------------------------------------------------------
@@ -387,7 +363,7 @@ TEST_P(EnvironmentSampling, PdfIsNormalisedAndSamplesFollowIt) {
     ++bins;
   }
   const int dof = bins - 1;
-  const double p = gammaQ(0.5 * dof, 0.5 * chi2);
+  const double p = chi2Survival(chi2, dof);
   std::cout << "χ² test on " << GetParam() << ": χ² = " << chi2 << ", dof = " << dof << ", p = " << p << "\n";
   RecordProperty("chi2_p_value", std::to_string(p));
   EXPECT_GT(p, 0.01) << "χ² = " << chi2 << " with " << dof << " degrees of freedom";

@@ -3,6 +3,7 @@
 // the environment's orientation as a camera sees it, determinism, and no NaN/Inf for the supplement fits.
 #include "materials/params/material_file.h"
 #include "renderer/integrator/path_tracer.h"
+#include "tests/support/render_fixtures.h"
 #include "tests/support/test_support.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -21,25 +22,6 @@ SceneMaterial material(const char* name, Rgb baseColor = Rgb(0.8), Rgb emission 
   return m;
 }
 
-Mesh uvSphere(double radius, int segments, int rings, int material) {
-  Mesh m;
-  m.name = "test sphere";
-  m.material = material;
-  for (int r = 0; r <= rings; ++r)
-    for (int s = 0; s <= segments; ++s) {
-      const double theta = kPi * r / rings, phi = 2 * kPi * s / segments;
-      const glm::vec3 n(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(std::sin(theta) * std::sin(phi)));
-      m.positions.push_back(n * float(radius));
-      m.normals.push_back(n);
-    }
-  for (int r = 0; r < rings; ++r)
-    for (int s = 0; s < segments; ++s) {
-      const uint32_t a = uint32_t(r * (segments + 1) + s), b = a + uint32_t(segments + 1);
-      // Counter-clockwise seen from outside.
-      m.indices.insert(m.indices.end(), {a, a + 1, b, a + 1, b + 1, b});
-    }
-  return m;
-}
 
 Mesh quad(glm::vec3 corner, glm::vec3 edgeU, glm::vec3 edgeV, int material) {
   Mesh m;
@@ -50,13 +32,6 @@ Mesh quad(glm::vec3 corner, glm::vec3 edgeU, glm::vec3 edgeV, int material) {
   return m;
 }
 
-Camera orthographicDown(double halfExtent, glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up) {
-  Camera c;
-  c.type = Camera::Type::Orthographic;
-  c.cameraToWorld = glm::inverse(glm::lookAt(eye, target, up));
-  c.xmag = c.ymag = halfExtent;
-  return c;
-}
 
 struct Fixture {
   SceneDescription description;
@@ -82,20 +57,6 @@ RenderSettings quiet(int size, int spp) {
   return s;
 }
 
-// ∫ρ(L,V) cos θ_L dω_L by a midpoint rule in (cos θ_L, φ_L): independent of the renderer and of
-// albedo.cpp, and accurate for the broad lobes this test renders.
-Rgb directionalAlbedo(const Brdf& brdf, const Vec3& V) {
-  const int nMu = 400, nPhi = 800;
-  Rgb sum(0.0);
-  for (int i = 0; i < nMu; ++i) {
-    const double mu = (i + 0.5) / nMu, st = std::sqrt(1 - mu * mu);
-    for (int j = 0; j < nPhi; ++j) {
-      const double phi = 2 * kPi * (j + 0.5) / nPhi;
-      sum += eval(brdf, Vec3(st * std::cos(phi), st * std::sin(phi), mu), V) * mu;
-    }
-  }
-  return sum * (2 * kPi / (double(nMu) * nPhi));
-}
 
 }  // namespace
 

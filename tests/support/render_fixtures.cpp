@@ -1,0 +1,49 @@
+#include "tests/support/render_fixtures.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <cmath>
+
+namespace glossy::test {
+
+Mesh uvSphere(double radius, int segments, int rings, int material) {
+  Mesh m;
+  m.name = "test sphere";
+  m.material = material;
+  for (int r = 0; r <= rings; ++r)
+    for (int s = 0; s <= segments; ++s) {
+      const double theta = kPi * r / rings, phi = 2 * kPi * s / segments;
+      const glm::vec3 n(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)), float(std::sin(theta) * std::sin(phi)));
+      m.positions.push_back(n * float(radius));
+      m.normals.push_back(n);
+    }
+  for (int r = 0; r < rings; ++r)
+    for (int s = 0; s < segments; ++s) {
+      const uint32_t a = uint32_t(r * (segments + 1) + s), b = a + uint32_t(segments + 1);
+      // Counter-clockwise seen from outside.
+      m.indices.insert(m.indices.end(), {a, a + 1, b, a + 1, b + 1, b});
+    }
+  return m;
+}
+
+Camera orthographicDown(double halfExtent, glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up) {
+  Camera c;
+  c.type = Camera::Type::Orthographic;
+  c.cameraToWorld = glm::inverse(glm::lookAt(eye, target, up));
+  c.xmag = c.ymag = halfExtent;
+  return c;
+}
+
+Rgb directionalAlbedo(const Brdf& brdf, const Vec3& V, int nMu, int nPhi) {
+  Rgb sum(0.0);
+  for (int i = 0; i < nMu; ++i) {
+    const double mu = (i + 0.5) / nMu, st = std::sqrt(1 - mu * mu);
+    for (int j = 0; j < nPhi; ++j) {
+      const double phi = 2 * kPi * (j + 0.5) / nPhi;
+      sum += eval(brdf, Vec3(st * std::cos(phi), st * std::sin(phi), mu), V) * mu;
+    }
+  }
+  return sum * (2 * kPi / (double(nMu) * nPhi));
+}
+
+}  // namespace glossy::test

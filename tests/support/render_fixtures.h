@@ -1,0 +1,20 @@
+// Scene pieces the renderer tests build in memory (a UV sphere, an orthographic camera looking down an
+// axis) and an independent reference for what a convex object under radiance 1 shows: the directional albedo.
+#pragma once
+
+#include "materials/models/brdf.h"
+#include "renderer/scene/scene.h"
+
+#include <glm/vec3.hpp>
+
+namespace glossy::test {
+
+// Unit-normal UV sphere of the given radius about the origin, counter-clockwise seen from outside.
+Mesh uvSphere(double radius, int segments, int rings, int material);
+// An orthographic camera at eye looking at target, half-extent halfExtent in both axes.
+Camera orthographicDown(double halfExtent, glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up);
+// ∫ρ(L,V) cos θ_L dω_L by a midpoint rule in (cos θ_L, φ_L) with nMu × nPhi points: independent of the
+// renderer and of albedo.cpp, accurate for broad lobes and for tabulated (piecewise-constant) data.
+Rgb directionalAlbedo(const Brdf& brdf, const Vec3& V, int nMu = 400, int nPhi = 800);
+
+}  // namespace glossy::test
