@@ -44,7 +44,6 @@ class MerlSampling {
     double t;  // weight of k1
   };
   static ViewPosition viewPosition(const Vec3& V);
-  double densityH(int k, double u, double v, int thetaBin) const;
 
   std::array<double, kThetaBins + 1> xEdges_;  // 1 − cos θ_h at the θ_h bin edges
   std::vector<Distribution2D> views_;           // kViewBins densities over (φ, θ_h) ∈ [0,1)²
