@@ -18,6 +18,8 @@ Command addImportCommand(CLI::App& parent);
 Command addListCommand(CLI::App& parent);
 Command addRenderCommand(CLI::App& parent);
 Command addSampleCommand(CLI::App& parent);
+Command addSheetCommand(CLI::App& parent);
+Command addSheetsCommand(CLI::App& parent);
 
 // The committed material library: ./materials when run from a checkout, else the source tree's.
 std::filesystem::path defaultMaterialsDir();

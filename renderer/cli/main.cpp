@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string(GLOSSY_VERSION));
   app.require_subcommand(1);
   std::vector<cli::Command> commands = {cli::addEvalCommand(app), cli::addImportCommand(app), cli::addListCommand(app), cli::addRenderCommand(app),
-                                           cli::addSampleCommand(app)};
+                                           cli::addSampleCommand(app), cli::addSheetCommand(app), cli::addSheetsCommand(app)};
 
   try {
     app.parse(argc, argv);

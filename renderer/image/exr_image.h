@@ -30,9 +30,23 @@ enum class PixelType { Half, Float };
 void writeExr(const std::filesystem::path& path, const RgbImage& image, const std::vector<ImageAttribute>& attributes,
               PixelType type = PixelType::Float);
 
+// An EXR with named layers: `layers` are RGB images of one size, written as channels PREFIX.R/G/B (an
+// empty prefix gives the default R, G, B layer). Atomic like writeExr.
+struct ExrLayer {
+  std::string prefix;
+  const RgbImage* image;
+};
+void writeLayeredExr(const std::filesystem::path& path, const std::vector<ExrLayer>& layers,
+                     const std::vector<ImageAttribute>& attributes, PixelType type = PixelType::Float);
+
+// An 8-bit image (PNG by the extension) from interleaved RGB bytes, written atomically.
+void writeRgb8(const std::filesystem::path& path, int width, int height, const std::vector<unsigned char>& rgb);
+
 // Reads the first three channels of any image OpenImageIO reads; throws InputError naming the file.
 RgbImage readRgbImage(const std::filesystem::path& path);
 // The string value of a metadata attribute of an image file ("" if absent).
 std::string readImageAttribute(const std::filesystem::path& path, const std::string& name);
+// One named layer (channels PREFIX.R/G/B) of an image file; throws InputError naming the file and layer.
+RgbImage readImageLayer(const std::filesystem::path& path, const std::string& prefix);
 
 }  // namespace glossy

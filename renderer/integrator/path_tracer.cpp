@@ -198,7 +198,7 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
           for (int x = tx * kTile; x < std::min(settings.width, (tx + 1) * kTile); ++x) {
             Rgb sum(0.0);
             for (int i = 0; i < settings.spp; ++i) {
-              sampler.startPixelSample(uint32_t(x), uint32_t(y), uint32_t(i));
+              sampler.startPixelSample(uint32_t(x), uint32_t(y), uint32_t(settings.firstSample + i));
               const Vec2 jitter = sampler.get2D();
               const Rgb l = tracer.trace(cameraRay(camera, settings.width, settings.height, Vec2(x, y) + jitter), sampler);
               if (isFinite(l))

@@ -19,6 +19,7 @@ namespace glossy {
 struct RenderSettings {
   int width = 512, height = 512;
   int spp = 64;
+  int firstSample = 0;    // index of the first sample of each pixel: progressive passes continue the sequence
   int maxDepth = 8;
   int rouletteDepth = 4;  // Russian roulette from this depth on
   uint32_t seed = 0;

@@ -1,0 +1,263 @@
+// glossy sheet / glossy sheets: the supplement's comparison grid for one material, or for many
+// (shared/spec/interfaces.md; renderer/sheet/sheet.h has the layout and the error figures).
+#include "materials/core/input_error.h"
+#include "materials/params/material_file.h"
+#include "renderer/cli/brdf_options.h"
+#include "renderer/cli/command.h"
+#include "renderer/sheet/sheet.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <unistd.h>
+
+namespace glossy::cli {
+
+namespace {
+
+constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+struct SheetOptions {
+  std::string material, measured, merlDir, scene, env, envConstant, camera, output = "out/sheet.exr";
+  double envRotate = 0.0, exposure = 0.0;
+  bool half = false;
+  SheetSettings settings;
+  // glossy sheets
+  std::vector<std::string> inputs;
+  std::string outDir = "out/sheets", shard;
+};
+
+// What every sheet of one run shares: the scene, its BVH and lights, the environment, the camera.
+struct Stage {
+  SceneDescription description;
+  std::unique_ptr<EmbreeScene> bvh;
+  std::unique_ptr<AreaLights> lights;
+  std::unique_ptr<Environment> environment;
+  const Camera* camera = nullptr;
+  std::string scenePath;
+
+  explicit Stage(const SheetOptions& o) {
+    scenePath = o.scene;
+    if (scenePath.empty()) scenePath = (std::filesystem::path(GLOSSY_SOURCE_DIR) / "scenes/preview.gltf").string();
+    description = loadGltf(scenePath);
+    if (description.cameras.empty()) throw InputError(scenePath + ": the scene has no camera");
+    camera = &description.cameras.front();
+    if (!o.camera.empty()) {
+      camera = nullptr;
+      for (const Camera& c : description.cameras)
+        if (c.name == o.camera) camera = &c;
+      if (!camera) throw InputError(scenePath + ": no camera named '" + o.camera + "'");
+    }
+    bvh = std::make_unique<EmbreeScene>(description);
+    lights = std::make_unique<AreaLights>(description);
+    if (!o.envConstant.empty()) {
+      size_t used = 0;
+      double v = -1.0;
+      try {
+        v = std::stod(o.envConstant, &used);
+      } catch (const std::exception&) {
+      }
+      if (used != o.envConstant.size() || !std::isfinite(v) || v < 0.0)
+        throw InputError("--env-constant: '" + o.envConstant + "' is not a radiance >= 0");
+      environment = std::make_unique<Environment>(Environment::constant(Rgb(v)));
+    } else {
+      environment = std::make_unique<Environment>(o.env.empty() ? Environment::makeDefault(o.envRotate)
+                                                                : Environment::load(o.env, o.envRotate));
+    }
+  }
+};
+
+// The measured table of a material: --measured, else the file's `measured` under --merl-dir or
+// $GLOSSY_MERL_DIR. Returns null with a note saying where to get the data when there is none.
+std::shared_ptr<const MerlTable> findMeasured(const MaterialFile& m, const SheetOptions& o, const std::string& explicitPath,
+                                              std::string& note) {
+  std::optional<std::filesystem::path> path;
+  if (!explicitPath.empty()) {
+    MaterialFile named;
+    named.measured = explicitPath;
+    path = resolveMeasured(named, o.merlDir);
+    if (!path) throw InputError(explicitPath + ": measured table not found (looked in --merl-dir, $GLOSSY_MERL_DIR, the working folder)");
+  } else if (!m.measured.empty()) {
+    path = resolveMeasured(m, o.merlDir);
+  }
+  if (!path) {
+    note = m.measured.empty() ? "the material names no measured table"
+                              : "no " + m.measured + " in --merl-dir or $GLOSSY_MERL_DIR: get the MERL BRDF database "
+                                "(Matusik et al. 2003) and point --merl-dir at it";
+    return nullptr;
+  }
+  auto table = std::make_shared<const MerlTable>(MerlTable::load(*path));
+  reportInvalidBins(*table);
+  // shared/merl's tables are neural reconstructions; that folder says so beside them.
+  std::error_code ec;
+  const bool reconstruction = std::filesystem::exists(path->parent_path() / "nbrdf_weights", ec);
+  note = std::string(reconstruction ? "MERL (NBRDF reconstruction) " : "MERL ") + path->filename().string();
+  return table;
+}
+
+std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& stage, const SheetOptions& o, const Sheet& sheet,
+                                          double seconds) {
+  uint64_t dropped = 0;
+  for (const PanelRender& p : sheet.panels) dropped += p.droppedSamples;
+  return {
+      {"glossy:material", m.path.string()},
+      {"glossy:fit", std::string("sheet")},
+      {"glossy:measured", sheet.panels.front().note},
+      {"glossy:spp", o.settings.secondsPerPanel > 0.0 ? std::string("progressive") : std::to_string(o.settings.spp)},
+      {"glossy:secondsPerPanel", float(o.settings.secondsPerPanel)},
+      o.settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(o.settings.seed)}
+                                             : ImageAttribute{"glossy:seed", std::to_string(o.settings.seed)},
+      {"glossy:maxDepth", o.settings.maxDepth},
+      {"glossy:scene", stage.scenePath},
+      {"glossy:env", stage.environment->description()},
+      {"glossy:smoothFresnel", std::string("projected")},
+      {"glossy:conventions", std::string("microfacet, cook-torrance: 1/pi in the specular denominator; Fresnel at <V,H>; "
+                                         "smooth: Fresnel at the projected cos theta_d unless smoothFresnel = vh")},
+      {"glossy:pngExposure", float(o.exposure)},
+      {"glossy:droppedSamples", int(std::min<uint64_t>(dropped, INT32_MAX))},
+      {"glossy:renderSeconds", float(seconds)},
+      {"glossy:version", std::string(GLOSSY_VERSION)},
+  };
+}
+
+// Renders and writes one sheet (EXR, then PNG beside it); prints its error table.
+void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, const SheetOptions& o,
+               const std::filesystem::path& exr, const std::string& explicitMeasured) {
+  const MaterialFile m = loadMaterialFile(materialPath);
+  std::string note;
+  const auto measured = findMeasured(m, o, explicitMeasured, note);
+  const auto start = std::chrono::steady_clock::now();
+  const SheetScene scene = makeSheetScene(stage.description, *stage.bvh, *stage.lights, *stage.environment, *stage.camera);
+  const Sheet sheet = renderSheet(scene, m, measured, note, o.settings);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (exr.has_parent_path()) std::filesystem::create_directories(exr.parent_path());
+  std::filesystem::path png = exr;
+  png.replace_extension(".png");
+  // The PNG first: a sheet counts as complete (for glossy sheets' resuming) once its EXR exists.
+  writeSheetPng(sheet, png, o.exposure, std::filesystem::exists(kFont) ? kFont : "");
+  writeSheetExr(sheet, exr, sheetMetadata(m, stage, o, sheet, seconds), o.half ? PixelType::Half : PixelType::Float);
+  std::cout << errorTable(sheet) << std::flush;
+  std::cerr << "glossy: wrote " << exr.string() << " and " << png.string() << " (" << seconds << " s)\n";
+}
+
+void addRenderOptions(CLI::App* app, SheetOptions& o) {
+  app->add_option("--merl-dir", o.merlDir, "Folder with MERL tables (else $GLOSSY_MERL_DIR)");
+  app->add_option("--scene", o.scene, "glTF scene; default: scenes/preview.gltf");
+  app->add_option("--camera", o.camera, "Camera by name (default: the scene's first)");
+  auto* env = app->add_option("--env", o.env, "Lat-long environment map (.exr, .hdr); default: the built-in sky");
+  auto* constant = app->add_option("--env-constant", o.envConstant, "Constant environment radiance");
+  env->excludes(constant);
+  app->add_option("--env-rotate", o.envRotate, "Rotate the environment about +Y, degrees");
+  app->add_option("--spp", o.settings.spp, "Samples per pixel of every panel")->check(CLI::Range(1, INT32_MAX))->capture_default_str();
+  app->add_option("--time", o.settings.secondsPerPanel,
+                  "Wall-clock seconds per panel instead of --spp: each panel renders progressively until its budget is spent")
+      ->check(CLI::PositiveNumber);
+  app->add_option("--width", o.settings.width, "Panel width")->check(CLI::Range(8, 1 << 14))->capture_default_str();
+  app->add_option("--height", o.settings.height, "Panel height")->check(CLI::Range(8, 1 << 14))->capture_default_str();
+  app->add_option("--seed", o.settings.seed, "Random seed (the same for every panel)")->capture_default_str();
+  app->add_option("--threads", o.settings.threads, "Threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  app->add_option("--max-depth", o.settings.maxDepth, "Path segments at most")->check(CLI::Range(1, 1000))->capture_default_str();
+  app->add_option("--exposure", o.exposure, "Exposure of the PNG preview in stops (the EXR stays linear)")->capture_default_str();
+  app->add_flag("--half", o.half, "Write half-float EXR (default: float)");
+}
+
+int runSheet(const SheetOptions& o) {
+  const Stage stage(o);
+  SheetOptions single = o;
+  single.settings.progress = isatty(STDERR_FILENO);
+  makeSheet(stage, o.material, single, o.output, o.measured);
+  return 0;
+}
+
+std::pair<int, int> parseShard(const std::string& text) {
+  int i = -1, n = 0;
+  char slash = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d", &i, &slash, &n) != 3 || slash != '/' || n < 1 || i < 0 || i >= n)
+    throw InputError("--shard: '" + text + "' is not i/N with 0 <= i < N");
+  return {i, n};
+}
+
+int runSheets(const SheetOptions& o) {
+  std::vector<std::filesystem::path> files;
+  const std::vector<std::string> inputs = o.inputs.empty() ? std::vector<std::string>{defaultMaterialsDir().string()} : o.inputs;
+  for (const std::string& in : inputs) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(in, ec)) {
+      for (const auto& e : std::filesystem::directory_iterator(in))
+        if (e.path().extension() == ".toml") files.push_back(e.path());
+    } else if (std::filesystem::is_regular_file(in, ec)) {
+      files.push_back(in);
+    } else {
+      throw InputError(in + ": no such material file or folder");
+    }
+  }
+  std::sort(files.begin(), files.end());
+  files.erase(std::unique(files.begin(), files.end()), files.end());
+  if (!o.shard.empty()) {
+    const auto [index, count] = parseShard(o.shard);
+    std::vector<std::filesystem::path> mine;
+    for (size_t k = 0; k < files.size(); ++k)
+      if (int(k % size_t(count)) == index) mine.push_back(files[k]);
+    files = std::move(mine);
+  }
+  // Validate every file before rendering any, so a typo fails in a second, not after an hour.
+  for (const auto& f : files) loadMaterialFile(f);
+
+  const Stage stage(o);
+  SheetOptions batch = o;
+  batch.settings.progress = false;
+  const auto start = std::chrono::steady_clock::now();
+  size_t done = 0, skipped = 0;
+  for (size_t k = 0; k < files.size(); ++k) {
+    const std::string name = loadMaterialFile(files[k]).name;
+    const std::filesystem::path exr = std::filesystem::path(o.outDir) / (name + ".exr");
+    std::filesystem::path png = exr;
+    png.replace_extension(".png");
+    if (std::filesystem::exists(exr) && std::filesystem::exists(png)) {
+      ++skipped;
+      std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": complete, skipped\n";
+      continue;
+    }
+    makeSheet(stage, files[k], batch, exr, "");
+    ++done;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double eta = elapsed / double(done) * double(files.size() - k - 1);
+    std::fprintf(stderr, "glossy: [%zu/%zu] %s done; %.0f s elapsed, about %.0f s to go\n", k + 1, files.size(), name.c_str(),
+                 elapsed, eta);
+  }
+  std::fprintf(stderr, "glossy: %zu sheets rendered, %zu already complete, in %s\n", done, skipped, o.outDir.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Command addSheetCommand(CLI::App& parent) {
+  auto o = std::make_shared<SheetOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "sheet",
+      "Render a material's comparison sheet: Measured | Microfacet E2 | Smooth E2 | AS E1 | AS E2 | CT E1 | CT E2, "
+      "into one layered EXR and a labelled PNG beside it, and print each model's error against the measured panel.");
+  app->add_option("--material", o->material, "Material parameter file (TOML)")->required();
+  app->add_option("--measured", o->measured, "MERL .binary (or .binary.xz) for the measured panel; default: the file's own, "
+                                             "looked up in --merl-dir or $GLOSSY_MERL_DIR");
+  addRenderOptions(app, *o);
+  app->add_option("-o,--output", o->output, "Output EXR (the PNG is written beside it)")->capture_default_str();
+  return {app, [o] { return runSheet(*o); }};
+}
+
+Command addSheetsCommand(CLI::App& parent) {
+  auto o = std::make_shared<SheetOptions>();
+  CLI::App* app = parent.add_subcommand(
+      "sheets",
+      "Render a sheet per material (default: every file of the material library) into OUTDIR/NAME.exr and .png; "
+      "sheets already complete are skipped, so an interrupted run resumes.");
+  app->add_option("inputs", o->inputs, "Material files or folders of them (default: the library)");
+  app->add_option("-o,--output", o->outDir, "Output folder")->capture_default_str();
+  app->add_option("--shard", o->shard, "i/N: only every N-th material, starting at the i-th (0-based), for job arrays");
+  addRenderOptions(app, *o);
+  return {app, [o] { return runSheets(*o); }};
+}
+
+}  // namespace glossy::cli
