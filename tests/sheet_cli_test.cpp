@@ -1,0 +1,153 @@
+// glossy sheet and glossy sheets through the command line: the layered EXR (grid + 7 panels) and the PNG,
+// the error table and metadata, labelled empty panels, --time, batch resuming and sharding, bad input.
+#include "renderer/image/exr_image.h"
+#include "tests/support/test_support.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+
+namespace glossy::test {
+
+namespace {
+
+const char* const kSupplement[] = {"alum-bronze", "blue-acrylic", "blue-rubber", "chrome", "gold-metallic-paint2", "gold-paint"};
+
+std::vector<std::string> tiny(std::vector<std::string> args) {
+  for (const char* a : {"--width", "16", "--height", "16", "--spp", "2"}) args.push_back(a);
+  return args;
+}
+
+std::vector<std::string> channelsOf(const std::filesystem::path& exr) {
+  auto in = OIIO::ImageInput::open(exr.string());
+  if (!in) return {};
+  return in->spec().channelnames;
+}
+
+}  // namespace
+
+TEST(CliSheet, EverySupplementMaterialGivesTheLayeredExrAndThePngWithNoNonFiniteValue) {
+  GLOSSY_REQUIRE_SHARED("merl");
+  TempDir tmp;
+  for (const char* name : kSupplement) {
+    const std::filesystem::path exr = tmp / (std::string(name) + ".exr");
+    const RunResult r = runGlossy(tiny({"sheet", "--material", (materialsDir() / (std::string(name) + ".toml")).string(),
+                                        "--measured", (sharedDir() / "merl" / (std::string(name) + ".binary")).string(), "-o",
+                                        exr.string()}));
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> channels = channelsOf(exr);
+    std::sort(channels.begin(), channels.end());
+    const std::vector<std::string> want = {
+        "B", "G", "R", "ashikhmin_shirley_E1.B", "ashikhmin_shirley_E1.G", "ashikhmin_shirley_E1.R", "ashikhmin_shirley_E2.B",
+        "ashikhmin_shirley_E2.G", "ashikhmin_shirley_E2.R", "cook_torrance_E1.B", "cook_torrance_E1.G", "cook_torrance_E1.R",
+        "cook_torrance_E2.B", "cook_torrance_E2.G", "cook_torrance_E2.R", "measured.B", "measured.G", "measured.R",
+        "microfacet_E2.B", "microfacet_E2.G", "microfacet_E2.R", "smooth_E2.B", "smooth_E2.G", "smooth_E2.R"};
+    EXPECT_EQ(channels, want) << name << ": the grid and the 7 panels";
+    const RgbImage grid = readRgbImage(exr);
+    EXPECT_EQ(grid.width, 7 * 16);
+    EXPECT_EQ(grid.height, 16);
+    for (float v : grid.pixels) ASSERT_TRUE(std::isfinite(v)) << name;
+    // The measured layer holds the measured panel at its place in the grid, and nothing else.
+    const RgbImage measured = readImageLayer(exr, "measured");
+    EXPECT_EQ(measured.at(5, 5)[1], grid.at(5, 5)[1]);
+    EXPECT_EQ(measured.at(16 + 5, 5)[1], 0.0f);
+    EXPECT_EQ(readImageAttribute(exr, "glossy:panel.smooth_E2.box"), "32 0 16 16");
+    EXPECT_FALSE(readImageAttribute(exr, "glossy:error.cook_torrance_E2.relativeRmse").empty()) << name;
+    EXPECT_NE(readImageAttribute(exr, "glossy:measured").find("NBRDF reconstruction"), std::string::npos);
+    const RgbImage png = readRgbImage(tmp / (std::string(name) + ".png"));
+    EXPECT_EQ(png.width, 7 * 16);
+    EXPECT_GT(png.height, 16) << "a label strip under the panels";
+    EXPECT_NE(r.out.find("closest:"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("CT E2"), std::string::npos) << r.out;
+  }
+}
+
+TEST(CliSheet, MissingMeasuredDataAndMissingFitsGiveLabelledEmptyPanels) {
+  TempDir tmp;
+  // Two fits only, and a measured table nobody has.
+  writeText(tmp / "two.toml", R"(name = "two"
+measured = "nowhere-to-be-found.binary"
+
+[[fit]]
+model = "cook-torrance"
+metric = "E2"
+kd = [0.1, 0.1, 0.1]
+ks = [0.2, 0.2, 0.2]
+m = 0.2
+eta = 1.5
+
+[[fit]]
+model = "smooth"
+metric = "E2"
+kd = [0.1, 0.1, 0.1]
+a = [2.0, 2.0, 2.0]
+b = 100.0
+c = 1.5
+eta = 1.5
+)");
+  const RunResult r = runGlossy(tiny({"sheet", "--material", (tmp / "two.toml").string(), "--merl-dir", tmp.path().string(), "-o",
+                                      (tmp / "two.exr").string()}));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto attr = [&](const std::string& key) { return readImageAttribute(tmp / "two.exr", key); };
+  EXPECT_EQ(attr("glossy:panel.measured.empty"), "1");
+  EXPECT_NE(attr("glossy:panel.measured.note").find("MERL"), std::string::npos) << "says where to get MERL data";
+  EXPECT_EQ(attr("glossy:panel.microfacet_E2.empty"), "1");
+  EXPECT_NE(attr("glossy:panel.microfacet_E2.note").find("no microfacet:E2 fit"), std::string::npos);
+  EXPECT_EQ(attr("glossy:panel.cook_torrance_E2.empty"), "0");
+  EXPECT_EQ(attr("glossy:errors"), "none: no measured panel");
+  EXPECT_TRUE(attr("glossy:error.cook_torrance_E2.relativeRmse").empty());
+  EXPECT_NE(r.out.find("no measured panel"), std::string::npos) << r.out;
+  EXPECT_EQ(readImageLayer(tmp / "two.exr", "microfacet_E2").at(16 + 3, 3)[0], 0.0f);
+  EXPECT_TRUE(std::filesystem::exists(tmp / "two.png"));
+}
+
+TEST(CliSheet, TimeBudgetRendersProgressively) {
+  TempDir tmp;
+  const RunResult r = runGlossy({"sheet", "--material", (materialsDir() / "gold-paint.toml").string(), "--merl-dir",
+                                 tmp.path().string(), "--width", "16", "--height", "16", "--time", "0.3", "-o",
+                                 (tmp / "t.exr").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readImageAttribute(tmp / "t.exr", "glossy:spp"), "progressive");
+  EXPECT_GE(std::stoi(readImageAttribute(tmp / "t.exr", "glossy:panel.smooth_E2.spp")), 16)
+      << "a 16² panel gets far more than a few samples in 0.3 s";
+}
+
+TEST(CliSheets, RendersEachMaterialOnceResumesAndShards) {
+  TempDir tmp;
+  std::filesystem::create_directories(tmp / "lib");
+  for (const char* name : {"gold-paint", "blue-rubber", "chrome"})
+    std::filesystem::copy_file(materialsDir() / (std::string(name) + ".toml"), tmp / "lib" / (std::string(name) + ".toml"));
+  const auto sheets = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = tiny({"sheets", (tmp / "lib").string(), "-o", (tmp / "out").string(), "--merl-dir",
+                                          tmp.path().string()});
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runGlossy(args);
+  };
+  // Shard 1 of 2 over the sorted files (blue-rubber, chrome, gold-paint): chrome only.
+  RunResult r = sheets({"--shard", "1/2"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(tmp / "out/chrome.exr"));
+  EXPECT_FALSE(std::filesystem::exists(tmp / "out/gold-paint.exr"));
+  const auto before = std::filesystem::last_write_time(tmp / "out/chrome.exr");
+  r = sheets({});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(tmp / "out/blue-rubber.exr"));
+  EXPECT_TRUE(std::filesystem::exists(tmp / "out/gold-paint.png"));
+  EXPECT_EQ(std::filesystem::last_write_time(tmp / "out/chrome.exr"), before) << "a complete sheet is not rendered again";
+  EXPECT_NE(r.err.find("chrome: complete, skipped"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[3/3]"), std::string::npos) << "overall progress";
+}
+
+TEST(CliSheet, BadInputExitsTwoWithOneLine) {
+  TempDir tmp;
+  expectOneLineError(runGlossy({"sheet", "--material", (tmp / "absent.toml").string(), "-o", (tmp / "x.exr").string()}),
+                     "absent.toml");
+  expectOneLineError(runGlossy({"sheet", "--material", (materialsDir() / "chrome.toml").string(), "--measured",
+                                (tmp / "absent.binary").string(), "-o", (tmp / "x.exr").string()}),
+                     "absent.binary");
+  expectOneLineError(runGlossy({"sheets", (tmp / "nothing").string(), "-o", (tmp / "out").string()}), "nothing");
+  expectOneLineError(runGlossy({"sheets", "--shard", "2/2", "-o", (tmp / "out").string()}), "--shard");
+  EXPECT_FALSE(std::filesystem::exists(tmp / "x.exr"));
+}
+
+}  // namespace glossy::test
