@@ -73,6 +73,7 @@ TEST_P(SheetRegression, AnalyticPanelsMatchTheReference) {
   for (size_t k = 1; k < sheetPanels().size(); ++k) {
     const ImageComparison c = comparePanel(a, b, name, k);
     RecordProperty(sheetPanels()[k].layer + "_bias", std::to_string(c.relativeBias));
+    RecordProperty(sheetPanels()[k].layer + "_p", std::to_string(std::min(c.meanP, c.blockP)));
     EXPECT_TRUE(c.passed) << name << " " << sheetPanels()[k].label << ": " << c.message;
   }
 }
@@ -86,6 +87,7 @@ TEST_P(SheetRegression, MeasuredPanelMatchesTheReference) {
   const Sheet a = renderHalf(m, table, 1), b = renderHalf(m, table, 2);
   const ImageComparison c = comparePanel(a, b, name, 0);
   RecordProperty("measured_bias", std::to_string(c.relativeBias));
+  RecordProperty("measured_p", std::to_string(std::min(c.meanP, c.blockP)));
   EXPECT_TRUE(c.passed) << name << " Measured: " << c.message;
 }
 

@@ -71,6 +71,18 @@ PanelRender renderPanel(const SheetScene& scene, const SheetPanel& panel, const 
   return out;
 }
 
+// The text shortened (from the end) until it fits `width` pixels at that size: labels never run into the
+// next panel.
+std::string fitted(std::string text, int width, int fontSize, const std::string& font) {
+  while (text.size() > 1) {
+    const OIIO::ROI r = OIIO::ImageBufAlgo::text_size(text, fontSize, font);
+    if (!r.defined() || r.width() <= width) break;
+    text.pop_back();
+    while (!text.empty() && (static_cast<unsigned char>(text.back()) & 0xC0) == 0x80) text.pop_back();  // whole UTF-8 characters
+  }
+  return text;
+}
+
 std::string formatted(const char* format, double value) {
   char buf[64];
   std::snprintf(buf, sizeof buf, format, value);
@@ -240,22 +252,26 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
   for (int k = 0; k < n; ++k) {
     const PanelRender& p = sheet.panels[size_t(k)];
     std::string second;
+    const int small = std::max(8, fontSize - 2);
     if (p.empty)
       second = p.panel.fit.empty() ? "no MERL data (--merl-dir)" : "no fit";
     else if (p.relativeRmse >= 0.0)
-      second = formatted("rRMSE %.3f", p.relativeRmse) + formatted("  lum x%.2f", p.luminanceRatio);
+      // Narrow panels get the figures without their names.
+      second = w >= 120 ? formatted("rRMSE %.3f", p.relativeRmse) + formatted("  lum x%.2f", p.luminanceRatio)
+                        : formatted("%.3f", p.relativeRmse) + formatted(" x%.2f", p.luminanceRatio);
     else if (k > 0)
       second = "no measured panel";
-    const OIIO::ROI clip(k * w, (k + 1) * w - 2, h, h + strip);
-    OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + fontSize + 2, p.panel.label, fontSize, fontPath, white,
-                                    OIIO::ImageBufAlgo::TextAlignX::Left, OIIO::ImageBufAlgo::TextAlignY::Baseline, 0, clip);
+    else
+      second = p.note.find("NBRDF") != std::string::npos ? "MERL (NBRDF reconstr.)" : "MERL";
+    OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + fontSize + 2, fitted(p.panel.label, w - 6, fontSize, fontPath), fontSize,
+                                    fontPath, white);
     if (!second.empty())
-      OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + 2 * fontSize + 5, second, std::max(8, fontSize - 2), fontPath, grey,
-                                      OIIO::ImageBufAlgo::TextAlignX::Left, OIIO::ImageBufAlgo::TextAlignY::Baseline, 0, clip);
+      OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + 2 * fontSize + 5, fitted(second, w - 6, small, fontPath), small,
+                                      fontPath, grey);
   }
   if (buf.has_error()) std::fprintf(stderr, "glossy: %s: labels not drawn: %s\n", path.string().c_str(), buf.geterror().c_str());
   std::vector<unsigned char> rgb(size_t(w * n) * size_t(h + strip) * 3);
-  buf.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, rgb.data());
+  if (!buf.get_pixels(buf.roi(), OIIO::TypeDesc::UINT8, rgb.data())) throw std::runtime_error(path.string() + ": " + buf.geterror());
   writeRgb8(path, w * n, h + strip, rgb);
 }
 

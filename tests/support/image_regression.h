@@ -5,7 +5,7 @@
 //
 // Statistics, over the masked pixels, on the sum of the three channels:
 //   - the mean difference, as z = Σ(t − r) / sqrt(Σ(var_t + var_r)): a uniform bias;
-//   - blocks of 8 × 8 pixels, χ² = Σ_b z_b²: a bias confined to part of the image.
+//   - blocks of 16 × 16 pixels, χ² = Σ_b z_b²: a bias confined to part of the image.
 // Each is judged at alpha / 2 (Bonferroni over the two).
 #pragma once
 
