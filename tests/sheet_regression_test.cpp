@@ -110,6 +110,7 @@ TEST(SheetRegressionPower, AModelTwoPercentBrighterFails) {
     const ImageComparison c = comparePanel(a, b, "alum-bronze", k);
     EXPECT_FALSE(c.passed) << sheetPanels()[k].label << " 2 % brighter passed: " << c.message;
     RecordProperty(sheetPanels()[k].layer + "_meanZ", std::to_string(c.meanZ));
+    RecordProperty(sheetPanels()[k].layer + "_perturbedBias", std::to_string(c.relativeBias));
   }
 }
 

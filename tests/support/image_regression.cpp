@@ -6,6 +6,7 @@
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <stdexcept>
 
@@ -53,8 +54,10 @@ ImageComparison compareWithReference(const RgbImage& halfA, const RgbImage& half
   const int w = reference.width, h = reference.height;
   // On the sum of the channels: their noise is correlated (one path serves all three), so the variance of
   // the sum is estimated directly rather than added up.
-  const OIIO::ImageBuf a = IBA::channel_sum(toBuf(halfA)), b = IBA::channel_sum(toBuf(halfB));
-  const OIIO::ImageBuf r = IBA::channel_sum(toBuf(reference));
+  // Weights given explicitly: this OIIO reads past the single default weight.
+  const float ones[3] = {1.0f, 1.0f, 1.0f};
+  const OIIO::ImageBuf a = IBA::channel_sum(toBuf(halfA), ones), b = IBA::channel_sum(toBuf(halfB), ones);
+  const OIIO::ImageBuf r = IBA::channel_sum(toBuf(reference), ones);
   const OIIO::ImageBuf m = maskBuf(mask, w, h);
   const OIIO::ImageBuf t = IBA::mul(IBA::add(a, b), 0.5f);
   const OIIO::ImageBuf halfDiff = IBA::mul(IBA::sub(a, b), 0.5f);
@@ -66,7 +69,7 @@ ImageComparison compareWithReference(const RgbImage& halfA, const RgbImage& half
   double sumD = 0.0, sumV = 0.0;
   for (int by = 0; by < h; by += kBlock)
     for (int bx = 0; bx < w; bx += kBlock) {
-      const OIIO::ROI roi(bx, std::min(w, bx + kBlock), by, std::min(h, by + kBlock));
+      const OIIO::ROI roi(bx, std::min(w, bx + kBlock), by, std::min(h, by + kBlock), 0, 1, 0, 1);
       const double d = sumOver(diff, roi), v = sumOver(variance, roi);
       sumD += d;
       sumV += v;
