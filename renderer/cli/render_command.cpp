@@ -3,6 +3,7 @@
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/environment_options.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/scene/material_binding.h"
 
@@ -23,26 +24,6 @@ struct RenderOptions {
   RenderSettings settings;
   bool half = false;
 };
-
-Rgb parseRgb(const std::string& text, const std::string& option) {
-  std::stringstream s(text);
-  std::vector<double> v;
-  std::string item;
-  while (std::getline(s, item, ',')) {
-    try {
-      size_t used = 0;
-      v.push_back(std::stod(item, &used));
-      if (used != item.size()) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      throw InputError(option + ": '" + text + "' is not a number or R,G,B");
-    }
-  }
-  if (v.size() == 1) v.assign(3, v[0]);
-  if (v.size() != 3) throw InputError(option + ": '" + text + "' is not a number or R,G,B");
-  for (double x : v)
-    if (!std::isfinite(x) || x < 0.0) throw InputError(option + ": radiance must be finite and >= 0, got '" + text + "'");
-  return {v[0], v[1], v[2]};
-}
 
 int runRender(RenderOptions o) {
   std::string scenePath = o.scene;
@@ -71,9 +52,7 @@ int runRender(RenderOptions o) {
   RenderScene scene{&description, nullptr, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, nullptr, nullptr};
   if (override) scene.defaultBrdf = override->brdf;
 
-  const Environment environment = !o.envConstant.empty() ? Environment::constant(parseRgb(o.envConstant, "--env-constant"))
-                                  : !o.env.empty()       ? Environment::load(o.env, o.envRotate)
-                                                         : Environment::makeDefault(o.envRotate);
+  const Environment environment = environmentFromOptions(o.env, o.envConstant, o.envRotate);
   const EmbreeScene bvh(description);
   const AreaLights areaLights(description);
   scene.bvh = &bvh;

@@ -4,6 +4,7 @@
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/environment_options.h"
 #include "renderer/sheet/sheet.h"
 
 #include <algorithm>
@@ -52,20 +53,7 @@ struct Stage {
     }
     bvh = std::make_unique<EmbreeScene>(description);
     lights = std::make_unique<AreaLights>(description);
-    if (!o.envConstant.empty()) {
-      size_t used = 0;
-      double v = -1.0;
-      try {
-        v = std::stod(o.envConstant, &used);
-      } catch (const std::exception&) {
-      }
-      if (used != o.envConstant.size() || !std::isfinite(v) || v < 0.0)
-        throw InputError("--env-constant: '" + o.envConstant + "' is not a radiance >= 0");
-      environment = std::make_unique<Environment>(Environment::constant(Rgb(v)));
-    } else {
-      environment = std::make_unique<Environment>(o.env.empty() ? Environment::makeDefault(o.envRotate)
-                                                                : Environment::load(o.env, o.envRotate));
-    }
+    environment = std::make_unique<Environment>(environmentFromOptions(o.env, o.envConstant, o.envRotate));
   }
 };
 
@@ -147,7 +135,7 @@ void addRenderOptions(CLI::App* app, SheetOptions& o) {
   app->add_option("--scene", o.scene, "glTF scene; default: scenes/preview.gltf");
   app->add_option("--camera", o.camera, "Camera by name (default: the scene's first)");
   auto* env = app->add_option("--env", o.env, "Lat-long environment map (.exr, .hdr); default: the built-in sky");
-  auto* constant = app->add_option("--env-constant", o.envConstant, "Constant environment radiance");
+  auto* constant = app->add_option("--env-constant", o.envConstant, "Constant environment radiance: V or R,G,B");
   env->excludes(constant);
   app->add_option("--env-rotate", o.envRotate, "Rotate the environment about +Y, degrees");
   app->add_option("--spp", o.settings.spp, "Samples per pixel of every panel")->check(CLI::Range(1, INT32_MAX))->capture_default_str();
