@@ -1,10 +1,10 @@
 #include "materials/merl/merl_sampling.h"
 
 #include "materials/merl/merl_table.h"
+#include "materials/models/brdf_sample.h"
 #include "materials/models/half_vector.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 namespace glossy {
@@ -19,15 +19,9 @@ double oneMinusCos(double theta) {
   return 2.0 * s * s;
 }
 
-Vec3 halfVector(double x, double phi) {
-  const double sinTheta = std::sqrt(std::max(0.0, x * (2.0 - x)));
-  return {sinTheta * std::cos(phi), sinTheta * std::sin(phi), 1.0 - x};
-}
-
 }  // namespace
 
 MerlSampling::MerlSampling(const MerlTable& table) {
-  const auto start = std::chrono::steady_clock::now();
   for (int i = 0; i <= kThetaBins; ++i) {
     const double f = double(i) / kThetaBins;
     xEdges_[i] = oneMinusCos(f * f * kPi / 2.0);
@@ -45,13 +39,10 @@ MerlSampling::MerlSampling(const MerlTable& table) {
           for (int b = 0; b < 2; ++b) {
             const double x = xEdges_[i] + (a + 0.5) * 0.5 * dx;
             const double phi = -kPi + (j + (b + 0.5) * 0.5) * (kTwoPi / kPhiBins);
-            const Vec3 H = halfVector(x, phi);
-            const double vh = V.x * H.x + V.y * H.y + V.z * H.z;
-            if (vh <= 0.0) continue;
-            const Vec3 L = 2.0 * vh * H - V;
-            if (L.z <= 0.0) continue;
+            Vec3 L;
+            if (!reflectAboutHalfVector(V, x, phi, L) || L.z <= 0.0) continue;
             const Rgb rho = table.eval(L, V);
-            sum += (rho.r + rho.g + rho.b) / 3.0 * L.z * 4.0 * vh;
+            sum += meanOf(rho) * L.z * 4.0 * HalfVector(L, V).cosVH;
           }
         // The cell's integral of the H-space integrand, up to a constant: mean value × solid angle ∝ Δx.
         weights[size_t(i) * kPhiBins + j] = 0.25 * sum * dx;
@@ -59,7 +50,6 @@ MerlSampling::MerlSampling(const MerlTable& table) {
     }
     views_.emplace_back(weights, kPhiBins, kThetaBins);
   }
-  buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 MerlSampling::ViewPosition MerlSampling::viewPosition(const Vec3& V) {
@@ -79,11 +69,7 @@ bool MerlSampling::sample(const Vec3& V, double uChoice, Vec2 u, Vec3& L) const 
   const int i = std::min(int(rows), kThetaBins - 1);
   const double x = xEdges_[i] + (rows - i) * (xEdges_[i + 1] - xEdges_[i]);
   const double phi = std::atan2(V.y, V.x) - kPi + kTwoPi * point.x;
-  const Vec3 H = halfVector(x, phi);
-  const double vh = V.x * H.x + V.y * H.y + V.z * H.z;
-  if (vh <= 0.0) return false;
-  L = 2.0 * vh * H - V;
-  return L.z > 0.0;
+  return reflectAboutHalfVector(V, x, phi, L) && L.z > 0.0;
 }
 
 double MerlSampling::pdf(const Vec3& L, const Vec3& V) const {

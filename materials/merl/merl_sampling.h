@@ -35,8 +35,7 @@ class MerlSampling {
   // The solid-angle density of L that sample() draws from (0 below the horizon).
   double pdf(const Vec3& L, const Vec3& V) const;
 
-  size_t bytes() const;          // memory held by the tables
-  double buildSeconds() const { return buildSeconds_; }
+  size_t bytes() const;  // memory held by the tables
 
  private:
   struct ViewPosition {
@@ -47,7 +46,6 @@ class MerlSampling {
 
   std::array<double, kThetaBins + 1> xEdges_;  // 1 − cos θ_h at the θ_h bin edges
   std::vector<Distribution2D> views_;           // kViewBins densities over (φ, θ_h) ∈ [0,1)²
-  double buildSeconds_ = 0.0;
 };
 
 }  // namespace glossy

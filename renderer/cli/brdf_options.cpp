@@ -24,11 +24,7 @@ void BrdfOptions::addTo(CLI::App* app) {
 }
 
 Brdf BrdfOptions::load() const {
-  if (!measured.empty()) {
-    auto table = std::make_shared<const MerlTable>(MerlTable::load(measured));
-    reportInvalidBins(*table);
-    return Measured{std::move(table)};
-  }
+  if (!measured.empty()) return Measured{loadMerlTable(measured)};
   const MaterialFile file = loadMaterialFile(material);
   const FitId id = FitId::parse(fit, "--fit");
   const Fit* found = file.find(id);
@@ -41,10 +37,20 @@ Brdf BrdfOptions::load() const {
   return makeBrdf(chosen);
 }
 
-void reportInvalidBins(const MerlTable& table) {
-  if (table.invalidBins() == 0) return;
-  std::fprintf(stderr, "glossy: %s: %zu of %zu bins unmeasured (they evaluate to 0)\n", table.source().c_str(),
-               table.invalidBins(), MerlTable::kBins);
+std::shared_ptr<const MerlTable> loadMerlTable(const std::filesystem::path& path) {
+  auto table = std::make_shared<const MerlTable>(MerlTable::load(path));
+  if (table->invalidBins() > 0)
+    std::fprintf(stderr, "glossy: %s: %zu of %zu bins unmeasured (they evaluate to 0)\n", table->source().c_str(),
+                 table->invalidBins(), MerlTable::kBins);
+  return table;
+}
+
+std::filesystem::path findMeasuredTable(const std::string& given, const std::filesystem::path& merlDir) {
+  MaterialFile named;
+  named.measured = given;
+  const auto path = resolveMeasured(named, merlDir);
+  if (!path) throw InputError(given + ": measured table not found (looked in --merl-dir, $GLOSSY_MERL_DIR, the working folder)");
+  return *path;
 }
 
 }  // namespace glossy::cli

@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
+#include <memory>
 #include <string>
 
 namespace glossy::cli {
@@ -17,8 +19,12 @@ struct BrdfOptions {
   Brdf load() const;  // InputError naming the file for anything missing or malformed
 };
 
-// One line on stderr when a measured table has unmeasured bins (they evaluate to 0): merl.md asks for
-// the count to be reported wherever the data is used.
-void reportInvalidBins(const MerlTable& table);
+// Loads a MERL table (NAME.binary, or NAME.binary.xz), with one line on stderr when it has unmeasured bins
+// (they evaluate to 0): merl.md asks for the count to be reported wherever the data is used.
+std::shared_ptr<const MerlTable> loadMerlTable(const std::filesystem::path& path);
+
+// The table a --measured option names: as given, else under --merl-dir, else $GLOSSY_MERL_DIR (each also
+// as .xz); InputError naming it when none exists.
+std::filesystem::path findMeasuredTable(const std::string& given, const std::filesystem::path& merlDir);
 
 }  // namespace glossy::cli

@@ -3,7 +3,7 @@
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/environment_options.h"
+#include "renderer/cli/scene_options.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/scene/material_binding.h"
 
@@ -36,14 +36,10 @@ int runRender(RenderOptions o) {
   std::optional<BrdfChoice> override;
   int measuredInvalidBins = -1;
   if (!o.measured.empty()) {
-    MaterialFile named;
-    named.measured = o.measured;
-    const auto path = resolveMeasured(named, o.merlDir);
-    if (!path) throw InputError(o.measured + ": measured table not found (looked in --merl-dir, $GLOSSY_MERL_DIR, the working folder)");
-    auto table = std::make_shared<const MerlTable>(MerlTable::load(*path));
+    const std::filesystem::path path = findMeasuredTable(o.measured, o.merlDir);
+    auto table = loadMerlTable(path);
     measuredInvalidBins = int(table->invalidBins());
-    reportInvalidBins(*table);
-    override = BrdfChoice{Measured{std::move(table)}, path->string(), "measured"};
+    override = BrdfChoice{Measured{std::move(table)}, path.string(), "measured"};
   } else if (!o.material.empty()) {
     override = brdfFromMaterialFile(o.material, o.fit);
   }
@@ -59,14 +55,7 @@ int runRender(RenderOptions o) {
   scene.environment = &environment;
   scene.areaLights = &areaLights;
 
-  if (description.cameras.empty()) throw InputError(scenePath + ": the scene has no camera");
-  const Camera* camera = &description.cameras.front();
-  if (!o.camera.empty()) {
-    camera = nullptr;
-    for (const Camera& c : description.cameras)
-      if (c.name == o.camera) camera = &c;
-    if (!camera) throw InputError(scenePath + ": no camera named '" + o.camera + "'");
-  }
+  const Camera* camera = &cameraFromOptions(description, o.camera, scenePath);
 
   o.settings.cosineBrdfSampling = o.brdfSampling == "cosine";
   RenderStats stats;

@@ -4,7 +4,7 @@
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/environment_options.h"
+#include "renderer/cli/scene_options.h"
 #include "renderer/sheet/sheet.h"
 
 #include <algorithm>
@@ -43,14 +43,7 @@ struct Stage {
     scenePath = o.scene;
     if (scenePath.empty()) scenePath = (std::filesystem::path(GLOSSY_SOURCE_DIR) / "scenes/preview.gltf").string();
     description = loadGltf(scenePath);
-    if (description.cameras.empty()) throw InputError(scenePath + ": the scene has no camera");
-    camera = &description.cameras.front();
-    if (!o.camera.empty()) {
-      camera = nullptr;
-      for (const Camera& c : description.cameras)
-        if (c.name == o.camera) camera = &c;
-      if (!camera) throw InputError(scenePath + ": no camera named '" + o.camera + "'");
-    }
+    camera = &cameraFromOptions(description, o.camera, scenePath);
     bvh = std::make_unique<EmbreeScene>(description);
     lights = std::make_unique<AreaLights>(description);
     environment = std::make_unique<Environment>(environmentFromOptions(o.env, o.envConstant, o.envRotate));
@@ -63,10 +56,7 @@ std::shared_ptr<const MerlTable> findMeasured(const MaterialFile& m, const Sheet
                                               std::string& note) {
   std::optional<std::filesystem::path> path;
   if (!explicitPath.empty()) {
-    MaterialFile named;
-    named.measured = explicitPath;
-    path = resolveMeasured(named, o.merlDir);
-    if (!path) throw InputError(explicitPath + ": measured table not found (looked in --merl-dir, $GLOSSY_MERL_DIR, the working folder)");
+    path = findMeasuredTable(explicitPath, o.merlDir);
   } else if (!m.measured.empty()) {
     path = resolveMeasured(m, o.merlDir);
   }
@@ -76,8 +66,7 @@ std::shared_ptr<const MerlTable> findMeasured(const MaterialFile& m, const Sheet
                                 "(Matusik et al. 2003) and point --merl-dir at it";
     return nullptr;
   }
-  auto table = std::make_shared<const MerlTable>(MerlTable::load(*path));
-  reportInvalidBins(*table);
+  auto table = loadMerlTable(*path);
   // shared/merl's tables are neural reconstructions; that folder says so beside them.
   std::error_code ec;
   const bool reconstruction = std::filesystem::exists(path->parent_path() / "nbrdf_weights", ec);

@@ -1,4 +1,4 @@
-#include "renderer/cli/environment_options.h"
+#include "renderer/cli/scene_options.h"
 
 #include "materials/core/input_error.h"
 
@@ -36,6 +36,14 @@ Environment environmentFromOptions(const std::string& file, const std::string& c
   if (!constant.empty()) return Environment::constant(parseRgb(constant, "--env-constant"));
   if (!file.empty()) return Environment::load(file, rotateDegrees);
   return Environment::makeDefault(rotateDegrees);
+}
+
+const Camera& cameraFromOptions(const SceneDescription& scene, const std::string& name, const std::string& scenePath) {
+  if (scene.cameras.empty()) throw InputError(scenePath + ": the scene has no camera");
+  if (name.empty()) return scene.cameras.front();
+  for (const Camera& c : scene.cameras)
+    if (c.name == name) return c;
+  throw InputError(scenePath + ": no camera named '" + name + "'");
 }
 
 }  // namespace glossy::cli
