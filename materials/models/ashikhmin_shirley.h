@@ -7,6 +7,7 @@
 #include "materials/models/brdf_sample.h"
 #include "materials/models/fresnel.h"
 #include "materials/models/half_vector.h"
+#include "materials/models/lobe_geometry.h"
 #include "materials/models/common_params.h"
 
 #include <algorithm>
@@ -30,14 +31,23 @@ struct AshikhminShirley {
   Rgb kd{0.0}, ks{0.0};
   double n = 1.0, eta = 1.5;
 
+  // The specular lobe ρ_s = (n+1)⟨N,H⟩ⁿ F / (8π⟨V,H⟩ max(⟨L,N⟩, ⟨V,N⟩)), ρ = Kd/π + Ks ρ_s; shape = {n, η}.
+  static constexpr std::string_view kScaleKey = "ks";
+  static constexpr double kNStarts[] = {3.0, 10.0, 30.0, 100.0, 300.0, 1e3, 3e3, 1e4, 3e4, 1e5, 1e6};
+  static constexpr ShapeParam kShape[] = {{"n", FitScale::Log, 1e-2, 1e8, kNStarts}, params::kFitEta};
+  template <class T>
+  T lobe(const LobeGeometry& g, const T* shape) const {
+    using std::exp;
+    if (g.h.cosVH <= 0.0) return T(0.0);
+    const T cosN = exp(shape[0] * std::log1p(-g.h.oneMinusCosTheta));
+    return (shape[0] + 1.0) * cosN * fresnelCookTorrance(g.h.cosVH, shape[1]) /
+           (8.0 * kPi * g.h.cosVH * std::max(g.cosL, g.cosV));
+  }
+
   Rgb eval(const Vec3& L, const Vec3& V) const {
     if (L.z <= 0.0 || V.z <= 0.0) return Rgb(0.0);
-    const HalfVector h(L, V);
-    if (h.cosVH <= 0.0) return kd * kInvPi;
-    const double cosN = std::exp(n * std::log1p(-h.oneMinusCosTheta));
-    const double spec = (n + 1.0) * cosN * fresnelCookTorrance(h.cosVH, eta) /
-                        (8.0 * kPi * h.cosVH * std::max(L.z, V.z));
-    return kd * kInvPi + ks * spec;
+    const double shape[] = {n, eta};
+    return kd * kInvPi + ks * lobe(LobeGeometry(L, V), shape);
   }
 
   // Sampling: cos θ_h = ξ^(1/(n+1)), i.e. 1 − cos θ_h = −expm1(ln ξ / (n+1)); pdf_h = (n+1)/(2π) cosⁿθ_h.

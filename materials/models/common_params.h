@@ -14,4 +14,14 @@ inline constexpr ParamSpec kAbcB{"b", ParamKind::Scalar, ParamBound::NonNegative
 inline constexpr ParamSpec kAbcC{"c", ParamKind::Scalar, ParamBound::Positive, "lobe fall-off exponent C"};
 inline constexpr ParamSpec kKs{"ks", ParamKind::Rgb, ParamBound::NonNegative, "specular scale Ks (R, G, B)"};
 
+
+// Their ranges and coarse-scan starts in the fitter. The bounds reach beyond every published fit
+// (B up to 8.1e6, C down to 0.014, η up to 99.999, m down to 0.0018, n up to 6.2e5).
+inline constexpr double kEtaStarts[] = {1.5, 4.0, 30.0};
+inline constexpr ShapeParam kFitEta{"eta", FitScale::AboveOne, 1.0 + 1e-4, 100.0, kEtaStarts};
+inline constexpr double kAbcBStarts[] = {1.0, 10.0, 100.0, 1e3, 1e4, 1e5, 1e6, 1e7};
+inline constexpr ShapeParam kFitAbcB{"b", FitScale::Log, 1e-3, 1e9, kAbcBStarts};
+inline constexpr double kAbcCStarts[] = {0.1, 0.5, 1.5};
+inline constexpr ShapeParam kFitAbcC{"c", FitScale::Log, 1e-3, 100.0, kAbcCStarts};
+
 }  // namespace glossy::params

@@ -7,7 +7,7 @@
 #include "materials/models/brdf_sample.h"
 #include "materials/models/fresnel.h"
 #include "materials/models/half_vector.h"
-#include "materials/models/vgroove.h"
+#include "materials/models/lobe_geometry.h"
 #include "materials/models/common_params.h"
 
 #include <cmath>
@@ -30,15 +30,23 @@ struct CookTorrance {
   Rgb kd{0.0}, ks{0.0};
   double m = 0.1, eta = 1.5;
 
+  // The specular lobe ρ_s = D F G / (π⟨L,N⟩⟨V,N⟩), ρ = Kd/π + Ks ρ_s; shape = {m, η}.
+  static constexpr std::string_view kScaleKey = "ks";
+  static constexpr double kMStarts[] = {0.002, 0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.4, 0.8};
+  static constexpr ShapeParam kShape[] = {{"m", FitScale::Log, 1e-4, 10.0, kMStarts}, params::kFitEta};
+  template <class T>
+  T lobe(const LobeGeometry& g, const T* shape) const {
+    using std::exp;
+    const T m2 = shape[0] * shape[0];
+    const double cos2 = g.h.cosTheta * g.h.cosTheta;
+    const T d = exp(-g.h.tan2Theta / m2) / (m2 * (cos2 * cos2));
+    return d * fresnelCookTorrance(g.h.cosVH, shape[1]) * (g.g / (kPi * g.cosL * g.cosV));
+  }
+
   Rgb eval(const Vec3& L, const Vec3& V) const {
     if (L.z <= 0.0 || V.z <= 0.0) return Rgb(0.0);
-    const HalfVector h(L, V);
-    const double m2 = m * m;
-    const double cos2 = h.cosTheta * h.cosTheta;
-    const double d = std::exp(-h.tan2Theta / m2) / (m2 * cos2 * cos2);
-    const double g = vgrooveG(h.cosTheta, L.z, V.z, h.cosVH);
-    const double spec = d * fresnelCookTorrance(h.cosVH, eta) * g / (kPi * L.z * V.z);
-    return kd * kInvPi + ks * spec;
+    const double shape[] = {m, eta};
+    return kd * kInvPi + ks * lobe(LobeGeometry(L, V), shape);
   }
 
   // Sampling (Beckmann): tan²θ_h = −m² ln(1 − ξ), φ_h uniform; pdf_h = exp(−tan²θ_h/m²) / (π m² cos³θ_h).

@@ -3,6 +3,7 @@
 //   g = sqrt(eta² + c² − 1),  F = ½ ((g−c)/(g+c))² [1 + ((c(g+c) − 1)/(c(g−c) + 1))²]
 // c is the cosine of the angle of incidence on the facet (spec: ⟨V,H⟩ for the microfacet-style models,
 // the projected cos θ_d for the Smooth model). F(1) = ((eta−1)/(eta+1))², F(0) = 1.
+// A template in eta so that the fitter can differentiate it (T = ceres::Jet); c is geometry, always double.
 #pragma once
 
 #include <algorithm>
@@ -10,11 +11,15 @@
 
 namespace glossy {
 
-inline double fresnelCookTorrance(double c, double eta) {
+template <class T>
+T fresnelCookTorrance(double c, const T& eta) {
+  using std::sqrt;
   c = std::clamp(c, 0.0, 1.0);
-  const double g = std::sqrt(std::max(eta * eta + c * c - 1.0, 0.0));
-  const double a = (g - c) / (g + c);
-  const double b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
+  T radicand = eta * eta + (c * c - 1.0);
+  if (radicand < 0.0) radicand = T(0.0);
+  const T g = sqrt(radicand);
+  const T a = (g - c) / (g + c);
+  const T b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
   return 0.5 * a * a * (1.0 + b * b);
 }
 

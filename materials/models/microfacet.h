@@ -10,7 +10,7 @@
 #include "materials/models/brdf_sample.h"
 #include "materials/models/fresnel.h"
 #include "materials/models/half_vector.h"
-#include "materials/models/vgroove.h"
+#include "materials/models/lobe_geometry.h"
 #include "materials/models/common_params.h"
 
 #include <cmath>
@@ -32,13 +32,20 @@ struct Microfacet {
   Rgb kd{0.0}, a{0.0};
   double b = 0.0, c = 1.0, eta = 1.5;
 
+  // The specular lobe ρ_s = (1 + B(1 − ⟨N,H⟩))^(−C) F G / (π⟨L,N⟩⟨V,N⟩), ρ = Kd/π + A ρ_s; shape = {B, C, η}.
+  static constexpr std::string_view kScaleKey = "a";
+  static constexpr ShapeParam kShape[] = {params::kFitAbcB, params::kFitAbcC, params::kFitEta};
+  template <class T>
+  T lobe(const LobeGeometry& g, const T* shape) const {
+    using std::exp, std::log1p;
+    const T s = exp(-shape[1] * log1p(shape[0] * g.h.oneMinusCosTheta));
+    return s * fresnelCookTorrance(g.h.cosVH, shape[2]) * (g.g / (kPi * g.cosL * g.cosV));
+  }
+
   Rgb eval(const Vec3& L, const Vec3& V) const {
     if (L.z <= 0.0 || V.z <= 0.0) return Rgb(0.0);
-    const HalfVector h(L, V);
-    const double s = std::exp(-c * std::log1p(b * h.oneMinusCosTheta));
-    const double g = vgrooveG(h.cosTheta, L.z, V.z, h.cosVH);
-    const double spec = s * fresnelCookTorrance(h.cosVH, eta) * g / (kPi * L.z * V.z);
-    return kd * kInvPi + a * spec;
+    const double shape[] = {b, c, eta};
+    return kd * kInvPi + a * lobe(LobeGeometry(L, V), shape);
   }
 
   // Sampling: x = 1 − cos θ_h with density ∝ (1 + Bx)^(−C) on [0, 1], φ_h uniform, L = reflect(V, H);

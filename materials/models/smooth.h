@@ -8,6 +8,7 @@
 #include "materials/models/abc_profile.h"
 #include "materials/models/brdf_sample.h"
 #include "materials/models/fresnel.h"
+#include "materials/models/lobe_geometry.h"
 #include "materials/models/common_params.h"
 
 #include <algorithm>
@@ -35,20 +36,20 @@ struct Smooth {
   double b = 0.0, c = 1.0, eta = 1.5;
   bool fresnelVH = false;
 
+  // The specular lobe ρ_s = F(cos θ_d; η) (1 + B‖D_P‖²)^(−C), so that ρ = Kd/π + A ρ_s; shape = {B, C, η}.
+  static constexpr std::string_view kScaleKey = "a";
+  static constexpr ShapeParam kShape[] = {params::kFitAbcB, params::kFitAbcC, params::kFitEta};
+  template <class T>
+  T lobe(const LobeGeometry& g, const T* shape) const {
+    using std::exp, std::log1p;
+    const double cosThetaD = fresnelVH ? g.h.cosVH : g.cosThetaDProjected;
+    return fresnelCookTorrance(cosThetaD, shape[2]) * exp(-shape[1] * log1p(shape[0] * g.dp2));
+  }
+
   Rgb eval(const Vec3& L, const Vec3& V) const {
     if (L.z <= 0.0 || V.z <= 0.0) return Rgb(0.0);
-    const double dx = L.x + V.x, dy = L.y + V.y;
-    const double dp2 = dx * dx + dy * dy;
-    double cosThetaD;
-    if (fresnelVH) {
-      const Vec3 h = L + V;
-      cosThetaD = (V.x * h.x + V.y * h.y + V.z * h.z) / std::sqrt(h.x * h.x + h.y * h.y + h.z * h.z);
-    } else {
-      const double ex = L.x - V.x, ey = L.y - V.y;
-      cosThetaD = std::sqrt(std::max(0.0, 1.0 - 0.25 * (ex * ex + ey * ey)));
-    }
-    const double s = std::exp(-c * std::log1p(b * dp2));
-    return kd * kInvPi + a * (fresnelCookTorrance(cosThetaD, eta) * s);
+    const double shape[] = {b, c, eta};
+    return kd * kInvPi + a * lobe(LobeGeometry(L, V), shape);
   }
 
   // Sampling: the projected point L_p on the unit disk with density ∝ (1 + B|L_p − r_p|²)^(−C), r_p = −V_p:

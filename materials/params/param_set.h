@@ -25,6 +25,17 @@ struct ParamSpec {
   bool optional = false;
 };
 
+// How the fitter (materials/fitting) varies one of a model's shape parameters (the ones its lobe is
+// nonlinear in): as the unconstrained x of v = e^x (Log) or v = 1 + e^x (AboveOne), within [lo, hi], starting
+// from each of `starts` in a coarse scan. The per-channel Kd and scale are always fitted, on a log scale.
+enum class FitScale { Log, AboveOne };
+struct ShapeParam {
+  std::string_view key;
+  FitScale scale;
+  double lo, hi;
+  std::span<const double> starts;
+};
+
 // Human text for a bound: "≥ 0", "> 0", "> 1".
 std::string_view describeBound(ParamBound bound);
 bool satisfiesBound(double value, ParamBound bound);
