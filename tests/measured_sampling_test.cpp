@@ -19,19 +19,8 @@ namespace {
 
 constexpr long kSamples = 1000000;
 
-std::span<const std::byte> asBytes(const std::string& s) { return {reinterpret_cast<const std::byte*>(s.data()), s.size()}; }
-
-// An analytic BRDF at the centre of every bin, stored as the reference reader expects (÷ the channel
-// scale); `unmeasured` marks bins as negative (invalid).
-std::shared_ptr<const MerlTable> tabulate(const Brdf& brdf, const std::function<bool(int, int, int)>& unmeasured = {}) {
-  const std::string bytes = syntheticMerlBytes([&](int h, int d, int p) {
-    if (unmeasured && unmeasured(h, d, p)) return Rgb(-1.0);
-    const double fh = (h + 0.5) / 90.0;
-    const auto [L, V] = fromHalfDiff(fh * fh * kPi / 2, (d + 0.5) / 90.0 * kPi / 2, (p + 0.5) / 180.0 * kPi);
-    const Rgb rho = eval(brdf, L, V);
-    return Rgb(rho.r / MerlTable::kScale[0], rho.g / MerlTable::kScale[1], rho.b / MerlTable::kScale[2]);
-  });
-  return std::make_shared<const MerlTable>(MerlTable::parse(asBytes(bytes), "synthetic"));
+std::shared_ptr<const MerlTable> tabulate(const Brdf& brdf, const BinPredicate& unmeasured = {}) {
+  return tabulateMerl(brdf, unmeasured);
 }
 
 const Brdf kGlossy = CookTorrance{Rgb(0.02), Rgb(0.6, 0.5, 0.4), 0.01, 1.8};

@@ -118,16 +118,22 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
     const std::string key(k.str());
     const std::string here = at(source, node) + fitLabel(index, fit.id) + ": key '" + key + "'";
     if (key == "model" || key == "metric") continue;
-    if (key == "source") {
+    if (key == "source" || key == "settings") {
       if (!node.is_string()) throw InputError(here + ": must be a string");
-      fit.source = node.as_string()->get();
+      (key == "source" ? fit.source : fit.settings) = node.as_string()->get();
+      continue;
+    }
+    if (key == "error") {
+      auto v = asNumber(node);
+      if (!v || !std::isfinite(*v) || *v < 0.0) throw InputError(here + ": must be a finite number ≥ 0");
+      fit.error = *v;
       continue;
     }
     auto spec = std::find_if(model->params.begin(), model->params.end(), [&](const ParamSpec& s) { return s.key == key; });
     if (spec == model->params.end()) {
       std::vector<std::string_view> keys{"model", "metric"};
       for (const ParamSpec& s : model->params) keys.push_back(s.key);
-      keys.push_back("source");
+      for (std::string_view k : {"source", "error", "settings"}) keys.push_back(k);
       throw InputError(here + ": unknown key for the " + fit.id.model + " model (its keys: " + quoteList(keys) + ")");
     }
     switch (spec->kind) {
@@ -302,6 +308,8 @@ std::string toToml(const MaterialFile& m) {
       out << "\n";
     }
     if (!fit.source.empty()) out << "source = " << quoteToml(fit.source) << "\n";
+    if (fit.error) out << "error = " << formatNumber(*fit.error) << "\n";
+    if (!fit.settings.empty()) out << "settings = " << quoteToml(fit.settings) << "\n";
   }
   return out.str();
 }

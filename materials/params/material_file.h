@@ -26,6 +26,9 @@ struct Fit {
   FitId id;
   ParamSet params;
   std::string source;  // provenance of this fit when it differs from the material's
+  // Set by `glossy fit`: the error E it reached under its metric, and how it was made (grid, starts).
+  std::optional<double> error;
+  std::string settings;
   bool operator==(const Fit&) const = default;
 };
 

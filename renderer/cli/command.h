@@ -13,7 +13,9 @@ struct Command {
   std::function<int()> run;  // exit status; throws InputError for bad input
 };
 
+Command addErrorCommand(CLI::App& parent);
 Command addEvalCommand(CLI::App& parent);
+Command addFitCommand(CLI::App& parent);
 Command addImportCommand(CLI::App& parent);
 Command addListCommand(CLI::App& parent);
 Command addRenderCommand(CLI::App& parent);

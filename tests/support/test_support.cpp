@@ -137,6 +137,22 @@ std::string syntheticMerlBytes(const MerlFiller& f) {
   return bytes;
 }
 
+std::string tabulatedMerlBytes(const Brdf& brdf, const BinPredicate& unmeasured) {
+  return syntheticMerlBytes([&](int h, int d, int p) {
+    if (unmeasured && unmeasured(h, d, p)) return Rgb(-1.0);
+    const double fh = (h + 0.5) / 90.0;
+    const auto [L, V] = fromHalfDiff(fh * fh * kPi / 2, (d + 0.5) / 90.0 * kPi / 2, (p + 0.5) / 180.0 * kPi);
+    const Rgb rho = eval(brdf, L, V);
+    return Rgb(rho.r / MerlTable::kScale[0], rho.g / MerlTable::kScale[1], rho.b / MerlTable::kScale[2]);
+  });
+}
+
+std::shared_ptr<const MerlTable> tabulateMerl(const Brdf& brdf, const BinPredicate& unmeasured) {
+  const std::string bytes = tabulatedMerlBytes(brdf, unmeasured);
+  return std::make_shared<const MerlTable>(
+      MerlTable::parse({reinterpret_cast<const std::byte*>(bytes.data()), bytes.size()}, "synthetic"));
+}
+
 std::pair<Vec3, Vec3> fromHalfDiff(double thetaH, double thetaD, double phiD, double phiH) {
   // D in the half-vector frame, then rotate about y by θ_h and about z by φ_h (the inverse of the
   // MERL reference's to-half/diff rotation); V is the reflection of L about H.

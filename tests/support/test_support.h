@@ -3,12 +3,15 @@
 #pragma once
 
 #include "materials/core/types.h"
+#include "materials/merl/merl_table.h"
+#include "materials/models/brdf.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -62,5 +65,12 @@ std::string syntheticMerlBytes(const MerlFiller& f);
 
 // L and V (local frame) with the given half/difference angles; φ_h rotates the pair about N.
 std::pair<Vec3, Vec3> fromHalfDiff(double thetaH, double thetaD, double phiD, double phiH = 0.0);
+
+// The bytes of a MERL table holding an analytic BRDF at the centre of every bin, stored as the reference
+// reader expects (÷ the channel scale); `unmeasured(θh, θd, φd)` marks bins as negative (invalid).
+using BinPredicate = std::function<bool(int thetaH, int thetaD, int phiD)>;
+std::string tabulatedMerlBytes(const Brdf& brdf, const BinPredicate& unmeasured = {});
+// The same, parsed.
+std::shared_ptr<const MerlTable> tabulateMerl(const Brdf& brdf, const BinPredicate& unmeasured = {});
 
 }  // namespace glossy::test

@@ -1,0 +1,198 @@
+// glossy fit: fit an analytic model to a measured table under E1 or E2, writing or updating the
+// material's parameter file; with --measured-dir, every model and metric for every table, resumably.
+#include "materials/core/atomic_file.h"
+#include "materials/core/input_error.h"
+#include "materials/fitting/fitter.h"
+#include "renderer/cli/brdf_options.h"
+#include "renderer/cli/command.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace glossy::cli {
+
+namespace {
+
+struct FitOptions {
+  std::string measured, merlDir, output, measuredDir, outDir;
+  std::vector<std::string> models, metrics;
+  FitSettings settings;
+};
+
+// "alum-bronze.binary.xz" → "alum-bronze".
+std::string materialNameOf(const std::filesystem::path& table) {
+  std::string name = table.filename().string();
+  for (std::string_view suffix : {".xz", ".binary"})
+    if (name.size() > suffix.size() && name.ends_with(suffix)) name.resize(name.size() - suffix.size());
+  return name;
+}
+
+MaterialFile loadOrStart(const std::filesystem::path& path, const std::filesystem::path& table) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec)) return loadMaterialFile(path);
+  MaterialFile m;
+  m.name = materialNameOf(table);
+  m.measured = merlFileName(m.name);
+  m.source = "glossy fit to " + table.filename().string();
+  return m;
+}
+
+std::string formatSeconds(double s) {
+  char buf[32];
+  if (s < 120) std::snprintf(buf, sizeof buf, "%.1f s", s);
+  else std::snprintf(buf, sizeof buf, "%.0f min", s / 60.0);
+  return buf;
+}
+
+std::string describeFit(const FitReport& r) {
+  std::ostringstream s;
+  s.precision(6);
+  s << r.fit.id.str() << ": " << r.fit.id.metric << " = " << r.error << " in " << formatSeconds(r.seconds) << " ("
+    << r.scanned << " scanned, refined starts reached";
+  for (double e : r.startErrors) s << " " << e;
+  s << ")";
+  for (const auto& [key, value] : r.fit.params.values()) {
+    s << "; " << key << " = ";
+    if (auto d = std::get_if<double>(&value)) s << *d;
+    if (auto c = std::get_if<Rgb>(&value)) s << "[" << c->r << ", " << c->g << ", " << c->b << "]";
+  }
+  return s.str();
+}
+
+std::vector<Metric> metricsOf(const std::vector<std::string>& names) {
+  std::vector<Metric> out;
+  for (const auto& n : names) out.push_back(parseMetric(n, "--metric"));
+  return out;
+}
+
+std::vector<std::string> modelsOf(const std::vector<std::string>& names) {
+  if (!names.empty()) return names;
+  const auto all = fittableModels();
+  return {all.begin(), all.end()};
+}
+
+int runSingle(const FitOptions& o) {
+  if (o.models.size() != 1 || o.metrics.size() != 1)
+    throw InputError("glossy fit --measured needs one --model and one --metric (or use --measured-dir for all)");
+  const std::filesystem::path tablePath = findMeasuredTable(o.measured, o.merlDir);
+  const Metric metric = parseMetric(o.metrics[0], "--metric");
+  // Validate the output file before the (slow) fit.
+  MaterialFile material = loadOrStart(std::filesystem::path(o.output), tablePath);
+  const auto table = loadMerlTable(tablePath);
+  const MetricData data(*table, metric);
+  FitReport report = fitModel(data, o.models[0], o.settings);
+  report.fit.source = "glossy fit to " + tablePath.filename().string();
+  std::cerr << tablePath.filename().string() << " " << describeFit(report) << "\n";
+  material.put(report.fit);
+  if (o.output.empty()) {
+    std::cout << toToml(material);
+    return std::fflush(stdout) == 0 ? 0 : 1;
+  }
+  writeFileAtomically(o.output, toToml(material));
+  return 0;
+}
+
+std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec)) throw InputError(dir.string() + ": not a directory");
+  std::map<std::string, std::filesystem::path> byName;  // a .binary wins over its .binary.xz
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    const std::string f = e.path().filename().string();
+    if (!e.is_regular_file() || !(f.ends_with(".binary") || f.ends_with(".binary.xz"))) continue;
+    auto [it, inserted] = byName.emplace(materialNameOf(e.path()), e.path());
+    if (!inserted && f.ends_with(".binary")) it->second = e.path();
+  }
+  if (byName.empty()) throw InputError(dir.string() + ": no MERL tables (*.binary or *.binary.xz)");
+  std::vector<std::filesystem::path> out;
+  for (auto& [name, path] : byName) out.push_back(path);
+  return out;
+}
+
+int runBatch(const FitOptions& o) {
+  if (o.outDir.empty()) throw InputError("glossy fit --measured-dir needs --out-dir");
+  const auto tables = tablesIn(o.measuredDir);
+  const std::vector<std::string> models = modelsOf(o.models);
+  const std::vector<Metric> metrics = metricsOf(o.metrics.empty() ? std::vector<std::string>{"E1", "E2"} : o.metrics);
+  const auto fittable = fittableModels();
+  for (const auto& m : models)
+    if (std::find(fittable.begin(), fittable.end(), m) == fittable.end())
+      throw InputError("--model: cannot fit '" + m + "' (fittable: microfacet, smooth, ashikhmin-shirley, cook-torrance)");
+  std::filesystem::create_directories(o.outDir);
+  const std::string settings = o.settings.describe();
+
+  // Every output file is read (and so validated) before anything is fitted.
+  struct Job { size_t table; std::string model; Metric metric; };
+  std::vector<Job> jobs;
+  size_t done = 0;
+  for (size_t t = 0; t < tables.size(); ++t) {
+    const std::filesystem::path out = std::filesystem::path(o.outDir) / (materialNameOf(tables[t]) + ".toml");
+    const MaterialFile existing = loadOrStart(out, tables[t]);
+    for (const auto& model : models)
+      for (Metric metric : metrics) {
+        const Fit* f = existing.find({model, std::string(metricName(metric))});
+        if (f && f->settings == settings) ++done;  // made by this version with these settings: resume past it
+        else jobs.push_back({t, model, metric});
+      }
+  }
+  const size_t total = done + jobs.size();
+  std::cerr << "glossy fit: " << tables.size() << " tables, " << total << " fits, " << done << " already done\n";
+
+  const auto t0 = std::chrono::steady_clock::now();
+  std::shared_ptr<const MerlTable> table;
+  size_t loaded = size_t(-1);
+  std::map<Metric, std::unique_ptr<MetricData>> data;
+  for (size_t j = 0; j < jobs.size(); ++j) {
+    const Job& job = jobs[j];
+    if (loaded != job.table) {
+      table = loadMerlTable(tables[job.table]);
+      data.clear();
+      loaded = job.table;
+    }
+    auto& d = data[job.metric];
+    if (!d) d = std::make_unique<MetricData>(*table, job.metric);
+    FitReport report = fitModel(*d, job.model, o.settings);
+    report.fit.source = "glossy fit to " + tables[job.table].filename().string();
+    const std::filesystem::path out = std::filesystem::path(o.outDir) / (materialNameOf(tables[job.table]) + ".toml");
+    MaterialFile material = loadOrStart(out, tables[job.table]);
+    material.put(report.fit);
+    writeFileAtomically(out, toToml(material));  // after each fit, so an interrupted batch resumes here
+
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double eta = elapsed / double(j + 1) * double(jobs.size() - j - 1);
+    std::cerr << "[" << done + j + 1 << "/" << total << "] " << materialNameOf(tables[job.table]) << " " << describeFit(report)
+              << "; ETA " << formatSeconds(eta) << "\n";
+  }
+  return 0;
+}
+
+}  // namespace
+
+Command addFitCommand(CLI::App& parent) {
+  auto o = std::make_shared<FitOptions>();
+  CLI::App* app = parent.add_subcommand("fit", "Fit analytic models to measured MERL data under E1 or E2 (docs/fitting.md)");
+  app->add_option("--measured", o->measured, "MERL table (.binary or .binary.xz) to fit");
+  app->add_option("--merl-dir", o->merlDir, "where to look for --measured (else $GLOSSY_MERL_DIR)");
+  app->add_option("--model", o->models, "model to fit: microfacet, smooth, ashikhmin-shirley, cook-torrance (batch: repeatable, default all)");
+  app->add_option("--metric", o->metrics, "E1 or E2 (batch: repeatable, default both)");
+  app->add_option("-o,--output", o->output, "material TOML to write or update (keeps its other fits); default: stdout");
+  app->add_option("--measured-dir", o->measuredDir, "batch: fit every table in this folder");
+  app->add_option("--out-dir", o->outDir, "batch: one material TOML per table here; fits already made are skipped");
+  app->add_option("--starts", o->settings.refinedStarts, "lobe widths refined from the coarse scan")->check(CLI::Range(1, 64));
+  app->add_option("--max-iterations", o->settings.maxIterations, "Levenberg-Marquardt iterations per start")->check(CLI::Range(1, 10000));
+  app->add_option("--threads", o->settings.threads, "threads (default: all cores); the result does not depend on it")->check(CLI::Range(1, 256));
+  auto measured = app->get_option("--measured");
+  auto dir = app->get_option("--measured-dir");
+  measured->excludes(dir);
+  app->get_option("-o")->excludes(dir);
+  return {app, [o] {
+            if (!o->measuredDir.empty()) return runBatch(*o);
+            if (o->measured.empty()) throw InputError("glossy fit needs --measured FILE or --measured-dir DIR");
+            return runSingle(*o);
+          }};
+}
+
+}  // namespace glossy::cli
