@@ -39,6 +39,8 @@ Brdf BrdfOptions::load() const {
 
 std::shared_ptr<const MerlTable> loadMerlTable(const std::filesystem::path& path) {
   auto table = std::make_shared<const MerlTable>(MerlTable::load(path));
+  if (table->invalidBins() == MerlTable::kBins)
+    throw InputError(table->source() + ": every bin is unmeasured (negative): the table holds no data");
   if (table->invalidBins() > 0)
     std::fprintf(stderr, "glossy: %s: %zu of %zu bins unmeasured (they evaluate to 0)\n", table->source().c_str(),
                  table->invalidBins(), MerlTable::kBins);
