@@ -4,6 +4,7 @@
 #include "tests/support/test_support.h"
 
 #include <OpenImageIO/imageio.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 
@@ -53,6 +54,25 @@ TEST(CliSheet, EverySupplementMaterialGivesTheLayeredExrAndThePngWithNoNonFinite
     EXPECT_EQ(measured.at(16 + 5, 5)[1], 0.0f);
     EXPECT_EQ(readImageAttribute(exr, "glossy:panel.smooth_E2.box"), "32 0 16 16");
     EXPECT_FALSE(readImageAttribute(exr, "glossy:error.cook_torrance_E2.relativeRmse").empty()) << name;
+    // The BRDF-space errors are glossy error's, for every fit panel.
+    if (name == std::string(kSupplement[0])) {
+      const RunResult e = runGlossy({"error", "--material", (materialsDir() / (std::string(name) + ".toml")).string(), "--measured",
+                                     (sharedDir() / "merl" / (std::string(name) + ".binary")).string(), "--json"});
+      ASSERT_EQ(e.status, 0) << e.err;
+      const auto json = nlohmann::json::parse(e.out);
+      ASSERT_EQ(json["fits"].size(), 6u);
+      for (const auto& f : json["fits"]) {
+        std::string layer = f["fit"].get<std::string>();
+        std::replace(layer.begin(), layer.end(), '-', '_');
+        std::replace(layer.begin(), layer.end(), ':', '_');
+        for (const char* metric : {"E1", "E2"}) {
+          const std::string key = "glossy:error." + layer + "." + metric;
+          ASSERT_FALSE(readImageAttribute(exr, key).empty()) << key;
+          EXPECT_NEAR(std::stod(readImageAttribute(exr, key)), f[metric].get<double>(), 1e-5 * f[metric].get<double>()) << key;  // stored as float, read as 6 digits
+        }
+      }
+      EXPECT_NE(r.out.find("BRDF E2"), std::string::npos) << r.out;
+    }
     EXPECT_NE(readImageAttribute(exr, "glossy:measured").find("NBRDF reconstruction"), std::string::npos);
     const RgbImage png = readRgbImage(tmp / (std::string(name) + ".png"));
     EXPECT_EQ(png.width, 7 * 16);

@@ -1,5 +1,6 @@
 #include "renderer/sheet/sheet.h"
 
+#include "materials/fitting/metric.h"
 #include "renderer/camera/camera_rays.h"
 #include "renderer/scene/material_binding.h"
 
@@ -150,13 +151,19 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
   }
 
   const PanelRender& ref = sheet.panels.front();
-  if (!ref.empty)
+  if (!ref.empty) {
+    // The BRDF-space errors beside the image-space ones: the same E1/E2 as `glossy error`.
+    const MetricData e1(*measured, Metric::E1), e2(*measured, Metric::E2);
     for (size_t k = 1; k < sheet.panels.size(); ++k) {
       PanelRender& p = sheet.panels[k];
       if (p.empty) continue;
       p.relativeRmse = relativeRmse(p.image, ref.image, sheet.objectMask);
       p.luminanceRatio = luminanceRatio(p.image, ref.image, sheet.objectMask);
+      const Brdf brdf = makeBrdf(*material.find(FitId::parse(p.panel.fit, material.path.string())));
+      p.brdfE1 = e1.error(brdf);
+      p.brdfE2 = e2.error(brdf);
     }
+  }
 
   sheet.grid = RgbImage(w * int(sheet.panels.size()), h);
   for (size_t k = 0; k < sheet.panels.size(); ++k)
@@ -216,10 +223,15 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
       metadata.push_back({"glossy:error." + p.panel.layer + ".relativeRmse", float(p.relativeRmse)});
       metadata.push_back({"glossy:error." + p.panel.layer + ".luminanceRatio", float(p.luminanceRatio)});
     }
+    if (p.brdfE1 >= 0.0) {
+      metadata.push_back({"glossy:error." + p.panel.layer + ".E1", float(p.brdfE1)});
+      metadata.push_back({"glossy:error." + p.panel.layer + ".E2", float(p.brdfE2)});
+    }
   }
   metadata.push_back({"glossy:panels", names});
   metadata.push_back({"glossy:panelSize", std::to_string(w) + "x" + std::to_string(h)});
-  metadata.push_back({"glossy:errors", sheet.hasMeasured() ? std::string("against the measured panel, over the object's pixels")
+  metadata.push_back({"glossy:errors", sheet.hasMeasured() ? std::string("relativeRmse, luminanceRatio: against the measured panel, over the object's pixels; "
+                                                                       "E1, E2: the fit against the measured table on the grid ") + MetricGrid::describe()
                                                            : std::string("none: no measured panel")});
   std::vector<ExrLayer> layers = {{"", &sheet.grid}};
   for (size_t k = 0; k < sheet.panels.size(); ++k) layers.push_back({sheet.panels[k].panel.layer, &placed[k]});
@@ -230,7 +242,7 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
   const int w = sheet.panels.front().image.width, h = sheet.panels.front().image.height;
   const int n = int(sheet.panels.size());
   const int fontSize = std::clamp(w / 13, 9, 16);
-  const int strip = 2 * fontSize + fontSize / 2 + 6;
+  const int strip = 3 * fontSize + fontSize / 2 + 8;
   OIIO::ImageBuf buf(OIIO::ImageSpec(w * n, h + strip, 3, OIIO::TypeDesc::FLOAT));
   const float stripColour[3] = {0.12f, 0.12f, 0.12f}, emptyColour[3] = {0.25f, 0.25f, 0.25f};
   OIIO::ImageBufAlgo::fill(buf, stripColour);
@@ -268,6 +280,12 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
     if (!second.empty())
       OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + 2 * fontSize + 5, fitted(second, w - 6, small, fontPath), small,
                                       fontPath, grey);
+    if (p.brdfE1 >= 0.0) {
+      const std::string third = w >= 120 ? formatted("E1 %.3g", p.brdfE1) + formatted("  E2 %.3g", p.brdfE2)
+                                         : formatted("%.2g", p.brdfE1) + formatted(" %.2g", p.brdfE2);
+      OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + 3 * fontSize + 7, fitted(third, w - 6, small, fontPath), small,
+                                      fontPath, grey);
+    }
   }
   if (buf.has_error()) std::fprintf(stderr, "glossy: %s: labels not drawn: %s\n", path.string().c_str(), buf.geterror().c_str());
   std::vector<unsigned char> rgb(size_t(w * n) * size_t(h + strip) * 3);
@@ -284,14 +302,14 @@ std::string errorTable(const Sheet& sheet) {
     s << "error of each model against the measured panel (" << sheet.panels.front().note
       << "), over the object's pixels\n";
   }
-  s << "  panel           spp   rel. RMSE   luminance ratio\n";
+  s << "  panel           spp   rel. RMSE   luminance ratio   BRDF E1   BRDF E2\n";
   for (const PanelRender& p : sheet.panels) {
     char line[160];
     if (p.empty)
       std::snprintf(line, sizeof line, "  %-14s    -   %s\n", p.panel.label.c_str(), p.note.c_str());
     else if (p.relativeRmse >= 0.0)
-      std::snprintf(line, sizeof line, "  %-14s %5d   %9.4f   %15.4f\n", p.panel.label.c_str(), p.spp, p.relativeRmse,
-                    p.luminanceRatio);
+      std::snprintf(line, sizeof line, "  %-14s %5d   %9.4f   %15.4f   %7.4f   %7.4f\n", p.panel.label.c_str(), p.spp,
+                    p.relativeRmse, p.luminanceRatio, p.brdfE1, p.brdfE2);
     else
       std::snprintf(line, sizeof line, "  %-14s %5d   %9s   %15s\n", p.panel.label.c_str(), p.spp, "-", "-");
     s << line;

@@ -59,6 +59,7 @@ struct PanelRender {
   double seconds = 0.0;
   uint64_t droppedSamples = 0;
   double relativeRmse = -1.0, luminanceRatio = -1.0;  // against the measured panel; < 0 when there is none
+  double brdfE1 = -1.0, brdfE2 = -1.0;  // the fit's E1, E2 against the measured table (docs/fitting.md); < 0: none
 };
 
 struct Sheet {
