@@ -4,7 +4,6 @@
 #include "materials/models/registry.h"
 
 #include <ceres/ceres.h>
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -13,7 +12,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <sstream>
 
 namespace glossy {
@@ -107,7 +105,6 @@ struct Candidate {
   size_t width = 0;           // index of the first shape parameter's start (the lobe width)
 };
 
-template <class M>
 double weightedSquares(const std::vector<FitPoint>& pts, Metric metric, const std::vector<double>& lobe,
                        const std::array<double, 3>& kd, const std::array<double, 3>& scale) {
   double sum = 0.0;
@@ -242,7 +239,7 @@ FitReport fitWith(const MetricData& data, const FitSettings& settings) {
       c.width = indices[i][0];
       const std::vector<double> lobe = lobeValues(model, pts, c.shape);
       solveLinear(pts, metric, lobe, c);
-      c.sum = weightedSquares<M>(pts, metric, lobe, c.kd, c.scale);
+      c.sum = weightedSquares(pts, metric, lobe, c.kd, c.scale);
       if (!std::isfinite(c.sum)) c.sum = std::numeric_limits<double>::infinity();
       scanned[i] = c;
     });
