@@ -5,7 +5,8 @@
 // invocation while neither pays a process start or a scene load per run:
 //
 //   render SPP SEED THREADS OUT     render; write the EXR to OUT unless OUT is "-"
-//                                   → "ok SECONDS DROPPED"   (SECONDS: the render call alone)
+//                                   → "ok SECONDS DROPPED CPU_SECONDS"   (SECONDS: the render call's wall
+//                                   time; CPU_SECONDS: the process's CPU time over it, all threads)
 //   rays SPP THREADS RUNS           record every ray of one render, then time RUNS renders and RUNS replays
 //                                   of the recorded rays through raw Embree (each after a warm-up)
 //                                   → "ok RAYS SAMPLES PT_SECONDS RAW_SECONDS"   (medians)
@@ -21,6 +22,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <sys/resource.h>
+
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -30,6 +33,13 @@ using namespace glossy;
 using namespace glossy::bench;
 
 namespace {
+
+// User + system CPU time of the whole process (every thread), seconds.
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
 
 int writeSky(const std::string& path) {
   const LatLongImage sky = makeDefaultSky();
@@ -88,12 +98,14 @@ int main(int argc, char** argv) {
           std::string out;
           if (!(in >> settings.spp >> settings.seed >> settings.threads >> out)) throw std::runtime_error("usage: render SPP SEED THREADS OUT");
           RenderStats stats;
+          const double cpuStart = processCpuSeconds();
           const RgbImage image = render(scene, camera, settings, stats);
+          const double cpu = processCpuSeconds() - cpuStart;
           if (out != "-")
             writeExr(out, image,
                      {{"glossy:spp", settings.spp}, {"glossy:seed", int(settings.seed)}, {"glossy:maxDepth", maxDepth},
                       {"glossy:renderSeconds", float(stats.seconds)}, {"glossy:scene", scenePath}, {"glossy:env", envPath}});
-          std::printf("ok %.9g %llu\n", stats.seconds, static_cast<unsigned long long>(stats.droppedSamples));
+          std::printf("ok %.9g %llu %.6g\n", stats.seconds, static_cast<unsigned long long>(stats.droppedSamples), cpu);
         } else if (command == "rays") {
           RenderSettings settings = base;
           int runs = 5;

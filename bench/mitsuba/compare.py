@@ -80,9 +80,11 @@ class Glossy:
         return answer[1:]
 
     def render(self, spp, seed, threads, out=None):
-        seconds, dropped = self._ask(f"render {spp} {seed} {threads} {out or '-'}")
+        """Wall seconds of the render call; its CPU seconds (all threads) are left in last_cpu."""
+        seconds, dropped, cpu = self._ask(f"render {spp} {seed} {threads} {out or '-'}")
         if int(dropped):
             log(f"glossy: {dropped} non-finite samples dropped")
+        self.last_cpu = float(cpu)
         return float(seconds)
 
     def rays(self, spp, threads, runs):
@@ -116,12 +118,19 @@ def mitsuba_scene(out, size, max_depth, bsdf, sampler):
     })
 
 
+mitsuba_last_cpu = 0.0
+
+
 def mitsuba_render(scene, spp, seed):
+    """Wall seconds and the image; the process's CPU seconds over the render are left in mitsuba_last_cpu."""
+    global mitsuba_last_cpu
+    cpu = time.process_time()
     start = time.perf_counter()
     image = mi.render(scene, spp=spp, seed=seed)
     dr.eval(image)
     dr.sync_thread()
     seconds = time.perf_counter() - start
+    mitsuba_last_cpu = time.process_time() - cpu
     return seconds, np.array(image, dtype=np.float64)
 
 
@@ -262,20 +271,27 @@ def main():
     glossy.render(a.spp, 999, a.threads)
     jit_first, _ = mitsuba_render(mts, a.spp, 999)
     mitsuba_render(mts, a.spp, 998)
-    g_times, m_times = [], []
+    g_times, m_times, m_images, g_cpu, m_cpu = [], [], [], [], []
     for i in range(a.runs):
         order = ("g", "m") if i % 2 == 0 else ("m", "g")
         for who in order:
-            if who == "g":
-                g_times.append(glossy.render(a.spp, i, a.threads))
+            if who == "g":  # the EXR is written after the render call, outside the time it reports
+                g_times.append(glossy.render(a.spp, i, a.threads, out / f"equal-spp-glossy-{i}.exr"))
+                g_cpu.append(glossy.last_cpu)
             else:
-                m_times.append(mitsuba_render(mts, a.spp, i)[0])
+                seconds, img = mitsuba_render(mts, a.spp, i)
+                m_times.append(seconds)
+                m_cpu.append(mitsuba_last_cpu)
+                m_images.append(img)
     g_med, m_med = statistics.median(g_times), statistics.median(m_times)
     speed = {
         "spp": a.spp, "threads": a.threads, "runs": a.runs,
         "glossy_seconds": g_times, "mitsuba_seconds": m_times,
         "glossy_samples_per_s": N * a.spp / g_med, "mitsuba_samples_per_s": N * a.spp / m_med,
         "ratio_glossy_over_mitsuba": m_med / g_med, "mitsuba_first_render_seconds": jit_first,
+        "glossy_cpu_seconds": g_cpu, "mitsuba_cpu_seconds": m_cpu,
+        "glossy_samples_per_cpu_s": N * a.spp / statistics.median(g_cpu),
+        "mitsuba_samples_per_cpu_s": N * a.spp / statistics.median(m_cpu),
     }
     log(f"equal spp: glossy {g_med:.3f} s, mitsuba {m_med:.3f} s (median of {a.runs})")
 
@@ -333,6 +349,10 @@ def main():
     rms_ref = math.sqrt(np.mean(g_ref ** 2))
     g_ref_noise, m_ref_noise = noise_of_mean(*g_halves), noise_of_mean(*m_halves)
     agree = {"cook_torrance": agreement(g_ref, g_halves, m_ref, m_halves)}
+    speed["glossy_rmse_vs_glossy_ref"] = [rel_rmse(read_exr(out / f"equal-spp-glossy-{i}.exr"), g_ref)
+                                          for i in range(a.runs)]
+    speed["mitsuba_rmse_vs_glossy_ref"] = [rel_rmse(img, g_ref) for img in m_images]
+    del m_images
     # The grey Lambertian sphere under the same sky: the environment orientation check.
     gd = Glossy(build / "bench/glossy_compare", out / "diffuse.gltf", out / "sky.exr", a.size, a.max_depth)
     md = mitsuba_scene(out, a.size, a.max_depth, {"type": "diffuse", "reflectance": {"type": "rgb", "value": 0.5}},
@@ -395,6 +415,12 @@ def print_table(r):
     print(f"{'  seconds':44} {statistics.median(s['glossy_seconds']):12.3f} {statistics.median(s['mitsuba_seconds']):12.3f}")
     print(f"{'  samples/s':44} {s['glossy_samples_per_s']:12.4g} {s['mitsuba_samples_per_s']:12.4g}")
     print(f"{'  glossy / Mitsuba samples/s':44} {s['ratio_glossy_over_mitsuba']:12.3f}")
+    print(f"{'  samples per CPU second (all threads)':44} {s['glossy_samples_per_cpu_s']:12.4g} "
+          f"{s['mitsuba_samples_per_cpu_s']:12.4g}")
+    print(f"{'  glossy / Mitsuba samples per CPU second':44} "
+          f"{s['glossy_samples_per_cpu_s'] / s['mitsuba_samples_per_cpu_s']:12.3f}")
+    print(f"{'  rel. RMSE vs glossy converged':44} {statistics.median(s['glossy_rmse_vs_glossy_ref']):12.4f} "
+          f"{statistics.median(s['mitsuba_rmse_vs_glossy_ref']):12.4f}")
     print(f"{'  Mitsuba first render (JIT compile), s':44} {'':12} {s['mitsuba_first_render_seconds']:12.3f}")
     print(f"equal time ({eq['budget_seconds']:g} s budget, median of {len(eq['glossy']['seconds'])} seeds)")
     print(f"{'  spp':44} {eq['glossy_spp']:12d} {eq['mitsuba_spp']:12d}")
