@@ -3,77 +3,16 @@
 // For each scene the renderer runs once with a recorder that keeps every ray it casts. Rendering is
 // deterministic, so timed runs cast exactly those rays; replaying them through rtcIntersect1/rtcOccluded1
 // alone gives the raw rate for the same ray distribution, and the ratio is what shading costs.
+#include "bench/ray_replay.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/scene/material_binding.h"
 
 #include <CLI/CLI.hpp>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 
 using namespace glossy;
-
-namespace {
-
-struct RecordedRay {
-  RTCRay ray;
-  bool shadow;
-};
-
-class Recorder : public RayRecorder {
- public:
-  void record(const Ray& ray, bool shadow) override { local_.local().push_back({toRtcRay(ray), shadow}); }
-  std::vector<RecordedRay> take() {
-    std::vector<RecordedRay> all;
-    for (auto& v : local_) all.insert(all.end(), v.begin(), v.end());
-    return all;
-  }
-
- private:
-  tbb::enumerable_thread_specific<std::vector<RecordedRay>> local_;
-};
-
-template <class F>
-double medianSeconds(int runs, F&& f) {
-  std::vector<double> t;
-  for (int i = 0; i < runs; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    f();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
-
-double replaySeconds(const EmbreeScene& bvh, const std::vector<RecordedRay>& rays, int threads, int runs) {
-  tbb::task_arena arena(threads);
-  return medianSeconds(runs, [&] {
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
-        for (size_t i = r.begin(); i < r.end(); ++i) {
-          if (rays[i].shadow) {
-            RTCRay ray = rays[i].ray;
-            rtcOccluded1(bvh.handle(), &context, &ray);
-          } else {
-            RTCRayHit rh;
-            rh.ray = rays[i].ray;
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(bvh.handle(), &context, &rh);
-          }
-        }
-      });
-    });
-  });
-}
-
-}  // namespace
+using namespace glossy::bench;
 
 int main(int argc, char** argv) {
   CLI::App app{"glossy_bench: path-tracing throughput beside raw Embree throughput on the same rays"};

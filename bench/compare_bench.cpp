@@ -1,0 +1,136 @@
+// glossy_compare: glossy's side of the glossy-vs-Mitsuba benchmark (bench/mitsuba/compare.py drives it).
+//
+// It loads a glTF scene and a lat-long environment once (scene load and BVH build are never timed), then
+// answers commands on stdin, one line each, so the driver can interleave glossy's and Mitsuba's runs in one
+// invocation while neither pays a process start or a scene load per run:
+//
+//   render SPP SEED THREADS OUT     render; write the EXR to OUT unless OUT is "-"
+//                                   → "ok SECONDS DROPPED CPU_SECONDS"   (SECONDS: the render call's wall
+//                                   time; CPU_SECONDS: the process's CPU time over it, all threads)
+//   rays SPP THREADS RUNS           record every ray of one render, then time RUNS renders and RUNS replays
+//                                   of the recorded rays through raw Embree (each after a warm-up)
+//                                   → "ok RAYS SAMPLES PT_SECONDS RAW_SECONDS"   (medians)
+//   quit
+//
+// An error answers "error MESSAGE". `glossy_compare --write-sky FILE` writes glossy's built-in procedural
+// sky as a float EXR (the map both renderers load) and exits.
+#include "bench/ray_replay.h"
+#include "renderer/image/exr_image.h"
+#include "renderer/integrator/path_tracer.h"
+#include "renderer/lights/default_sky.h"
+#include "renderer/scene/material_binding.h"
+
+#include <CLI/CLI.hpp>
+
+#include <sys/resource.h>
+
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+using namespace glossy;
+using namespace glossy::bench;
+
+namespace {
+
+// User + system CPU time of the whole process (every thread), seconds.
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+int writeSky(const std::string& path) {
+  const LatLongImage sky = makeDefaultSky();
+  RgbImage image(sky.width, sky.height);
+  image.pixels = sky.rgb;
+  writeExr(path, image, {{"glossy:env", std::string("default sky (renderer/lights/default_sky.cpp)")}}, PixelType::Float);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"glossy_compare: glossy's side of bench/mitsuba/compare.py (commands on stdin; see the source)"};
+  std::string scenePath, envPath, skyOut;
+  int width = 256, height = 256, maxDepth = 3;
+  app.add_option("--scene", scenePath, "glTF scene (its first camera, its extras.glossy bindings)");
+  app.add_option("--env", envPath, "Lat-long environment map (.exr, .hdr)");
+  app.add_option("--width", width)->capture_default_str();
+  app.add_option("--height", height)->capture_default_str();
+  app.add_option("--max-depth", maxDepth, "Path segments at most (3 = one indirect bounce)")->capture_default_str();
+  app.add_option("--write-sky", skyOut, "Write the built-in procedural sky as an EXR and exit");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    if (!skyOut.empty()) return writeSky(skyOut);
+    if (scenePath.empty() || envPath.empty()) {
+      std::cerr << "glossy_compare: --scene and --env are required\n";
+      return 2;
+    }
+    const SceneDescription description = loadGltf(scenePath);
+    MaterialBinding binding = bindMaterials(description, std::nullopt);
+    const Environment environment = Environment::load(envPath);
+    EmbreeScene bvh(description);
+    const AreaLights lights(description);
+    const RenderScene scene{&description, &bvh, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, &environment, &lights};
+    const Camera& camera = description.cameras.at(0);
+    std::string bound;
+    for (const auto& b : binding.bindings) bound += (bound.empty() ? "" : "; ") + b;
+    std::cout << "ready " << (bound.empty() ? "scene base colours" : bound) << std::endl;
+
+    RenderSettings base;
+    base.width = width;
+    base.height = height;
+    base.maxDepth = maxDepth;
+    base.progress = false;
+
+    std::string line;
+    while (std::getline(std::cin, line)) {
+      std::istringstream in(line);
+      std::string command;
+      in >> command;
+      try {
+        if (command == "quit") break;
+        if (command == "render") {
+          RenderSettings settings = base;
+          std::string out;
+          if (!(in >> settings.spp >> settings.seed >> settings.threads >> out)) throw std::runtime_error("usage: render SPP SEED THREADS OUT");
+          RenderStats stats;
+          const double cpuStart = processCpuSeconds();
+          const RgbImage image = render(scene, camera, settings, stats);
+          const double cpu = processCpuSeconds() - cpuStart;
+          if (out != "-")
+            writeExr(out, image,
+                     {{"glossy:spp", settings.spp}, {"glossy:seed", int(settings.seed)}, {"glossy:maxDepth", maxDepth},
+                      {"glossy:renderSeconds", float(stats.seconds)}, {"glossy:scene", scenePath}, {"glossy:env", envPath}});
+          std::printf("ok %.9g %llu %.6g\n", stats.seconds, static_cast<unsigned long long>(stats.droppedSamples), cpu);
+        } else if (command == "rays") {
+          RenderSettings settings = base;
+          int runs = 5;
+          if (!(in >> settings.spp >> settings.threads >> runs) || runs < 1) throw std::runtime_error("usage: rays SPP THREADS RUNS");
+          RenderStats stats;
+          Recorder recorder;
+          bvh.setRecorder(&recorder);
+          render(scene, camera, settings, stats);
+          bvh.setRecorder(nullptr);
+          const std::vector<RecordedRay> rays = recorder.take();
+          render(scene, camera, settings, stats);  // warm-up
+          const double pt = medianSeconds(runs, [&] { render(scene, camera, settings, stats); });
+          const double raw = replaySeconds(bvh, rays, settings.threads, runs);
+          std::printf("ok %zu %.17g %.9g %.9g\n", rays.size(), double(width) * height * settings.spp, pt, raw);
+        } else {
+          throw std::runtime_error("unknown command '" + command + "'");
+        }
+      } catch (const std::exception& e) {
+        std::printf("error %s\n", e.what());
+      }
+      std::fflush(stdout);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "glossy_compare: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
