@@ -19,6 +19,15 @@ double clampUnit(double u) {
 
 }  // namespace
 
+namespace {
+// First CDF entry above u, minus one: cdf[i] ≤ u < cdf[i+1], which skips zero-width (zero-weight) bins.
+std::size_t searchBin(std::span<const double> cdf, double u) {
+  const auto above = std::upper_bound(cdf.begin(), cdf.end(), u);
+  const auto bin = std::size_t(std::max<std::ptrdiff_t>(above - cdf.begin() - 1, 0));
+  return std::min(bin, cdf.size() - 2);
+}
+}  // namespace
+
 Distribution1D::Distribution1D(std::span<const double> values) : values_(values.begin(), values.end()) {
   if (values_.empty()) throw std::invalid_argument("Distribution1D: no bins");
   for (double v : values_)
@@ -37,13 +46,22 @@ Distribution1D::Distribution1D(std::span<const double> values) : values_(values.
   }
   // Exactly 1 regardless of rounding in the sum, so any u < 1 finds a bin.
   cdf_[n] = 1.0;
+  guide_.resize(n);
+  for (std::size_t k = 0; k < n; ++k) guide_[k] = uint32_t(searchBin(cdf_, double(k) / double(n)));
 }
 
+
 std::size_t Distribution1D::binOf(double u) const {
-  // First CDF entry above u, minus one: cdf[i] ≤ u < cdf[i+1], which skips zero-width (zero-weight) bins.
-  const auto above = std::upper_bound(cdf_.begin(), cdf_.end(), u);
-  const auto bin = std::size_t(std::max<std::ptrdiff_t>(above - cdf_.begin() - 1, 0));
-  return std::min(bin, values_.size() - 1);
+  const std::size_t n = values_.size();
+  std::size_t k = std::min(std::size_t(u * double(n)), n - 1);
+  // u·n may round into a neighbouring guide cell; the cell must satisfy k/n ≤ u < (k+1)/n exactly.
+  while (k > 0 && double(k) / double(n) > u) --k;
+  while (k + 1 < n && double(k + 1) / double(n) <= u) ++k;
+  // The answer lies between this guide cell's first bin and the next cell's; a binary search there stays
+  // short even where many nearly empty bins share one cell (the dark part of a map with a bright sun).
+  const std::size_t lo = guide_[k], hi = k + 1 < n ? guide_[k + 1] : n - 1;
+  const auto above = std::upper_bound(cdf_.begin() + std::ptrdiff_t(lo) + 1, cdf_.begin() + std::ptrdiff_t(hi) + 1, u);
+  return std::size_t(above - cdf_.begin()) - 1;
 }
 
 double Distribution1D::density(std::size_t bin) const {

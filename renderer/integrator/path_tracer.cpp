@@ -53,9 +53,13 @@ class PathTracer {
       Hit hit;
       if (!scene_.bvh->intersect(ray, hit)) {
         if (scene_.environment) {
-          const Rgb le = scene_.environment->radiance(ray.dir);
-          const double w = bsdfPdf > 0.0 ? powerHeuristic(bsdfPdf, pEnvironment_ * scene_.environment->pdf(ray.dir)) : 1.0;
-          radiance += throughput * le * w;
+          if (bsdfPdf > 0.0) {
+            double pdfEnvironment;
+            const Rgb le = scene_.environment->radianceAndPdf(ray.dir, pdfEnvironment);
+            radiance += throughput * le * powerHeuristic(bsdfPdf, pEnvironment_ * pdfEnvironment);
+          } else {
+            radiance += throughput * scene_.environment->radiance(ray.dir);
+          }
         }
         break;
       }
@@ -131,9 +135,9 @@ class PathTracer {
   // One light sample, MIS-weighted against the BRDF's own sampling.
   Rgb sampleLight(const Vec3& p, const Vec3& ng, const Frame& frame, const Vec3& woLocal, const Brdf& brdf,
                   SobolSampler& sampler) const {
-    const double uChoice = sampler.get1D();
+    // The area-light choice and triangle are drawn only when there is a choice to make.
+    const double uChoice = pEnvironment_ > 0.0 && pEnvironment_ < 1.0 ? sampler.get1D() : 0.5;
     const Vec2 u = sampler.get2D();
-    const double uTriangle = sampler.get1D();
     Vec3 wi;
     Rgb le;
     double pdfLight;
@@ -146,7 +150,7 @@ class PathTracer {
       pdfLight = pEnvironment_ * es.pdf;
       shadow = Ray{offsetOrigin(p, ng, wi), wi, 0.0, 1e30};
     } else {
-      const AreaLights::Sample as = scene_.areaLights->sample(uTriangle, u);
+      const AreaLights::Sample as = scene_.areaLights->sample(sampler.get1D(), u);
       if (as.pdfArea <= 0.0) return Rgb(0.0);
       const Vec3 d = as.position - p;
       const double distance = glm::length(d);

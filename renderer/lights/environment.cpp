@@ -201,6 +201,18 @@ double Environment::pdf(const Vec3& dir) const {
   return env.distribution.pdf({s, uv.y}) / (2.0 * kPi * kPi * sinTheta);
 }
 
+Rgb Environment::radianceAndPdf(const Vec3& dir, double& pdf) const {
+  const Impl& env = *impl_;
+  if (env.isConstant) {
+    pdf = kInv4Pi;
+    return env.constantRadiance;
+  }
+  const Vec2 uv = env.mapUv(dir);
+  const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
+  pdf = sinTheta > 0.0 ? env.distribution.pdf({wrapUnit(uv.x - 0.5 / env.map.width), uv.y}) / (2.0 * kPi * kPi * sinTheta) : 0.0;
+  return env.map.lookup(uv);
+}
+
 const std::string& Environment::description() const { return impl_->description; }
 
 }  // namespace glossy

@@ -32,6 +32,8 @@ class Environment {
   Rgb radiance(const Vec3& dir) const;     // radiance arriving from direction dir
   Sample sample(Vec2 u) const;              // importance-sampled by sin θ-weighted luminance
   double pdf(const Vec3& dir) const;        // exactly the density sample() draws from
+  // Both at once, from one direction-to-map conversion (the path tracer's escaping rays need both).
+  Rgb radianceAndPdf(const Vec3& dir, double& pdf) const;
   const std::string& description() const;  // for image metadata: file name, "constant r,g,b", "default sky"
 
   Environment(Environment&&) noexcept;

@@ -78,7 +78,13 @@ class SobolSampler {
     return {toUnit(owenScramble(a, hash(s, 1))), toUnit(owenScramble(b, hash(s, 2)))};
   }
 
-  double get1D() { return get2D().x; }
+  // Exactly get2D().x, without computing the second coordinate.
+  double get1D() {
+    using namespace sobol_detail;
+    const uint32_t s = hash(pixelSeed_, dimension_++);
+    const uint32_t i = owenScramble(index_, hash(s, 0x9e3779b9u));
+    return toUnit(owenScramble(reverseBits(i), hash(s, 1)));
+  }
 
  private:
   uint32_t seed_;
