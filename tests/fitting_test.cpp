@@ -97,21 +97,6 @@ struct RoundTrip {
   Metric metric;
 };
 
-Fit makeFit(const char* model, const char* metric, std::initializer_list<std::pair<const char*, ParamSet::Value>> values) {
-  Fit f;
-  f.id = {model, metric};
-  for (const auto& [k, v] : values) f.params.set(k, v);
-  validateFit(f, "round trip");
-  return f;
-}
-
-// The half-width of the lobe: the f at which the lobe falls to half its peak (m, n, or the ABC (B, C)).
-double lobeWidth(const Fit& f) {
-  if (f.id.model == "cook-torrance") return f.params.scalar("m");
-  if (f.id.model == "ashikhmin-shirley") return 1.0 / std::sqrt(f.params.scalar("n"));
-  return std::sqrt(std::expm1(std::log(2.0) / f.params.scalar("c")) / f.params.scalar("b"));
-}
-
 class FitRoundTrip : public ::testing::TestWithParam<RoundTrip> {};
 
 TEST_P(FitRoundTrip, ReachesTheTrueParametersErrorWithKdAndTheLobeWidthWithinAFewPerCent) {

@@ -147,6 +147,21 @@ std::string tabulatedMerlBytes(const Brdf& brdf, const BinPredicate& unmeasured)
   });
 }
 
+Fit makeFit(const std::string& model, const std::string& metric,
+            const std::vector<std::pair<std::string, ParamSet::Value>>& values) {
+  Fit f;
+  f.id = {model, metric};
+  for (const auto& [k, v] : values) f.params.set(k, v);
+  validateFit(f, "round trip " + f.id.str());
+  return f;
+}
+
+double lobeWidth(const Fit& f) {
+  if (f.id.model == "cook-torrance") return f.params.scalar("m");
+  if (f.id.model == "ashikhmin-shirley") return 1.0 / std::sqrt(f.params.scalar("n"));
+  return std::sqrt(std::expm1(std::log(2.0) / f.params.scalar("c")) / f.params.scalar("b"));
+}
+
 std::shared_ptr<const MerlTable> tabulateMerl(const Brdf& brdf, const BinPredicate& unmeasured) {
   const std::string bytes = tabulatedMerlBytes(brdf, unmeasured);
   return std::make_shared<const MerlTable>(

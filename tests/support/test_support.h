@@ -5,6 +5,7 @@
 #include "materials/core/types.h"
 #include "materials/merl/merl_table.h"
 #include "materials/models/brdf.h"
+#include "materials/params/material_file.h"
 
 #include <gtest/gtest.h>
 
@@ -72,5 +73,12 @@ using BinPredicate = std::function<bool(int thetaH, int thetaD, int phiD)>;
 std::string tabulatedMerlBytes(const Brdf& brdf, const BinPredicate& unmeasured = {});
 // The same, parsed.
 std::shared_ptr<const MerlTable> tabulateMerl(const Brdf& brdf, const BinPredicate& unmeasured = {});
+
+// A validated fit of `model` under `metric` with the given parameter values (fitting round trips).
+Fit makeFit(const std::string& model, const std::string& metric,
+            const std::vector<std::pair<std::string, ParamSet::Value>>& values);
+// The lobe's width as the round trips judge it: m (CT), n^−½ (AS), or for the ABC models the half-width
+// sqrt((2^{1/C} − 1)/B) at which (1 + B f²)^(−C) falls to half its peak.
+double lobeWidth(const Fit& fit);
 
 }  // namespace glossy::test

@@ -18,20 +18,6 @@ struct Case {
   Fit truth;
 };
 
-Fit fitOf(const std::string& model, const std::string& metric, std::vector<std::pair<std::string, ParamSet::Value>> values) {
-  Fit f;
-  f.id = {model, metric};
-  for (auto& [k, v] : values) f.params.set(k, v);
-  validateFit(f, "sweep case");
-  return f;
-}
-
-double lobeWidth(const Fit& f) {
-  if (f.id.model == "cook-torrance") return f.params.scalar("m");
-  if (f.id.model == "ashikhmin-shirley") return 1.0 / std::sqrt(f.params.scalar("n"));
-  return std::sqrt(std::expm1(std::log(2.0) / f.params.scalar("c")) / f.params.scalar("b"));
-}
-
 std::vector<Case> cases() {
   std::vector<Case> out;
   const Rgb kd(0.12, 0.07, 0.03);
@@ -40,16 +26,16 @@ std::vector<Case> cases() {
       const std::string tag = std::string(metric) + (eta > 2 ? "_metal" : "_dielectric");
       for (double m : {0.4, 0.05, 0.006})
         out.push_back({"ct_m" + std::to_string(m).substr(0, 5) + "_" + tag,
-                       fitOf("cook-torrance", metric, {{"kd", kd}, {"ks", Rgb(0.3, 0.25, 0.2)}, {"m", m}, {"eta", eta}})});
+                       makeFit("cook-torrance", metric, {{"kd", kd}, {"ks", Rgb(0.3, 0.25, 0.2)}, {"m", m}, {"eta", eta}})});
       for (double n : {8.0, 800.0, 40000.0})
         out.push_back({"as_n" + std::to_string(int(n)) + "_" + tag,
-                       fitOf("ashikhmin-shirley", metric, {{"kd", kd}, {"ks", Rgb(0.5, 0.4, 0.3)}, {"n", n}, {"eta", eta}})});
+                       makeFit("ashikhmin-shirley", metric, {{"kd", kd}, {"ks", Rgb(0.5, 0.4, 0.3)}, {"n", n}, {"eta", eta}})});
       for (auto [b, c] : {std::pair{50.0, 1.8}, std::pair{5e3, 0.9}, std::pair{3e5, 0.6}}) {
         const Rgb a = Rgb(0.4, 0.3, 0.25) * std::sqrt(b) * 0.05;
         out.push_back({"microfacet_b" + std::to_string(int(b)) + "_" + tag,
-                       fitOf("microfacet", metric, {{"kd", kd}, {"a", a}, {"b", b}, {"c", c}, {"eta", eta}})});
+                       makeFit("microfacet", metric, {{"kd", kd}, {"a", a}, {"b", b}, {"c", c}, {"eta", eta}})});
         out.push_back({"smooth_b" + std::to_string(int(b)) + "_" + tag,
-                       fitOf("smooth", metric, {{"kd", kd}, {"a", a}, {"b", b}, {"c", c}, {"eta", eta}})});
+                       makeFit("smooth", metric, {{"kd", kd}, {"a", a}, {"b", b}, {"c", c}, {"eta", eta}})});
       }
     }
   }
