@@ -19,9 +19,6 @@ namespace {
 
 constexpr long kSamples = 1000000;
 
-std::shared_ptr<const MerlTable> tabulate(const Brdf& brdf, const BinPredicate& unmeasured = {}) {
-  return tabulateMerl(brdf, unmeasured);
-}
 
 const Brdf kGlossy = CookTorrance{Rgb(0.02), Rgb(0.6, 0.5, 0.4), 0.01, 1.8};
 const Brdf kBroad = AshikhminShirley{Rgb(0.3, 0.2, 0.1), Rgb(0.3), 30.0, 1.5};
@@ -34,12 +31,12 @@ struct SyntheticTable {
 
 const std::map<std::string, SyntheticTable>& syntheticTables() {
   static const std::map<std::string, SyntheticTable> tables = {
-      {"glossy_ct_m0_01", {"Cook-Torrance m = 0.01", [] { return tabulate(kGlossy); }}},
-      {"broad_as_n30", {"Ashikhmin-Shirley n = 30 + diffuse", [] { return tabulate(kBroad); }}},
+      {"glossy_ct_m0_01", {"Cook-Torrance m = 0.01", [] { return tabulateMerl(kGlossy); }}},
+      {"broad_as_n30", {"Ashikhmin-Shirley n = 30 + diffuse", [] { return tabulateMerl(kBroad); }}},
       // Unmeasured bins as MERL has them (grazing θ_d) and a band in the middle.
       {"lambertian_with_holes",
        {"Lambertian with unmeasured bins", [] {
-          return tabulate(kDiffuse, [](int h, int d, int) { return d >= 85 || (h >= 30 && h < 36); });
+          return tabulateMerl(kDiffuse, [](int h, int d, int) { return d >= 85 || (h >= 30 && h < 36); });
         }}},
   };
   return tables;
@@ -124,7 +121,7 @@ TEST(MeasuredChi2Power, RejectsATableSamplerBuiltFromSlightlyOtherDataOrMixedOth
   const Vec3 V = viewDirection(35.0 * kPi / 180.0);
   // Tables built from a lobe 5 % wider than the data.
   Measured wider = claimed;
-  wider.sampling = std::make_shared<const MerlSampling>(*tabulate(CookTorrance{Rgb(0.02), Rgb(0.6, 0.5, 0.4), 0.0105, 1.8}));
+  wider.sampling = std::make_shared<const MerlSampling>(*tabulateMerl(CookTorrance{Rgb(0.02), Rgb(0.6, 0.5, 0.4), 0.0105, 1.8}));
   // The cosine share 0.13 instead of 0.1.
   Measured remixed = claimed;
   remixed.cosineWeight = 0.13;
@@ -156,7 +153,7 @@ TEST(MeasuredSampling, TablesAreSmallAndPdfIsContinuousAcrossViewElevations) {
 
 TEST(MeasuredRender, ATableOfAnAnalyticFitRendersLikeTheFitWithinItsBinningError) {
   const Brdf fit = CookTorrance{Rgb(0.1, 0.08, 0.05), Rgb(0.8, 0.6, 0.4), 0.12, 1.6};
-  const Brdf table = Measured(tabulate(fit));
+  const Brdf table = Measured(tabulateMerl(fit));
   SceneDescription description;
   SceneMaterial object;
   object.name = "object";

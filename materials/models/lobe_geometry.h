@@ -6,9 +6,6 @@
 #include "materials/models/half_vector.h"
 #include "materials/models/vgroove.h"
 
-#include <algorithm>
-#include <cmath>
-
 namespace glossy {
 
 struct LobeGeometry {
@@ -16,14 +13,14 @@ struct LobeGeometry {
   HalfVector h;             // ⟨N,H⟩, 1 − ⟨N,H⟩, tan²θ_h, ⟨V,H⟩
   double g;                 // V-groove shadowing-masking
   double dp2;               // ‖L_p + V_p‖² (Smooth: deviation from the mirror direction)
-  double cosThetaDProjected;  // sqrt(1 − ¼‖L_p − V_p‖²) (Smooth's [convention] Fresnel cosine)
+  double dm2;               // ‖L_p − V_p‖² (Smooth's [convention] Fresnel cosine is sqrt(1 − ¼ dm2))
 
   // L_z > 0 and V_z > 0.
   LobeGeometry(const Vec3& L, const Vec3& V)
       : cosL(L.z), cosV(V.z), h(L, V), g(vgrooveG(h.cosTheta, L.z, V.z, h.cosVH)) {
     const double dx = L.x + V.x, dy = L.y + V.y, ex = L.x - V.x, ey = L.y - V.y;
     dp2 = dx * dx + dy * dy;
-    cosThetaDProjected = std::sqrt(std::max(0.0, 1.0 - 0.25 * (ex * ex + ey * ey)));
+    dm2 = ex * ex + ey * ey;
   }
 };
 

@@ -42,7 +42,7 @@ struct Smooth {
   template <class T>
   T lobe(const LobeGeometry& g, const T* shape) const {
     using std::exp, std::log1p;
-    const double cosThetaD = fresnelVH ? g.h.cosVH : g.cosThetaDProjected;
+    const double cosThetaD = fresnelVH ? g.h.cosVH : std::sqrt(std::max(0.0, 1.0 - 0.25 * g.dm2));
     return fresnelCookTorrance(cosThetaD, shape[2]) * exp(-shape[1] * log1p(shape[0] * g.dp2));
   }
 

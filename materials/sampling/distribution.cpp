@@ -17,9 +17,6 @@ double clampUnit(double u) {
   return u >= 0.0 ? std::min(u, kOneMinusEpsilon) : 0.0;
 }
 
-}  // namespace
-
-namespace {
 // First CDF entry above u, minus one: cdf[i] ≤ u < cdf[i+1], which skips zero-width (zero-weight) bins.
 std::size_t searchBin(std::span<const double> cdf, double u) {
   const auto above = std::upper_bound(cdf.begin(), cdf.end(), u);
@@ -49,7 +46,6 @@ Distribution1D::Distribution1D(std::span<const double> values) : values_(values.
   guide_.resize(n);
   for (std::size_t k = 0; k < n; ++k) guide_[k] = uint32_t(searchBin(cdf_, double(k) / double(n)));
 }
-
 
 std::size_t Distribution1D::binOf(double u) const {
   const std::size_t n = values_.size();

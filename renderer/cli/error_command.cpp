@@ -4,7 +4,8 @@
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/number_format.h"
+
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <iostream>
@@ -18,15 +19,6 @@ struct ErrorOptions {
   bool json = false;
 };
 
-std::string jsonString(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
 int runError(const ErrorOptions& o) {
   const MaterialFile material = loadMaterialFile(o.material);
   std::filesystem::path tablePath;
@@ -38,40 +30,32 @@ int runError(const ErrorOptions& o) {
 
   std::string out;
   if (o.json) {
-    out += "{\"material\": " + jsonString(material.name) + ", \"measured\": " + jsonString(tablePath.filename().string()) +
-           ", \"grid\": " + jsonString(MetricGrid::describe()) + ", \"validPairs\": " + std::to_string(e1.validPairs()) +
-           ", \"fits\": [";
+    nlohmann::json fits = nlohmann::json::array();
+    for (const Fit& fit : material.fits) {
+      const Brdf brdf = makeBrdf(fit);
+      nlohmann::json f = {{"fit", fit.id.str()}, {"E1", e1.error(brdf)}, {"E2", e2.error(brdf)}};
+      if (fit.error) f["stored"] = *fit.error;
+      fits.push_back(std::move(f));
+    }
+    const nlohmann::json doc = {{"material", material.name},     {"measured", tablePath.filename().string()},
+                                {"grid", MetricGrid::describe()}, {"validPairs", e1.validPairs()},
+                                {"fits", std::move(fits)}};
+    out = doc.dump() + "\n";
   } else {
-    char line[160];
+    char line[200];
     std::snprintf(line, sizeof line, "%s against %s (%zu of %zu grid pairs measured)\n", material.name.c_str(),
                   tablePath.filename().string().c_str(), e1.validPairs(), MetricGrid::kPairs);
     out += line;
     std::snprintf(line, sizeof line, "%-22s %12s %12s %12s\n", "fit", "E1", "E2", "stored");
     out += line;
-  }
-  bool first = true;
-  for (const Fit& fit : material.fits) {
-    const Brdf brdf = makeBrdf(fit);
-    const double a = e1.error(brdf), b = e2.error(brdf);
-    if (o.json) {
-      out += std::string(first ? "" : ", ") + "{\"fit\": " + jsonString(fit.id.str()) + ", \"E1\": ";
-      appendNumber(out, a);
-      out += ", \"E2\": ";
-      appendNumber(out, b);
-      if (fit.error) {
-        out += ", \"stored\": ";
-        appendNumber(out, *fit.error);
-      }
-      out += "}";
-    } else {
-      char line[160];
-      std::snprintf(line, sizeof line, "%-22s %12.6g %12.6g %12s\n", fit.id.str().c_str(), a, b,
-                    fit.error ? std::to_string(*fit.error).c_str() : "-");
+    for (const Fit& fit : material.fits) {
+      const Brdf brdf = makeBrdf(fit);
+      char stored[32] = "-";
+      if (fit.error) std::snprintf(stored, sizeof stored, "%.6g", *fit.error);
+      std::snprintf(line, sizeof line, "%-22s %12.6g %12.6g %12s\n", fit.id.str().c_str(), e1.error(brdf), e2.error(brdf), stored);
       out += line;
     }
-    first = false;
   }
-  if (o.json) out += "]}\n";
   std::fwrite(out.data(), 1, out.size(), stdout);
   return std::fflush(stdout) == 0 ? 0 : 1;
 }

@@ -101,6 +101,14 @@ struct Environment::Impl {
     return uv;
   }
 
+  // The solid-angle density of sample() at dir, whose map coordinates are uv.
+  double pdfAt(const Vec3& dir, Vec2 uv) const {
+    const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
+    if (!(sinTheta > 0.0)) return 0.0;
+    const double s = wrapUnit(uv.x - 0.5 / map.width);
+    return distribution.pdf({s, uv.y}) / (2.0 * kPi * kPi * sinTheta);
+  }
+
   void buildDistribution() {
     const int width = map.width, cells = map.height - 1;
     std::vector<double> rowLuminance(std::size_t(width) * map.height);
@@ -194,11 +202,7 @@ Environment::Sample Environment::sample(Vec2 u) const {
 double Environment::pdf(const Vec3& dir) const {
   const Impl& env = *impl_;
   if (env.isConstant) return kInv4Pi;
-  const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
-  if (!(sinTheta > 0.0)) return 0.0;
-  const Vec2 uv = env.mapUv(dir);
-  const double s = wrapUnit(uv.x - 0.5 / env.map.width);
-  return env.distribution.pdf({s, uv.y}) / (2.0 * kPi * kPi * sinTheta);
+  return env.pdfAt(dir, env.mapUv(dir));
 }
 
 Rgb Environment::radianceAndPdf(const Vec3& dir, double& pdf) const {
@@ -208,8 +212,7 @@ Rgb Environment::radianceAndPdf(const Vec3& dir, double& pdf) const {
     return env.constantRadiance;
   }
   const Vec2 uv = env.mapUv(dir);
-  const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
-  pdf = sinTheta > 0.0 ? env.distribution.pdf({wrapUnit(uv.x - 0.5 / env.map.width), uv.y}) / (2.0 * kPi * kPi * sinTheta) : 0.0;
+  pdf = env.pdfAt(dir, uv);
   return env.map.lookup(uv);
 }
 

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 namespace glossy {
@@ -130,6 +131,10 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
       sheet.objectMask[size_t(y) * w + x] = seen && (m < 0 || scene.isObject[size_t(m)]);
     }
 
+  // The BRDF-space errors beside the image-space ones: the same E1/E2 as `glossy error`.
+  std::optional<MetricData> e1, e2;
+  if (measured) e1.emplace(*measured, Metric::E1), e2.emplace(*measured, Metric::E2);
+
   for (const SheetPanel& panel : sheetPanels()) {
     PanelRender r;
     if (panel.fit.empty()) {
@@ -141,7 +146,9 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
         r.note = measuredNote;
       }
     } else if (const Fit* fit = material.find(FitId::parse(panel.fit, material.path.string()))) {
-      r = renderPanel(scene, panel, makeBrdf(*fit), settings);
+      const Brdf brdf = makeBrdf(*fit);
+      r = renderPanel(scene, panel, brdf, settings);
+      if (measured) r.brdfE1 = e1->error(brdf), r.brdfE2 = e2->error(brdf);
     } else {
       r.panel = panel;
       r.note = "no " + panel.fit + " fit in " + material.name;
@@ -151,19 +158,13 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
   }
 
   const PanelRender& ref = sheet.panels.front();
-  if (!ref.empty) {
-    // The BRDF-space errors beside the image-space ones: the same E1/E2 as `glossy error`.
-    const MetricData e1(*measured, Metric::E1), e2(*measured, Metric::E2);
+  if (!ref.empty)
     for (size_t k = 1; k < sheet.panels.size(); ++k) {
       PanelRender& p = sheet.panels[k];
       if (p.empty) continue;
       p.relativeRmse = relativeRmse(p.image, ref.image, sheet.objectMask);
       p.luminanceRatio = luminanceRatio(p.image, ref.image, sheet.objectMask);
-      const Brdf brdf = makeBrdf(*material.find(FitId::parse(p.panel.fit, material.path.string())));
-      p.brdfE1 = e1.error(brdf);
-      p.brdfE2 = e2.error(brdf);
     }
-  }
 
   sheet.grid = RgbImage(w * int(sheet.panels.size()), h);
   for (size_t k = 0; k < sheet.panels.size(); ++k)
