@@ -7,6 +7,47 @@
 
 namespace glossy::test {
 
+namespace {
+
+// The sampler's definition written out the slow, obvious way: Owen scramble = reverse, Laine-Karras,
+// reverse; dimension 1 = the generator matrix applied bit by bit.
+Vec2 definitionGet2D(uint32_t seed, uint32_t x, uint32_t y, uint32_t index, uint32_t dimension) {
+  using namespace sobol_detail;
+  auto reverse = [](uint32_t v) {
+    uint32_t r = 0;
+    for (int k = 0; k < 32; ++k) r |= ((v >> k) & 1u) << (31 - k);
+    return r;
+  };
+  auto owen = [&](uint32_t v, uint32_t s) { return reverse(laineKarras(reverse(v), s)); };
+  const uint32_t s = hash(hash(hash(x, y), seed), dimension);
+  const uint32_t i = owen(index, hash(s, 0x9e3779b9u));
+  uint32_t b = 0;
+  for (int k = 0; k < 32; ++k)
+    if (i >> k & 1u) b ^= kDim1[size_t(k)];
+  return {toUnit(owen(reverse(i), hash(s, 1))), toUnit(owen(b, hash(s, 2)))};
+}
+
+}  // namespace
+
+TEST(SobolSampler, FastPathEqualsTheDefinitionBitForBit) {
+  for (uint32_t seed : {0u, 7u, 0xdeadbeefu})
+    for (uint32_t pixel = 0; pixel < 20; ++pixel) {
+      const uint32_t x = pixel * 37u, y = pixel * 11u + 3u;
+      SobolSampler s(seed);
+      for (uint32_t index : {0u, 1u, 2u, 5u, 63u, 64u, 1000u, 123456u, 0xFFFFFFFFu}) {
+        s.startPixelSample(x, y, index);
+        for (uint32_t dim = 0; dim < 8; ++dim) {
+          const Vec2 expected = definitionGet2D(seed, x, y, index, dim);
+          if (dim % 3 == 2) {
+            ASSERT_EQ(s.get1D(), expected.x) << "seed " << seed << " index " << index << " dim " << dim;
+          } else {
+            ASSERT_EQ(s.get2D(), expected) << "seed " << seed << " index " << index << " dim " << dim;
+          }
+        }
+      }
+    }
+}
+
 TEST(SobolSampler, EveryPowerOfTwoPrefixIsAZeroTwoNet) {
   SobolSampler s(42);
   for (uint32_t log2n : {2u, 4u, 6u, 8u}) {

@@ -17,6 +17,27 @@ namespace glossy {
 
 namespace sobol_detail {
 
+constexpr uint32_t reverseBits(uint32_t x) {
+  x = __builtin_bswap32(x);
+  x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
+  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
+  return ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
+}
+
+// Burley's improved Laine-Karras permutation: each bit is flipped depending only on the bits below it.
+// Applied between two bit reversals it is a nested uniform (Owen) scramble, where each bit depends only on
+// the bits above it.
+constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
+  x ^= x * 0x3d20adeau;
+  x += seed;
+  x *= (seed >> 16) | 1u;
+  x ^= x * 0x05526c56u;
+  x ^= x * 0x53a22864u;
+  return x;
+}
+
+constexpr uint32_t owenScramble(uint32_t x, uint32_t seed) { return reverseBits(laineKarras(reverseBits(x), seed)); }
+
 // Generator matrix columns of the second Sobol' dimension (primitive polynomial x + 1): v_k = v_{k−1} ^ (v_{k−1} >> 1).
 constexpr std::array<uint32_t, 32> makeSecondDimension() {
   std::array<uint32_t, 32> v{};
@@ -26,24 +47,25 @@ constexpr std::array<uint32_t, 32> makeSecondDimension() {
 }
 inline constexpr std::array<uint32_t, 32> kDim1 = makeSecondDimension();
 
-inline uint32_t reverseBits(uint32_t x) {
-  x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
-  x = ((x >> 2) & 0x33333333u) | ((x & 0x33333333u) << 2);
-  x = ((x >> 4) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4);
-  x = ((x >> 8) & 0x00FF00FFu) | ((x & 0x00FF00FFu) << 8);
-  return (x >> 16) | (x << 16);
+// The second dimension is linear in the index's bits, and the Owen scramble wants it bit-reversed: so
+// reverse(Σ_k bit_k(i)·v_k) is tabulated a byte of i at a time (4 KB, L1-resident), replacing a loop
+// over all 32 bits of the scrambled index.
+constexpr std::array<std::array<uint32_t, 256>, 4> makeReversedSecondDimensionTables() {
+  std::array<std::array<uint32_t, 256>, 4> t{};
+  for (int byte = 0; byte < 4; ++byte)
+    for (uint32_t b = 0; b < 256; ++b) {
+      uint32_t sum = 0;
+      for (int k = 0; k < 8; ++k)
+        if (b >> k & 1u) sum ^= kDim1[size_t(8 * byte + k)];
+      t[size_t(byte)][b] = reverseBits(sum);
+    }
+  return t;
 }
+inline constexpr std::array<std::array<uint32_t, 256>, 4> kReversedDim1 = makeReversedSecondDimensionTables();
 
-// Burley's improved Laine-Karras permutation; applied to bit-reversed input it is a nested uniform
-// (Owen) scramble: each bit is flipped depending only on the bits above it.
-inline uint32_t owenScramble(uint32_t x, uint32_t seed) {
-  x = reverseBits(x);
-  x ^= x * 0x3d20adeau;
-  x += seed;
-  x *= (seed >> 16) | 1u;
-  x ^= x * 0x05526c56u;
-  x ^= x * 0x53a22864u;
-  return reverseBits(x);
+inline uint32_t reversedSecondDimension(uint32_t i) {
+  return kReversedDim1[0][i & 0xFFu] ^ kReversedDim1[1][(i >> 8) & 0xFFu] ^ kReversedDim1[2][(i >> 16) & 0xFFu] ^
+         kReversedDim1[3][i >> 24];
 }
 
 inline uint32_t hash(uint32_t a, uint32_t b) {  // murmur3-style mix of two words
@@ -68,22 +90,23 @@ class SobolSampler {
     dimension_ = 0;
   }
 
+  // With R = bit reversal and LK the Laine-Karras step, owenScramble(x) = R(LK(R(x))); the shuffled index
+  // is i = owenScramble(index), Sobol' dimension 0 of i is R(i) and dimension 1 is P·i (P: kDim1). Written
+  // out, R∘R cancels twice, and R(P·i) comes from the tables: four reversals instead of seven, no bit loop.
   Vec2 get2D() {
     using namespace sobol_detail;
     const uint32_t s = hash(pixelSeed_, dimension_++);
-    const uint32_t i = owenScramble(index_, hash(s, 0x9e3779b9u));
-    uint32_t a = reverseBits(i), b = 0;  // dimension 0 is the van der Corput sequence
-    for (uint32_t bits = i, k = 0; bits; bits >>= 1, ++k)
-      if (bits & 1u) b ^= kDim1[k];
-    return {toUnit(owenScramble(a, hash(s, 1))), toUnit(owenScramble(b, hash(s, 2)))};
+    const uint32_t i = reverseBits(laineKarras(reverseBits(index_), hash(s, 0x9e3779b9u)));
+    return {toUnit(reverseBits(laineKarras(i, hash(s, 1)))),
+            toUnit(reverseBits(laineKarras(reversedSecondDimension(i), hash(s, 2))))};
   }
 
   // Exactly get2D().x, without computing the second coordinate.
   double get1D() {
     using namespace sobol_detail;
     const uint32_t s = hash(pixelSeed_, dimension_++);
-    const uint32_t i = owenScramble(index_, hash(s, 0x9e3779b9u));
-    return toUnit(owenScramble(reverseBits(i), hash(s, 1)));
+    const uint32_t i = reverseBits(laineKarras(reverseBits(index_), hash(s, 0x9e3779b9u)));
+    return toUnit(reverseBits(laineKarras(i, hash(s, 1))));
   }
 
  private:
