@@ -8,8 +8,9 @@
 //                                   → "ok SECONDS DROPPED CPU_SECONDS"   (SECONDS: the render call's wall
 //                                   time; CPU_SECONDS: the process's CPU time over it, all threads)
 //   rays SPP THREADS RUNS           record every ray of one render, then time RUNS renders and RUNS replays
-//                                   of the recorded rays through raw Embree (each after a warm-up)
-//                                   → "ok RAYS SAMPLES PT_SECONDS RAW_SECONDS"   (medians)
+//                                   of the recorded rays through raw Embree (each after a warm-up), one ray
+//                                   at a time and in the render's own packets
+//                                   → "ok RAYS SAMPLES PT_SECONDS RAW_SECONDS RAW_PACKET_SECONDS" (medians)
 //   quit
 //
 // An error answers "error MESSAGE". `glossy_compare --write-sky FILE` writes glossy's built-in procedural
@@ -115,11 +116,12 @@ int main(int argc, char** argv) {
           bvh.setRecorder(&recorder);
           render(scene, camera, settings, stats);
           bvh.setRecorder(nullptr);
-          const std::vector<RecordedRay> rays = recorder.take();
+          const RecordedRays rays = recorder.take();
           render(scene, camera, settings, stats);  // warm-up
           const double pt = medianSeconds(runs, [&] { render(scene, camera, settings, stats); });
-          const double raw = replaySeconds(bvh, rays, settings.threads, runs);
-          std::printf("ok %zu %.17g %.9g %.9g\n", rays.size(), double(width) * height * settings.spp, pt, raw);
+          const double raw = replaySeconds(bvh, rays, Replay::OneRayAtATime, settings.threads, runs);
+          const double rawPackets = replaySeconds(bvh, rays, Replay::AsRecorded, settings.threads, runs);
+          std::printf("ok %zu %.17g %.9g %.9g %.9g\n", rays.rays, double(width) * height * settings.spp, pt, raw, rawPackets);
         } else {
           throw std::runtime_error("unknown command '" + command + "'");
         }

@@ -1,7 +1,8 @@
-// What the throughput benchmarks share: a recorder that keeps every ray a render casts, the median of
-// timed runs, and the replay of recorded rays through raw Embree (rtcIntersect1 / rtcOccluded1) alone.
-// Rendering is deterministic, so a timed render casts exactly the recorded rays: the replay's rate is
-// the raw Embree rate on the path tracer's own ray distribution.
+// What the throughput benchmarks share: a recorder that keeps every query a render makes, the median of
+// timed runs, and the replay of the recorded rays through raw Embree alone — either one ray at a time
+// (rtcIntersect1 / rtcOccluded1: Embree's basic rate on these rays) or grouped exactly as the path tracer
+// grouped them (rtcIntersect8 / rtcOccluded8 for its packets: the raw cost of its own calls). Rendering
+// is deterministic, so a timed render casts exactly the recorded rays.
 #pragma once
 
 #include "renderer/scene/embree_scene.h"
@@ -17,23 +18,56 @@
 
 namespace glossy::bench {
 
-struct RecordedRay {
-  RTCRay ray;
-  bool shadow;
+// One Embree call of the render: a single ray (lanes = 1, not a packet) or a packet of kPacketSize lanes.
+struct RecordedQuery {
+  RTCRay rays[kPacketSize];
+  bool valid[kPacketSize] = {};
+  bool packet = false;
+  bool shadow = false;
 };
+
+struct RecordedRays {
+  std::vector<RecordedQuery> queries;
+  size_t rays = 0;     // valid lanes over all queries
+  size_t packets = 0;  // queries that were packets
+};
+
+enum class Replay { OneRayAtATime, AsRecorded };
 
 class Recorder : public RayRecorder {
  public:
-  void record(const Ray& ray, bool shadow) override { local_.local().push_back({toRtcRay(ray), shadow}); }
-  std::vector<RecordedRay> take() {
-    std::vector<RecordedRay> all;
-    for (auto& v : local_) all.insert(all.end(), v.begin(), v.end());
+  void record(const Ray& ray, bool shadow) override {
+    RecordedQuery q;
+    q.rays[0] = toRtcRay(ray);
+    q.valid[0] = true;
+    q.shadow = shadow;
+    local_.local().push_back(q);
+  }
+  void recordPacket(const Ray* rays, const bool* valid, bool shadow) override {
+    RecordedQuery q;
+    q.packet = true;
+    q.shadow = shadow;
+    bool any = false;
+    for (int i = 0; i < kPacketSize; ++i)
+      if ((q.valid[i] = valid[i])) {
+        q.rays[i] = toRtcRay(rays[i]);
+        any = true;
+      }
+    if (any) local_.local().push_back(q);
+  }
+  RecordedRays take() {
+    RecordedRays all;
+    for (auto& v : local_) all.queries.insert(all.queries.end(), v.begin(), v.end());
     local_.clear();
+    for (const RecordedQuery& q : all.queries) {
+      all.rays += size_t(std::count(q.valid, q.valid + kPacketSize, true));
+      all.packets += q.packet ? 1 : 0;
+    }
     return all;
   }
 
  private:
-  tbb::enumerable_thread_specific<std::vector<RecordedRay>> local_;
+  tbb::enumerable_thread_specific<std::vector<RecordedQuery>> local_;
 };
 
 template <class F>
@@ -48,32 +82,74 @@ double medianSeconds(int runs, F&& f) {
   return t[t.size() / 2];
 }
 
-// One pass of every recorded ray through Embree, on `threads` threads.
-inline void replay(const EmbreeScene& bvh, const std::vector<RecordedRay>& rays, tbb::task_arena& arena) {
+namespace detail {
+
+inline void traceOne(RTCScene scene, RTCIntersectContext& context, const RTCRay& ray, bool shadow) {
+  if (shadow) {
+    RTCRay r = ray;
+    rtcOccluded1(scene, &context, &r);
+  } else {
+    RTCRayHit rh;
+    rh.ray = ray;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene, &context, &rh);
+  }
+}
+
+inline void tracePacket(RTCScene scene, RTCIntersectContext& context, const RecordedQuery& q) {
+  alignas(32) int mask[kPacketSize];
+  alignas(32) RTCRayHit8 packet;
+  for (int i = 0; i < kPacketSize; ++i) {
+    mask[i] = q.valid[i] ? -1 : 0;
+    packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    if (!q.valid[i]) continue;
+    const RTCRay& r = q.rays[i];
+    packet.ray.org_x[i] = r.org_x;
+    packet.ray.org_y[i] = r.org_y;
+    packet.ray.org_z[i] = r.org_z;
+    packet.ray.tnear[i] = r.tnear;
+    packet.ray.dir_x[i] = r.dir_x;
+    packet.ray.dir_y[i] = r.dir_y;
+    packet.ray.dir_z[i] = r.dir_z;
+    packet.ray.time[i] = r.time;
+    packet.ray.tfar[i] = r.tfar;
+    packet.ray.mask[i] = r.mask;
+    packet.ray.id[i] = r.id;
+    packet.ray.flags[i] = r.flags;
+  }
+  if (q.shadow)
+    rtcOccluded8(mask, scene, &context, &packet.ray);
+  else
+    rtcIntersect8(mask, scene, &context, &packet);
+}
+
+}  // namespace detail
+
+// One pass of every recorded query through Embree, on the arena's threads.
+inline void replay(const EmbreeScene& bvh, const RecordedRays& rays, Replay mode, tbb::task_arena& arena) {
   arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.queries.size(), 1024), [&](const tbb::blocked_range<size_t>& r) {
       RTCIntersectContext context;
       rtcInitIntersectContext(&context);
-      for (size_t i = r.begin(); i < r.end(); ++i) {
-        if (rays[i].shadow) {
-          RTCRay ray = rays[i].ray;
-          rtcOccluded1(bvh.handle(), &context, &ray);
+      for (size_t k = r.begin(); k < r.end(); ++k) {
+        const RecordedQuery& q = rays.queries[k];
+        if (q.packet && mode == Replay::AsRecorded) {
+          detail::tracePacket(bvh.handle(), context, q);
         } else {
-          RTCRayHit rh;
-          rh.ray = rays[i].ray;
-          rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-          rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-          rtcIntersect1(bvh.handle(), &context, &rh);
+          for (int i = 0; i < kPacketSize; ++i)
+            if (q.valid[i]) detail::traceOne(bvh.handle(), context, q.rays[i], q.shadow);
         }
       }
     });
   });
 }
 
-inline double replaySeconds(const EmbreeScene& bvh, const std::vector<RecordedRay>& rays, int threads, int runs) {
+inline double replaySeconds(const EmbreeScene& bvh, const RecordedRays& rays, Replay mode, int threads, int runs) {
   tbb::task_arena arena(threads);
-  replay(bvh, rays, arena);  // warm-up: threads started, rays and BVH in cache as far as they fit
-  return medianSeconds(runs, [&] { replay(bvh, rays, arena); });
+  replay(bvh, rays, mode, arena);  // warm-up: threads started, rays and BVH in cache as far as they fit
+  return medianSeconds(runs, [&] { replay(bvh, rays, mode, arena); });
 }
 
 }  // namespace glossy::bench

@@ -88,8 +88,8 @@ class Glossy:
         return float(seconds)
 
     def rays(self, spp, threads, runs):
-        rays, samples, pt, raw = self._ask(f"rays {spp} {threads} {runs}")
-        return int(rays), float(samples), float(pt), float(raw)
+        rays, samples, pt, raw, raw_packets = self._ask(f"rays {spp} {threads} {runs}")
+        return int(rays), float(samples), float(pt), float(raw), float(raw_packets)
 
     def close(self):
         try:
@@ -298,11 +298,15 @@ def main():
     # 3. Ray rates, 1 and 2 threads (also glossy's thread scaling).
     rays = {}
     for threads in (1, 2):
-        n_rays, samples, pt, raw = glossy.rays(a.ray_spp, threads, a.runs)
+        n_rays, samples, pt, raw, raw_packets = glossy.rays(a.ray_spp, threads, a.runs)
         rays[threads] = {"rays": n_rays, "samples": samples, "pt_seconds": pt, "raw_seconds": raw,
+                         "raw_packet_seconds": raw_packets,
                          "samples_per_s": samples / pt, "pt_rays_per_s": n_rays / pt,
-                         "raw_rays_per_s": n_rays / raw, "pt_over_raw": raw / pt, "rays_per_sample": n_rays / samples}
-        log(f"rays, {threads} thread(s): PT {n_rays / pt:.3g}/s, raw Embree {n_rays / raw:.3g}/s")
+                         "raw_rays_per_s": n_rays / raw, "pt_over_raw": raw / pt,
+                         "raw_packet_rays_per_s": n_rays / raw_packets, "pt_over_raw_packets": raw_packets / pt,
+                         "rays_per_sample": n_rays / samples}
+        log(f"rays, {threads} thread(s): PT {n_rays / pt:.3g}/s, raw Embree {n_rays / raw:.3g}/s one at a time, "
+            f"{n_rays / raw_packets:.3g}/s in glossy's packets")
     dr.set_thread_count(1)
     mitsuba_render(mts, a.ray_spp, 997)  # compile at this spp
     m1 = statistics.median(mitsuba_render(mts, a.ray_spp, 990 + k)[0] for k in range(3))
@@ -439,10 +443,10 @@ def print_table(r):
     print(f"{'  2 threads':44} {sc['glossy_2']:12.4g} {sc['mitsuba_2']:12.4g}")
     print(f"{'  scaling 1 -> 2':44} {sc['glossy_2'] / sc['glossy_1']:12.2f} {sc['mitsuba_2'] / sc['mitsuba_1']:12.2f}")
     print(f"glossy rays ({sc['spp']} spp render, {r['rays'][1]['rays_per_sample']:.2f} rays/sample): "
-          f"{'PT rays/s':>12} {'raw Embree':>12} {'PT/raw':>8}")
+          f"{'PT rays/s':>12} {'raw 1-ray':>12} {'PT/raw':>8} {'raw packets':>12} {'PT/raw':>8}")
     for t, v in r["rays"].items():
         print(f"{'  ' + str(t) + ' thread(s)':44} {v['pt_rays_per_s']:12.4g} {v['raw_rays_per_s']:12.4g} "
-              f"{100 * v['pt_over_raw']:7.1f}%")
+              f"{100 * v['pt_over_raw']:7.1f}% {v['raw_packet_rays_per_s']:12.4g} {100 * v['pt_over_raw_packets']:7.1f}%")
     print(f"agreement of the converged images (Cook-Torrance {r['reference']['spp']} spp each, grey diffuse "
           f"{r['reference']['check_spp']} spp each): rel. RMSE Mitsuba vs glossy [noise floor]")
     for name, g in r["agreement"].items():

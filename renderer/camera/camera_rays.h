@@ -13,21 +13,47 @@
 namespace glossy {
 
 // `film` is the position on the image in pixels: (0,0) its top-left corner, (width, height) bottom-right.
-inline Ray cameraRay(const Camera& camera, int width, int height, Vec2 film) {
-  const double sx = 2.0 * film.x / width - 1.0;   // −1 left … +1 right
-  const double sy = 1.0 - 2.0 * film.y / height;  // +1 top … −1 bottom
-  Ray ray;
-  if (camera.type == Camera::Type::Perspective) {
-    const double ty = std::tan(0.5 * camera.yfov), tx = ty * double(width) / double(height);
-    const glm::dvec4 d = camera.cameraToWorld * glm::dvec4(sx * tx, sy * ty, -1.0, 0.0);
-    ray.origin = Vec3(camera.cameraToWorld[3]);
-    ray.dir = glm::normalize(Vec3(d));
-  } else {
-    const glm::dvec4 o = camera.cameraToWorld * glm::dvec4(sx * camera.xmag, sy * camera.ymag, 0.0, 1.0);
-    ray.origin = Vec3(o);
-    ray.dir = glm::normalize(Vec3(camera.cameraToWorld * glm::dvec4(0.0, 0.0, -1.0, 0.0)));
+// Everything that does not depend on the film position is computed once, so a ray costs a matrix-vector
+// product and a normalisation.
+class CameraRays {
+ public:
+  CameraRays(const Camera& camera, int width, int height)
+      : perspective_(camera.type == Camera::Type::Perspective), cameraToWorld_(camera.cameraToWorld),
+        width_(width), height_(height) {
+    if (perspective_) {
+      halfExtent_.y = std::tan(0.5 * camera.yfov);
+      halfExtent_.x = halfExtent_.y * double(width) / double(height);
+      origin_ = Vec3(camera.cameraToWorld[3]);
+    } else {
+      halfExtent_ = {camera.xmag, camera.ymag};
+    }
+    forward_ = glm::normalize(Vec3(camera.cameraToWorld * glm::dvec4(0.0, 0.0, -1.0, 0.0)));
   }
-  return ray;
+
+  Ray operator()(Vec2 film) const {
+    const double sx = (2.0 * film.x / width_ - 1.0) * halfExtent_.x;   // −1 left … +1 right
+    const double sy = (1.0 - 2.0 * film.y / height_) * halfExtent_.y;  // +1 top … −1 bottom
+    Ray ray;
+    if (perspective_) {
+      ray.origin = origin_;
+      ray.dir = glm::normalize(Vec3(cameraToWorld_ * glm::dvec4(sx, sy, -1.0, 0.0)));
+    } else {
+      ray.origin = Vec3(cameraToWorld_ * glm::dvec4(sx, sy, 0.0, 1.0));
+      ray.dir = forward_;
+    }
+    return ray;
+  }
+
+ private:
+  bool perspective_;
+  glm::dmat4 cameraToWorld_;
+  int width_, height_;
+  Vec2 halfExtent_{0.0};
+  Vec3 origin_{0.0}, forward_{0.0};
+};
+
+inline Ray cameraRay(const Camera& camera, int width, int height, Vec2 film) {
+  return CameraRays(camera, width, height)(film);
 }
 
 }  // namespace glossy

@@ -46,74 +46,151 @@ class PathTracer {
     pEnvironment_ = env ? (area ? 0.5 : 1.0) : 0.0;
   }
 
-  Rgb trace(Ray ray, SobolSampler& sampler) const {
-    Rgb radiance(0.0), throughput(1.0);
-    double bsdfPdf = 0.0;  // solid-angle pdf of the BSDF sample that made `ray`; 0 for the camera ray
-    for (int depth = 1;; ++depth) {
-      Hit hit;
-      if (!scene_.bvh->intersect(ray, hit)) {
-        if (scene_.environment) {
-          if (bsdfPdf > 0.0) {
-            double pdfEnvironment;
-            const Rgb le = scene_.environment->radianceAndPdf(ray.dir, pdfEnvironment);
-            radiance += throughput * le * powerHeuristic(bsdfPdf, pEnvironment_ * pdfEnvironment);
-          } else {
-            radiance += throughput * scene_.environment->radiance(ray.dir);
-          }
-        }
-        break;
-      }
-      const Vec3 wo = -ray.dir;
-      const SceneMaterial* material = materialOf(hit.mesh);
-      if (material && material->isEmissive()) {
-        // Emitters are black bodies: they shine from their front face and reflect nothing.
-        if (glm::dot(wo, hit.geometricNormal) > 0.0) {
-          double w = 1.0;
-          if (bsdfPdf > 0.0) {
-            const double cosLight = glm::dot(wo, hit.geometricNormal);
-            const double pdfLight = (1.0 - pEnvironment_) * scene_.areaLights->pdfArea() * hit.t * hit.t / cosLight;
-            w = powerHeuristic(bsdfPdf, pdfLight);
-          }
-          radiance += throughput * material->emission * w;
-        }
-        break;
-      }
-      if (depth >= settings_.maxDepth) break;
-
-      // Two-sided shading: face the normals toward the viewer. A shading normal that still faces away
-      // would let light through the surface, so fall back to the geometric one there.
-      Vec3 ng = hit.geometricNormal, ns = hit.shadingNormal;
-      if (glm::dot(wo, ng) < 0.0) {
-        ng = -ng;
-        ns = -ns;
-      }
-      if (glm::dot(wo, ns) <= 0.0) ns = ng;
-      const Frame frame(ns);
-      const Vec3 woLocal = frame.toLocal(wo);
-      if (woLocal.z <= 0.0) break;
-      const Brdf& brdf = scene_.brdfOf(hit.mesh);
-
-      radiance += throughput * sampleLight(hit.position, ng, frame, woLocal, brdf, sampler);
-
-      const double uLobe = sampler.get1D();
-      const BrdfSample s = sampleBrdf(brdf, woLocal, uLobe, sampler.get2D());
-      if (!s.valid()) break;
-      const Vec3 wi = frame.toWorld(s.L);
-      if (glm::dot(wi, ng) <= 0.0) break;  // below the geometric surface: no leaking through it
-      throughput *= s.weight;
-      bsdfPdf = s.pdf;
-
-      if (depth >= settings_.rouletteDepth) {
-        const double survive = std::min(0.95, maxComponent(throughput));
-        if (sampler.get1D() >= survive) break;
-        throughput /= survive;
-      }
-      ray = Ray{offsetOrigin(hit.position, ng, wi), wi, 0.0, 1e30};
+  // The paths of up to kPacketSize samples, traced together. Each segment's rays go to Embree as one
+  // packet query, each vertex's shadow rays as another, and the environment is looked up and sampled for
+  // all lanes at once, so that the lanes' cache misses in the map overlap instead of queueing. Every lane
+  // has its own sampler and draws exactly what a lone path would (the same dimensions in the same order),
+  // so the image does not depend on how samples are grouped.
+  void tracePacket(Ray* rays, SobolSampler* samplers, bool* alive, Rgb* radiance) const {
+    Rgb throughput[kPacketSize];
+    double bsdfPdf[kPacketSize];  // solid-angle pdf of the BSDF sample that made the ray; 0 for camera rays
+    for (int i = 0; i < kPacketSize; ++i) {
+      radiance[i] = Rgb(0.0);
+      throughput[i] = Rgb(1.0);
+      bsdfPdf[i] = 0.0;
     }
-    return radiance;
+    Hit hits[kPacketSize];
+    bool found[kPacketSize], escaped[kPacketSize], shading[kPacketSize], toEnvironment[kPacketSize];
+    ShadingPoint points[kPacketSize];
+    Vec2 uLight[kPacketSize];
+    double uChoice[kPacketSize];
+    Environment::Sample lightSamples[kPacketSize];
+    Rgb skyRadiance[kPacketSize];
+    double skyPdf[kPacketSize];
+    Ray shadows[kPacketSize];
+    bool shadowed[kPacketSize], occluded[kPacketSize];
+    Rgb unoccluded[kPacketSize];  // what each shadow ray brings if it reaches its light
+
+    for (int depth = 1;; ++depth) {
+      if (std::none_of(alive, alive + kPacketSize, [](bool a) { return a; })) break;
+      scene_.bvh->intersect(alive, rays, hits, found);
+
+      // Rays that left the scene see the environment, MIS-weighted unless they are camera rays.
+      for (int i = 0; i < kPacketSize; ++i) escaped[i] = alive[i] && !found[i] && scene_.environment;
+      environmentRadiance(escaped, rays, bsdfPdf, skyRadiance, skyPdf);
+      for (int i = 0; i < kPacketSize; ++i) {
+        if (escaped[i])
+          radiance[i] += throughput[i] * skyRadiance[i] *
+                         (bsdfPdf[i] > 0.0 ? powerHeuristic(bsdfPdf[i], pEnvironment_ * skyPdf[i]) : 1.0);
+        shading[i] = alive[i] && found[i] && surface(depth, rays[i], hits[i], throughput[i], bsdfPdf[i], radiance[i], points[i]);
+        alive[i] = shading[i];
+        shadowed[i] = false;
+        if (!shading[i]) continue;
+        // The area-light choice and triangle are drawn only when there is a choice to make.
+        uChoice[i] = pEnvironment_ > 0.0 && pEnvironment_ < 1.0 ? samplers[i].get1D() : 0.5;
+        uLight[i] = samplers[i].get2D();
+        toEnvironment[i] = uChoice[i] < pEnvironment_;
+      }
+      environmentSamples(toEnvironment, shading, uLight, lightSamples);
+      for (int i = 0; i < kPacketSize; ++i) {
+        if (!shading[i]) continue;
+        const ShadingPoint& sp = points[i];
+        shadowed[i] = toEnvironment[i] ? lightFromEnvironment(sp, lightSamples[i], shadows[i], unoccluded[i])
+                                       : lightFromArea(sp, samplers[i].get1D(), uLight[i], shadows[i], unoccluded[i]);
+        if (shadowed[i]) unoccluded[i] *= throughput[i];
+        alive[i] = continuePath(depth, sp, samplers[i], throughput[i], bsdfPdf[i], rays[i]);
+      }
+      scene_.bvh->occluded(shadowed, shadows, occluded);
+      for (int i = 0; i < kPacketSize; ++i)
+        if (shadowed[i] && !occluded[i]) radiance[i] += unoccluded[i];
+    }
   }
 
  private:
+  // Where a path meets a reflecting surface: what its light sample and BSDF sample need.
+  struct ShadingPoint {
+    Vec3 position{0.0}, ng{0.0};  // ng faces the viewer
+    Frame frame{Vec3(0.0, 0.0, 1.0)};
+    Vec3 woLocal{0.0};
+    const Brdf* brdf = nullptr;
+  };
+
+  // The radiance (and, for BSDF-sampled rays, the light-sampling pdf) of the environment for the lanes
+  // that want it.
+  void environmentRadiance(const bool* want, const Ray* rays, const double* bsdfPdf, Rgb* radiance, double* pdf) const {
+    for (int i = 0; i < kPacketSize; ++i) {
+      if (!want[i]) continue;
+      if (bsdfPdf[i] > 0.0)
+        radiance[i] = scene_.environment->radianceAndPdf(rays[i].dir, pdf[i]);
+      else
+        radiance[i] = scene_.environment->radiance(rays[i].dir);
+    }
+  }
+
+  void environmentSamples(const bool* toEnvironment, const bool* shading, const Vec2* u, Environment::Sample* out) const {
+    for (int i = 0; i < kPacketSize; ++i)
+      if (shading[i] && toEnvironment[i]) out[i] = scene_.environment->sample(u[i]);
+  }
+
+  // The ray's hit: its emission if it is a light (ending the path), else the shading point. False ends
+  // the path.
+  bool surface(int depth, const Ray& ray, const Hit& hit, const Rgb& throughput, double bsdfPdf, Rgb& radiance,
+               ShadingPoint& sp) const {
+    const Vec3 wo = -ray.dir;
+    const SceneMaterial* material = materialOf(hit.mesh);
+    if (material && material->isEmissive()) {
+      // Emitters are black bodies: they shine from their front face and reflect nothing.
+      if (glm::dot(wo, hit.geometricNormal) > 0.0) {
+        double w = 1.0;
+        if (bsdfPdf > 0.0) {
+          const double cosLight = glm::dot(wo, hit.geometricNormal);
+          const double pdfLight = (1.0 - pEnvironment_) * scene_.areaLights->pdfArea() * hit.t * hit.t / cosLight;
+          w = powerHeuristic(bsdfPdf, pdfLight);
+        }
+        radiance += throughput * material->emission * w;
+      }
+      return false;
+    }
+    if (depth >= settings_.maxDepth) return false;
+
+    // Two-sided shading: face the normals toward the viewer. A shading normal that still faces away
+    // would let light through the surface, so fall back to the geometric one there.
+    Vec3 ng = hit.geometricNormal, ns = hit.shadingNormal;
+    if (glm::dot(wo, ng) < 0.0) {
+      ng = -ng;
+      ns = -ns;
+    }
+    if (glm::dot(wo, ns) <= 0.0) ns = ng;
+    sp.position = hit.position;
+    sp.ng = ng;
+    sp.frame = Frame(ns);
+    sp.woLocal = sp.frame.toLocal(wo);
+    if (sp.woLocal.z <= 0.0) return false;
+    sp.brdf = &scene_.brdfOf(hit.mesh);
+    return true;
+  }
+
+  // The BSDF sample that continues the path: the next ray, the throughput and pdf it carries. False ends
+  // the path.
+  bool continuePath(int depth, const ShadingPoint& sp, SobolSampler& sampler, Rgb& throughput, double& bsdfPdf,
+                    Ray& ray) const {
+    const double uLobe = sampler.get1D();
+    const BrdfSample s = sampleBrdf(*sp.brdf, sp.woLocal, uLobe, sampler.get2D());
+    if (!s.valid()) return false;
+    const Vec3 wi = sp.frame.toWorld(s.L);
+    if (glm::dot(wi, sp.ng) <= 0.0) return false;  // below the geometric surface: no leaking through it
+    throughput *= s.weight;
+    bsdfPdf = s.pdf;
+
+    if (depth >= settings_.rouletteDepth) {
+      const double survive = std::min(0.95, maxComponent(throughput));
+      if (sampler.get1D() >= survive) return false;
+      throughput /= survive;
+    }
+    ray = Ray{offsetOrigin(sp.position, sp.ng, wi), wi, 0.0, 1e30};
+    return true;
+  }
+
   BrdfSample sampleBrdf(const Brdf& brdf, const Vec3& wo, double uLobe, Vec2 u) const {
     if (!settings_.cosineBrdfSampling) return sample(brdf, wo, uLobe, u);
     BrdfSample s;
@@ -132,49 +209,44 @@ class PathTracer {
     return m < 0 ? nullptr : &scene_.description->materials[size_t(m)];
   }
 
-  // One light sample, MIS-weighted against the BRDF's own sampling.
-  Rgb sampleLight(const Vec3& p, const Vec3& ng, const Frame& frame, const Vec3& woLocal, const Brdf& brdf,
-                  SobolSampler& sampler) const {
-    // The area-light choice and triangle are drawn only when there is a choice to make.
-    const double uChoice = pEnvironment_ > 0.0 && pEnvironment_ < 1.0 ? sampler.get1D() : 0.5;
-    const Vec2 u = sampler.get2D();
-    Vec3 wi;
-    Rgb le;
-    double pdfLight;
-    Ray shadow;
-    if (uChoice < pEnvironment_) {
-      const Environment::Sample es = scene_.environment->sample(u);
-      if (es.pdf <= 0.0) return Rgb(0.0);
-      wi = es.dir;
-      le = es.radiance;
-      pdfLight = pEnvironment_ * es.pdf;
-      shadow = Ray{offsetOrigin(p, ng, wi), wi, 0.0, 1e30};
-    } else {
-      const AreaLights::Sample as = scene_.areaLights->sample(sampler.get1D(), u);
-      if (as.pdfArea <= 0.0) return Rgb(0.0);
-      const Vec3 d = as.position - p;
-      const double distance = glm::length(d);
-      if (!(distance > 0.0)) return Rgb(0.0);
-      wi = d / distance;
-      const double cosLight = -glm::dot(wi, as.normal);
-      if (cosLight <= 0.0) return Rgb(0.0);
-      le = as.radiance;
-      pdfLight = (1.0 - pEnvironment_) * as.pdfArea * distance * distance / cosLight;
-      // The segment from the offset origin to the light, stopping short of the light's own surface by the
-      // same margin the origin was moved by.
-      const Vec3 origin = offsetOrigin(p, ng, wi);
-      const Vec3 toLight = as.position - origin;
-      const double length = glm::length(toLight);
-      shadow = Ray{origin, toLight / length, 0.0, length - glm::length(origin - p)};
-    }
-    if (glm::dot(wi, ng) <= 0.0) return Rgb(0.0);
-    const Vec3 wiLocal = frame.toLocal(wi);
-    if (wiLocal.z <= 0.0) return Rgb(0.0);
-    const Rgb f = eval(brdf, wiLocal, woLocal);
-    if (maxComponent(f) <= 0.0) return Rgb(0.0);
-    if (shadow.tfar <= 0.0 || scene_.bvh->occluded(shadow)) return Rgb(0.0);
-    const double w = powerHeuristic(pdfLight, pdfBrdf(brdf, wiLocal, woLocal));
-    return f * le * (wiLocal.z * w / pdfLight);
+  // A light sample, MIS-weighted against the BRDF's own sampling: the shadow ray to trace and what it
+  // brings (before the path's throughput) if nothing blocks it. False when there is nothing to trace.
+  bool lightFromEnvironment(const ShadingPoint& sp, const Environment::Sample& es, Ray& shadow, Rgb& contribution) const {
+    if (es.pdf <= 0.0) return false;
+    shadow = Ray{offsetOrigin(sp.position, sp.ng, es.dir), es.dir, 0.0, 1e30};
+    return lightContribution(sp, es.dir, es.radiance, pEnvironment_ * es.pdf, shadow, contribution);
+  }
+
+  bool lightFromArea(const ShadingPoint& sp, double uTriangle, Vec2 u, Ray& shadow, Rgb& contribution) const {
+    const AreaLights::Sample as = scene_.areaLights->sample(uTriangle, u);
+    if (as.pdfArea <= 0.0) return false;
+    const Vec3 d = as.position - sp.position;
+    const double distance = glm::length(d);
+    if (!(distance > 0.0)) return false;
+    const Vec3 wi = d / distance;
+    const double cosLight = -glm::dot(wi, as.normal);
+    if (cosLight <= 0.0) return false;
+    const double pdfLight = (1.0 - pEnvironment_) * as.pdfArea * distance * distance / cosLight;
+    // The segment from the offset origin to the light, stopping short of the light's own surface by the
+    // same margin the origin was moved by.
+    const Vec3 origin = offsetOrigin(sp.position, sp.ng, wi);
+    const Vec3 toLight = as.position - origin;
+    const double length = glm::length(toLight);
+    shadow = Ray{origin, toLight / length, 0.0, length - glm::length(origin - sp.position)};
+    return lightContribution(sp, wi, as.radiance, pdfLight, shadow, contribution);
+  }
+
+  bool lightContribution(const ShadingPoint& sp, const Vec3& wi, const Rgb& le, double pdfLight, const Ray& shadow,
+                         Rgb& contribution) const {
+    if (glm::dot(wi, sp.ng) <= 0.0) return false;
+    const Vec3 wiLocal = sp.frame.toLocal(wi);
+    if (wiLocal.z <= 0.0) return false;
+    const Rgb f = eval(*sp.brdf, wiLocal, sp.woLocal);
+    if (maxComponent(f) <= 0.0) return false;
+    if (shadow.tfar <= 0.0) return false;
+    const double w = powerHeuristic(pdfLight, pdfBrdf(*sp.brdf, wiLocal, sp.woLocal));
+    contribution = f * le * (wiLocal.z * w / pdfLight);
+    return true;
   }
 
   const RenderScene& scene_;
@@ -193,22 +265,35 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
   Progress progress("render", size_t(tilesX) * size_t(tilesY));
   if (!settings.progress) progress.finish();
 
+  const CameraRays cameraRays(camera, settings.width, settings.height);
   auto renderTiles = [&](const tbb::blocked_range2d<int>& tiles) {
-    SobolSampler sampler(settings.seed);
     uint64_t localDropped = 0;
+    SobolSampler samplers[kPacketSize];
+    Ray rays[kPacketSize];
+    bool alive[kPacketSize];
+    Rgb radiance[kPacketSize];
     for (int ty = tiles.rows().begin(); ty < tiles.rows().end(); ++ty)
       for (int tx = tiles.cols().begin(); tx < tiles.cols().end(); ++tx) {
         for (int y = ty * kTile; y < std::min(settings.height, (ty + 1) * kTile); ++y)
           for (int x = tx * kTile; x < std::min(settings.width, (tx + 1) * kTile); ++x) {
+            // A pixel's samples, kPacketSize at a time: their rays are as coherent as rays get.
             Rgb sum(0.0);
-            for (int i = 0; i < settings.spp; ++i) {
-              sampler.startPixelSample(uint32_t(x), uint32_t(y), uint32_t(settings.firstSample + i));
-              const Vec2 jitter = sampler.get2D();
-              const Rgb l = tracer.trace(cameraRay(camera, settings.width, settings.height, Vec2(x, y) + jitter), sampler);
-              if (isFinite(l))
-                sum += l;
-              else
-                ++localDropped;
+            for (int first = 0; first < settings.spp; first += kPacketSize) {
+              const int lanes = std::min(kPacketSize, settings.spp - first);
+              for (int i = 0; i < kPacketSize; ++i) {
+                alive[i] = i < lanes;
+                if (!alive[i]) continue;
+                samplers[i] = SobolSampler(settings.seed);
+                samplers[i].startPixelSample(uint32_t(x), uint32_t(y), uint32_t(settings.firstSample + first + i));
+                rays[i] = cameraRays(Vec2(x, y) + samplers[i].get2D());
+              }
+              tracer.tracePacket(rays, samplers, alive, radiance);
+              for (int i = 0; i < lanes; ++i) {
+                if (isFinite(radiance[i]))
+                  sum += radiance[i];
+                else
+                  ++localDropped;
+              }
             }
             const Rgb mean = sum / double(std::max(1, settings.spp));
             float* px = image.at(x, y);

@@ -82,6 +82,7 @@ inline double toUnit(uint32_t x) { return x * 0x1p-32; }  // in [0, 1): never 1
 
 class SobolSampler {
  public:
+  SobolSampler() = default;
   explicit SobolSampler(uint32_t seed) : seed_(seed) {}
 
   void startPixelSample(uint32_t x, uint32_t y, uint32_t sampleIndex) {
@@ -110,7 +111,7 @@ class SobolSampler {
   }
 
  private:
-  uint32_t seed_;
+  uint32_t seed_ = 0;
   uint32_t pixelSeed_ = 0;
   uint32_t index_ = 0;
   uint32_t dimension_ = 0;

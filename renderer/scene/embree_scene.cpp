@@ -140,8 +140,12 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
   hit.triangle = rayHit.hit.primID;
   hit.u = rayHit.hit.u;
   hit.v = rayHit.hit.v;
-  hit.position = ray.origin + hit.t * ray.dir;
+  completeHit(ray, hit);
+  return true;
+}
 
+void EmbreeScene::completeHit(const Ray& ray, Hit& hit) const {
+  hit.position = ray.origin + hit.t * ray.dir;
   const Mesh& mesh = scene_.meshes[hit.mesh];
   const uint32_t* corner = &mesh.indices[3 * size_t(hit.triangle)];
   const Vec3 p0(mesh.positions[corner[0]]), p1(mesh.positions[corner[1]]), p2(mesh.positions[corner[2]]);
@@ -153,7 +157,82 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
     const double len = glm::length(n);
     if (len > 1e-12 && std::isfinite(len)) hit.shadingNormal = n / len;
   }
-  return true;
+}
+
+namespace {
+
+// Packets are laid out as Embree's SoA structures; a lane is written field by field.
+void setLane(RTCRay8& packet, int lane, const Ray& ray) {
+  const RTCRay r = toRtcRay(ray);
+  packet.org_x[lane] = r.org_x;
+  packet.org_y[lane] = r.org_y;
+  packet.org_z[lane] = r.org_z;
+  packet.tnear[lane] = r.tnear;
+  packet.dir_x[lane] = r.dir_x;
+  packet.dir_y[lane] = r.dir_y;
+  packet.dir_z[lane] = r.dir_z;
+  packet.time[lane] = 0.0f;
+  packet.tfar[lane] = r.tfar;
+  packet.mask[lane] = ~0u;
+  packet.id[lane] = 0;
+  packet.flags[lane] = 0;
+}
+
+}  // namespace
+
+void EmbreeScene::intersect(const bool* valid, const Ray* rays, Hit* hits, bool* found) const {
+  if (recorder_) [[unlikely]]
+    recorder_->recordPacket(rays, valid, false);
+  alignas(32) int mask[kPacketSize];
+  alignas(32) RTCRayHit8 packet;
+  bool any = false;
+  for (int i = 0; i < kPacketSize; ++i) {
+    mask[i] = valid[i] ? -1 : 0;
+    packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    if (!valid[i]) continue;
+    any = true;
+    setLane(packet.ray, i, rays[i]);
+  }
+  if (!any) return;
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcIntersect8(mask, rtcScene_, &context, &packet);
+  for (int i = 0; i < kPacketSize; ++i) {
+    if (!valid[i]) continue;
+    found[i] = packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
+    if (!found[i]) continue;
+    Hit& hit = hits[i];
+    hit.t = packet.ray.tfar[i];
+    hit.mesh = packet.hit.geomID[i];
+    hit.triangle = packet.hit.primID[i];
+    hit.u = packet.hit.u[i];
+    hit.v = packet.hit.v[i];
+    completeHit(rays[i], hit);
+  }
+}
+
+void EmbreeScene::occluded(const bool* valid, const Ray* rays, bool* occluded) const {
+  alignas(32) int mask[kPacketSize];
+  alignas(32) RTCRay8 packet;
+  bool traced[kPacketSize], any = false;
+  for (int i = 0; i < kPacketSize; ++i) {
+    // The same empty-segment rule as the one-ray query.
+    traced[i] = valid[i] && rays[i].tfar >= rays[i].tnear;
+    mask[i] = traced[i] ? -1 : 0;
+    if (valid[i]) occluded[i] = false;
+    if (!traced[i]) continue;
+    any = true;
+    setLane(packet, i, rays[i]);
+  }
+  if (!any) return;
+  if (recorder_) [[unlikely]]
+    recorder_->recordPacket(rays, traced, true);
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  rtcOccluded8(mask, rtcScene_, &context, &packet);
+  for (int i = 0; i < kPacketSize; ++i)
+    if (traced[i]) occluded[i] = packet.tfar[i] == -std::numeric_limits<float>::infinity();
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {

@@ -27,12 +27,18 @@ struct Hit {
 // The Embree form of a ray (float; tfar beyond float range becomes +∞).
 RTCRay toRtcRay(const Ray& ray);
 
+// Lanes of a packet query: Embree's native 8-wide packets (AVX2), which trace coherent rays (a pixel's
+// samples, their glossy reflections, their shadow rays toward the same light) faster than one at a time.
+inline constexpr int kPacketSize = 8;
+
 // Sees every query an EmbreeScene answers; the benchmark uses it to replay the renderer's exact ray
 // distribution through raw Embree. Must be thread-safe.
 class RayRecorder {
  public:
   virtual ~RayRecorder() = default;
   virtual void record(const Ray& ray, bool shadow) = 0;
+  // A packet query: the rays of the lanes with valid[i], as one call.
+  virtual void recordPacket(const Ray* rays, const bool* valid, bool shadow) = 0;
 };
 
 class EmbreeScene {
@@ -44,6 +50,9 @@ class EmbreeScene {
 
   bool intersect(const Ray& ray, Hit& hit) const;  // closest hit within [tnear, tfar]
   bool occluded(const Ray& ray) const;             // any hit within [tnear, tfar]
+  // The same for kPacketSize rays at once; lanes with valid[i] false are neither traced nor written.
+  void intersect(const bool* valid, const Ray* rays, Hit* hits, bool* found) const;
+  void occluded(const bool* valid, const Ray* rays, bool* occluded) const;
   // Bounding sphere of all geometry (for placing the environment's sampling and default cameras).
   Vec3 boundsCenter() const { return center_; }
   double boundsRadius() const { return radius_; }
@@ -53,6 +62,8 @@ class EmbreeScene {
 
  private:
   void throwIfEmbreeFailed(const char* doing) const;
+  // Hit geometry in double from the mesh, given Embree's t, primitive and barycentrics.
+  void completeHit(const Ray& ray, Hit& hit) const;
   void release();
 
   const SceneDescription& scene_;
