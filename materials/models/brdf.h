@@ -5,6 +5,7 @@
 //   Rgb M::eval(L, V)                       ρ(L, V), 0 unless L_z > 0 and V_z > 0
 //   BrdfSample M::sample(V, uLobe, u)       a direction L drawn from M's sampling density given V
 //   double M::pdf(L, V)                     exactly that density, in solid angle
+//   BrdfValue M::evalPdf(L, V)              optional: both at once, where they share work
 #pragma once
 
 #include "materials/models/ashikhmin_shirley.h"
@@ -29,6 +30,10 @@ inline BrdfSample sample(const Brdf& brdf, const Vec3& V, double uLobe, Vec2 u) 
 }
 inline double pdf(const Brdf& brdf, const Vec3& L, const Vec3& V) {
   return std::visit([&](const auto& m) { return m.pdf(L, V); }, brdf);
+}
+// {eval, pdf} at once, for the models that share work between the two (the same values).
+inline BrdfValue evalPdf(const Brdf& brdf, const Vec3& L, const Vec3& V) {
+  return std::visit([&](const auto& m) { return evalWithPdf(m, L, V); }, brdf);
 }
 
 // A measured BRDF that also proposes directions from an analytic lobe (its fit), with mixture weight q.

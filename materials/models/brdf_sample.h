@@ -18,6 +18,13 @@ struct BrdfSample {
   bool valid() const { return pdf > 0.0; }
 };
 
+// ρ(L, V) and the sampling density at L together: where both are needed (a light sample's MIS weight, a
+// BSDF sample's weight) a model computes what they share once.
+struct BrdfValue {
+  Rgb f{0.0};
+  double pdf = 0.0;
+};
+
 template <class Model>
 BrdfSample sampleCosineLobe(const Model& model, const Vec3& V, Vec2 u) {
   BrdfSample s;
@@ -45,11 +52,25 @@ inline double lobeProbability(double specularAlbedo, const Rgb& kd) {
 // The mixture sampler. Model provides eval(L, V), specularProbability(), sampleLobe(V, u, L) (false when
 // the lobe gives no direction) and lobePdf(L, V) (solid angle, exactly what sampleLobe draws from).
 // A direction below the horizon is an invalid sample; the pdf is not renormalised for it.
+// The mixture's density from its specular lobe's density at L (for L.z > 0).
+inline double mixtureDensity(double pSpecular, double lobePdf, const Vec3& L) {
+  return (pSpecular > 0.0 ? pSpecular * lobePdf : 0.0) + (pSpecular < 1.0 ? (1.0 - pSpecular) * L.z * kInvPi : 0.0);
+}
+
 template <class Model>
 double mixturePdf(const Model& model, const Vec3& L, const Vec3& V) {
   if (V.z <= 0.0 || L.z <= 0.0) return 0.0;
   const double p = model.specularProbability();
-  return (p > 0.0 ? p * model.lobePdf(L, V) : 0.0) + (p < 1.0 ? (1.0 - p) * L.z * kInvPi : 0.0);
+  return mixtureDensity(p, p > 0.0 ? model.lobePdf(L, V) : 0.0, L);
+}
+
+// A model's evalPdf(L, V) where it has one, else eval and pdf separately (same values either way).
+template <class Model>
+BrdfValue evalWithPdf(const Model& model, const Vec3& L, const Vec3& V) {
+  if constexpr (requires { model.evalPdf(L, V); })
+    return model.evalPdf(L, V);
+  else
+    return {model.eval(L, V), model.pdf(L, V)};
 }
 
 template <class Model>
@@ -62,9 +83,10 @@ BrdfSample sampleMixture(const Model& model, const Vec3& V, double uLobe, Vec2 u
     s.L = squareToCosineHemisphere(u);
   }
   if (s.L.z <= 0.0) return {};
-  s.pdf = mixturePdf(model, s.L, V);
+  const BrdfValue value = evalWithPdf(model, s.L, V);
+  s.pdf = value.pdf;
   if (!(s.pdf > 0.0) || !std::isfinite(s.pdf)) return {};
-  s.weight = model.eval(s.L, V) * (s.L.z / s.pdf);
+  s.weight = value.f * (s.L.z / s.pdf);
   return s;
 }
 

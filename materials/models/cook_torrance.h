@@ -59,14 +59,29 @@ struct CookTorrance {
     const double sec = std::sqrt(1.0 + tan2);  // 1 − cos θ = tan² / (sec (sec + 1)), no cancellation
     return reflectAboutHalfVector(V, tan2 / (sec * (sec + 1.0)), 2.0 * kPi * u.y, L);
   }
+  // pdf_L = pdf_h / (4⟨V,H⟩), given beckmann = exp(−tan²θ_h / m²).
+  double lobePdf(const HalfVector& h, double beckmann) const {
+    if (h.cosVH <= 0.0) return 0.0;
+    return beckmann / (kPi * (m * m) * h.cosTheta * h.cosTheta * h.cosTheta * 4.0 * h.cosVH);
+  }
   double lobePdf(const Vec3& L, const Vec3& V) const {
     const HalfVector h(L, V);
-    if (h.cosVH <= 0.0) return 0.0;
-    const double m2 = m * m;
-    return std::exp(-h.tan2Theta / m2) / (kPi * m2 * h.cosTheta * h.cosTheta * h.cosTheta * 4.0 * h.cosVH);
+    return lobePdf(h, std::exp(-h.tan2Theta / (m * m)));
   }
   BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
   double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
+
+  // eval and pdf with one half vector and one exponential between them; the same values as each alone.
+  BrdfValue evalPdf(const Vec3& L, const Vec3& V) const {
+    if (L.z <= 0.0 || V.z <= 0.0) return {};
+    const LobeGeometry g(L, V);
+    const double m2 = m * m, cos2 = g.h.cosTheta * g.h.cosTheta;
+    const double beckmann = std::exp(-g.h.tan2Theta / m2);
+    const double specular = beckmann / (m2 * (cos2 * cos2)) * fresnelCookTorrance(g.h.cosVH, eta) *
+                            (g.g / (kPi * g.cosL * g.cosV));
+    const double p = specularProbability();
+    return {kd * kInvPi + ks * specular, mixtureDensity(p, p > 0.0 ? lobePdf(g.h, beckmann) : 0.0, L)};
+  }
 };
 
 }  // namespace glossy

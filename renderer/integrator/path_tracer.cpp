@@ -200,8 +200,9 @@ class PathTracer {
     s.weight = eval(brdf, s.L, wo) * kPi;
     return s;
   }
-  double pdfBrdf(const Brdf& brdf, const Vec3& wi, const Vec3& wo) const {
-    return settings_.cosineBrdfSampling ? cosineHemispherePdf(wi) : pdf(brdf, wi, wo);
+  BrdfValue evalBrdf(const Brdf& brdf, const Vec3& wi, const Vec3& wo) const {
+    if (settings_.cosineBrdfSampling) return {eval(brdf, wi, wo), cosineHemispherePdf(wi)};
+    return evalPdf(brdf, wi, wo);
   }
 
   const SceneMaterial* materialOf(uint32_t mesh) const {
@@ -241,11 +242,11 @@ class PathTracer {
     if (glm::dot(wi, sp.ng) <= 0.0) return false;
     const Vec3 wiLocal = sp.frame.toLocal(wi);
     if (wiLocal.z <= 0.0) return false;
-    const Rgb f = eval(*sp.brdf, wiLocal, sp.woLocal);
-    if (maxComponent(f) <= 0.0) return false;
     if (shadow.tfar <= 0.0) return false;
-    const double w = powerHeuristic(pdfLight, pdfBrdf(*sp.brdf, wiLocal, sp.woLocal));
-    contribution = f * le * (wiLocal.z * w / pdfLight);
+    const BrdfValue value = evalBrdf(*sp.brdf, wiLocal, sp.woLocal);
+    if (maxComponent(value.f) <= 0.0) return false;
+    const double w = powerHeuristic(pdfLight, value.pdf);
+    contribution = value.f * le * (wiLocal.z * w / pdfLight);
     return true;
   }
 
