@@ -33,10 +33,10 @@ TEST(SobolSampler, FastPathEqualsTheDefinitionBitForBit) {
   for (uint32_t seed : {0u, 7u, 0xdeadbeefu})
     for (uint32_t pixel = 0; pixel < 20; ++pixel) {
       const uint32_t x = pixel * 37u, y = pixel * 11u + 3u;
-      SobolSampler s(seed);
+      SobolPixel p(seed, x, y);
       for (uint32_t index : {0u, 1u, 2u, 5u, 63u, 64u, 1000u, 123456u, 0xFFFFFFFFu}) {
-        s.startPixelSample(x, y, index);
-        for (uint32_t dim = 0; dim < 8; ++dim) {
+        SobolSampler s(p, index);
+        for (uint32_t dim = 0; dim < 40; ++dim) {  // beyond the 32 dimensions whose seeds are cached
           const Vec2 expected = definitionGet2D(seed, x, y, index, dim);
           if (dim % 3 == 2) {
             ASSERT_EQ(s.get1D(), expected.x) << "seed " << seed << " index " << index << " dim " << dim;
@@ -49,7 +49,7 @@ TEST(SobolSampler, FastPathEqualsTheDefinitionBitForBit) {
 }
 
 TEST(SobolSampler, EveryPowerOfTwoPrefixIsAZeroTwoNet) {
-  SobolSampler s(42);
+  SobolPixel p(42, 3, 7);
   for (uint32_t log2n : {2u, 4u, 6u, 8u}) {
     const uint32_t n = 1u << log2n;
     for (uint32_t dim = 0; dim < 4; ++dim) {
@@ -58,7 +58,7 @@ TEST(SobolSampler, EveryPowerOfTwoPrefixIsAZeroTwoNet) {
         const uint32_t cols = 1u << a, rows = n / cols;
         std::set<uint32_t> boxes;
         for (uint32_t i = 0; i < n; ++i) {
-          s.startPixelSample(3, 7, i);
+          SobolSampler s(p, i);
           Vec2 u;
           for (uint32_t d = 0; d <= dim; ++d) u = s.get2D();
           boxes.insert(uint32_t(u.x * cols) * rows + uint32_t(u.y * rows));
@@ -70,25 +70,23 @@ TEST(SobolSampler, EveryPowerOfTwoPrefixIsAZeroTwoNet) {
 }
 
 TEST(SobolSampler, DeterministicAndDecorrelatedAcrossPixelsAndDimensions) {
-  SobolSampler a(1), b(1), c(2);
-  a.startPixelSample(10, 20, 5);
-  b.startPixelSample(10, 20, 5);
-  c.startPixelSample(10, 20, 5);
+  SobolPixel pa(1, 10, 20), pb(1, 10, 20), pc(2, 10, 20), pd(1, 11, 20);
+  SobolSampler a(pa, 5), b(pb, 5), c(pc, 5), d(pd, 5), a2(pa, 5);
   const Vec2 a0 = a.get2D(), a1 = a.get2D();
   EXPECT_EQ(a0, b.get2D());
   EXPECT_EQ(a1, b.get2D());
+  EXPECT_EQ(a0, a2.get2D()) << "a second sample of the same pixel and index reuses the seeds to the same values";
   EXPECT_NE(a0, c.get2D()) << "the seed changes the points";
   EXPECT_NE(a0, a1) << "dimension pairs are scrambled independently";
-  b.startPixelSample(11, 20, 5);
-  EXPECT_NE(a0, b.get2D()) << "neighbouring pixels are decorrelated";
+  EXPECT_NE(a0, d.get2D()) << "neighbouring pixels are decorrelated";
 }
 
 TEST(SobolSampler, ValuesStayInTheHalfOpenUnitSquareAndAverageToAHalf) {
-  SobolSampler s(9);
+  SobolPixel p(9, 0, 0);
   double sum = 0.0;
   const int n = 1 << 14;
   for (int i = 0; i < n; ++i) {
-    s.startPixelSample(0, 0, uint32_t(i));
+    SobolSampler s(p, uint32_t(i));
     const Vec2 u = s.get2D();
     ASSERT_GE(u.x, 0.0);
     ASSERT_LT(u.x, 1.0);

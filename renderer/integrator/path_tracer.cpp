@@ -279,13 +279,13 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
           for (int x = tx * kTile; x < std::min(settings.width, (tx + 1) * kTile); ++x) {
             // A pixel's samples, kPacketSize at a time: their rays are as coherent as rays get.
             Rgb sum(0.0);
+            SobolPixel pixel(settings.seed, uint32_t(x), uint32_t(y));
             for (int first = 0; first < settings.spp; first += kPacketSize) {
               const int lanes = std::min(kPacketSize, settings.spp - first);
               for (int i = 0; i < kPacketSize; ++i) {
                 alive[i] = i < lanes;
                 if (!alive[i]) continue;
-                samplers[i] = SobolSampler(settings.seed);
-                samplers[i].startPixelSample(uint32_t(x), uint32_t(y), uint32_t(settings.firstSample + first + i));
+                samplers[i] = SobolSampler(pixel, uint32_t(settings.firstSample + first + i));
                 rays[i] = cameraRays(Vec2(x, y) + samplers[i].get2D());
               }
               tracer.tracePacket(rays, samplers, alive, radiance);

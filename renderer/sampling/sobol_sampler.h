@@ -80,40 +80,68 @@ inline double toUnit(uint32_t x) { return x * 0x1p-32; }  // in [0, 1): never 1
 
 }  // namespace sobol_detail
 
+// The scramble seeds of one pixel's dimensions. A pixel's samples differ only in their index, so the
+// samples traced together share one SobolPixel: the first to reach a dimension hashes its seeds, the
+// others reuse them.
+class SobolPixel {
+ public:
+  struct Seeds {
+    uint32_t index, x, y;  // of the index shuffle and of the two coordinates' scrambles
+  };
+
+  SobolPixel(uint32_t seed, uint32_t x, uint32_t y) : pixelSeed_(sobol_detail::hash(sobol_detail::hash(x, y), seed)) {}
+
+  Seeds seeds(uint32_t dimension) {
+    if (dimension >= kCached) return compute(dimension);
+    if (!(known_ >> dimension & 1u)) {
+      cache_[dimension] = compute(dimension);
+      known_ |= 1u << dimension;
+    }
+    return cache_[dimension];
+  }
+
+ private:
+  static constexpr uint32_t kCached = 32;
+  Seeds compute(uint32_t dimension) const {
+    using sobol_detail::hash;
+    const uint32_t s = hash(pixelSeed_, dimension);
+    return {hash(s, 0x9e3779b9u), hash(s, 1), hash(s, 2)};
+  }
+
+  uint32_t pixelSeed_;
+  uint32_t known_ = 0;  // bit d: cache_[d] is filled
+  std::array<Seeds, kCached> cache_;
+};
+
+// One sample of a pixel: its 2D and 1D values, dimension after dimension.
 class SobolSampler {
  public:
   SobolSampler() = default;
-  explicit SobolSampler(uint32_t seed) : seed_(seed) {}
-
-  void startPixelSample(uint32_t x, uint32_t y, uint32_t sampleIndex) {
-    pixelSeed_ = sobol_detail::hash(sobol_detail::hash(x, y), seed_);
-    index_ = sampleIndex;
-    dimension_ = 0;
-  }
+  SobolSampler(SobolPixel& pixel, uint32_t sampleIndex)
+      : pixel_(&pixel), reversedIndex_(sobol_detail::reverseBits(sampleIndex)) {}
 
   // With R = bit reversal and LK the Laine-Karras step, owenScramble(x) = R(LK(R(x))); the shuffled index
   // is i = owenScramble(index), Sobol' dimension 0 of i is R(i) and dimension 1 is P·i (P: kDim1). Written
   // out, R∘R cancels twice, and R(P·i) comes from the tables: four reversals instead of seven, no bit loop.
   Vec2 get2D() {
     using namespace sobol_detail;
-    const uint32_t s = hash(pixelSeed_, dimension_++);
-    const uint32_t i = reverseBits(laineKarras(reverseBits(index_), hash(s, 0x9e3779b9u)));
-    return {toUnit(reverseBits(laineKarras(i, hash(s, 1)))),
-            toUnit(reverseBits(laineKarras(reversedSecondDimension(i), hash(s, 2))))};
+    const SobolPixel::Seeds seeds = pixel_->seeds(dimension_++);
+    const uint32_t i = reverseBits(laineKarras(reversedIndex_, seeds.index));
+    return {toUnit(reverseBits(laineKarras(i, seeds.x))),
+            toUnit(reverseBits(laineKarras(reversedSecondDimension(i), seeds.y)))};
   }
 
   // Exactly get2D().x, without computing the second coordinate.
   double get1D() {
     using namespace sobol_detail;
-    const uint32_t s = hash(pixelSeed_, dimension_++);
-    const uint32_t i = reverseBits(laineKarras(reverseBits(index_), hash(s, 0x9e3779b9u)));
-    return toUnit(reverseBits(laineKarras(i, hash(s, 1))));
+    const SobolPixel::Seeds seeds = pixel_->seeds(dimension_++);
+    const uint32_t i = reverseBits(laineKarras(reversedIndex_, seeds.index));
+    return toUnit(reverseBits(laineKarras(i, seeds.x)));
   }
 
  private:
-  uint32_t seed_ = 0;
-  uint32_t pixelSeed_ = 0;
-  uint32_t index_ = 0;
+  SobolPixel* pixel_ = nullptr;
+  uint32_t reversedIndex_ = 0;
   uint32_t dimension_ = 0;
 };
 
