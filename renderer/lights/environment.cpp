@@ -87,12 +87,13 @@ struct Environment::Impl {
   bool isConstant = false;
   Rgb constantRadiance{0.0};
 
-  LatLongImage map;
+  LatLongMap map;
   // Rotation about +Y by α shifts every feature's u by −α/(2π) (φ ↦ φ − α for a right-handed turn):
   // the map is looked up at u_world + uOffset.
   double uOffset = 0.0;
   // Over (s, v) with s = u_map − ½/W: its cells are the bilinear patches between adjacent texel centres,
-  // W × (H − 1) of them, so each cell's value can bound the interpolated function exactly.
+  // W × (H − 1) of them, so each cell's value can bound the interpolated function exactly. Cell (i, j) is
+  // patch (i, j) of the map.
   Distribution2D distribution;
 
   Vec2 mapUv(const Vec3& dir) const {
@@ -101,20 +102,24 @@ struct Environment::Impl {
     return uv;
   }
 
-  // The solid-angle density of sample() at dir, whose map coordinates are uv.
+  // The solid-angle density of sample() at dir, whose map coordinates are uv: Distribution2D::pdf at
+  // (s, v).
   double pdfAt(const Vec3& dir, Vec2 uv) const {
     const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
     if (!(sinTheta > 0.0)) return 0.0;
-    const double s = wrapUnit(uv.x - 0.5 / map.width);
-    return distribution.pdf({s, uv.y}) / (2.0 * kPi * kPi * sinTheta);
+    const int width = map.width(), cells = map.height() - 1;
+    const double s = wrapUnit(uv.x - 0.5 / width);
+    if (!(uv.y >= 0.0 && uv.y <= 1.0)) return 0.0;
+    const int column = std::min(int(s * width), width - 1), row = std::min(int(uv.y * cells), cells - 1);
+    return distribution.cellDensity(std::size_t(column), std::size_t(row)) / (2.0 * kPi * kPi * sinTheta);
   }
 
-  void buildDistribution() {
-    const int width = map.width, cells = map.height - 1;
-    std::vector<double> rowLuminance(std::size_t(width) * map.height);
-    for (int row = 0; row < map.height; ++row)
+  void buildDistribution(const LatLongImage& image) {
+    const int width = image.width, cells = image.height - 1;
+    std::vector<double> rowLuminance(std::size_t(width) * image.height);
+    for (int row = 0; row < image.height; ++row)
       for (int column = 0; column < width; ++column)
-        rowLuminance[std::size_t(row) * width + column] = luminance(map.texel(column, row));
+        rowLuminance[std::size_t(row) * width + column] = luminance(image.texel(column, row));
 
     std::vector<double> weights(std::size_t(width) * cells);
     for (int cell = 0; cell < cells; ++cell) {
@@ -132,14 +137,14 @@ struct Environment::Impl {
       }
     }
     distribution = Distribution2D(weights, std::size_t(width), std::size_t(cells));
+    map = LatLongMap(image);
   }
 
-  static std::unique_ptr<Impl> fromMap(LatLongImage map, double rotateDegrees, std::string description) {
+  static std::unique_ptr<Impl> fromMap(const LatLongImage& image, double rotateDegrees, std::string description) {
     auto impl = std::make_unique<Impl>();
     impl->description = withRotation(std::move(description), rotateDegrees);
-    impl->map = std::move(map);
     impl->uOffset = wrapUnit(rotateDegrees / 360.0);
-    impl->buildDistribution();
+    impl->buildDistribution(image);
     return impl;
   }
 };
@@ -193,10 +198,15 @@ Environment::Sample Environment::sample(Vec2 u) const {
   // At a pole the lat-long Jacobian vanishes and the solid-angle density is unbounded: no usable sample.
   if (cell.pdf <= 0.0 || sinTheta <= 0.0) return {};
 
-  const double uMap = wrapUnit(cell.point.x + 0.5 / env.map.width);
+  const int width = env.map.width();
+  const double uMap = wrapUnit(cell.point.x + 0.5 / width);
   const double phi = 2.0 * kPi * wrapUnit(uMap - env.uOffset);
   const Vec3 dir(sinTheta * std::sin(phi), std::cos(kPi * v), -sinTheta * std::cos(phi));
-  return {dir, env.map.lookup({uMap, v}), cell.pdf / (2.0 * kPi * kPi * sinTheta)};
+  // The lookup at (uMap, v) lies in this very patch: x = uMap·W − ½ = s·W.
+  const int column = int(cell.column);
+  const LatLongPosition at{column, column + 1 == width ? 0 : column + 1, int(cell.row),
+                           cell.point.x * width - double(column), v * (env.map.height() - 1) - double(cell.row)};
+  return {dir, env.map.interpolate(at), cell.pdf / (2.0 * kPi * kPi * sinTheta)};
 }
 
 double Environment::pdf(const Vec3& dir) const {

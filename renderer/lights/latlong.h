@@ -5,6 +5,7 @@
 #pragma once
 
 #include "materials/core/types.h"
+#include "materials/sampling/huge_pages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -50,22 +51,61 @@ struct LatLongImage {
   }
 
   // Bilinear lookup at (u, v) in [0,1)×[0,1].
-  Rgb lookup(Vec2 uv) const {
-    const double x = uv.x * width - 0.5;
-    const double x0 = std::floor(x);
-    const double fx = x - x0;
-    int c0 = int(x0) % width;
-    if (c0 < 0) c0 += width;
-    const int c1 = c0 + 1 == width ? 0 : c0 + 1;
+  Rgb lookup(Vec2 uv) const;
+};
 
-    const double y = std::clamp(uv.y, 0.0, 1.0) * (height - 1);
-    const int r0 = std::min(int(y), height - 2);
-    const double fy = y - r0;
+// Where a bilinear lookup at (u, v) falls: columns c0, c1 = c0 + 1 (wrapping) and rows r0, r0 + 1, with
+// the weights fx, fy of the second of each.
+struct LatLongPosition {
+  int c0 = 0, c1 = 0, r0 = 0;
+  double fx = 0.0, fy = 0.0;
+};
 
-    const Rgb top = texel(c0, r0) * (1.0 - fx) + texel(c1, r0) * fx;
-    const Rgb bottom = texel(c0, r0 + 1) * (1.0 - fx) + texel(c1, r0 + 1) * fx;
-    return top * (1.0 - fy) + bottom * fy;
+inline LatLongPosition latLongPosition(Vec2 uv, int width, int height) {
+  const double x = uv.x * width - 0.5;
+  const double x0 = std::floor(x);
+  int c0 = int(x0) % width;
+  if (c0 < 0) c0 += width;
+  const double y = std::clamp(uv.y, 0.0, 1.0) * (height - 1);
+  const int r0 = std::min(int(y), height - 2);
+  return {c0, c0 + 1 == width ? 0 : c0 + 1, r0, x - x0, y - r0};
+}
+
+template <class Texel>
+Rgb interpolateLatLong(const Texel& t00, const Texel& t10, const Texel& t01, const Texel& t11, double fx, double fy) {
+  const Rgb top = Rgb(t00[0], t00[1], t00[2]) * (1.0 - fx) + Rgb(t10[0], t10[1], t10[2]) * fx;
+  const Rgb bottom = Rgb(t01[0], t01[1], t01[2]) * (1.0 - fx) + Rgb(t11[0], t11[1], t11[2]) * fx;
+  return top * (1.0 - fy) + bottom * fy;
+}
+
+inline Rgb LatLongImage::lookup(Vec2 uv) const {
+  const LatLongPosition p = latLongPosition(uv, width, height);
+  const auto at = [&](int column, int row) { return &rgb[(std::size_t(row) * std::size_t(width) + std::size_t(column)) * 3]; };
+  return interpolateLatLong(at(p.c0, p.r0), at(p.c1, p.r0), at(p.c0, p.r0 + 1), at(p.c1, p.r0 + 1), p.fx, p.fy);
+}
+
+// The same texels in huge pages (huge_pages.h), for the environment light's random lookups; the same
+// values as LatLongImage::lookup, bit for bit.
+class LatLongMap {
+ public:
+  LatLongMap() = default;
+  explicit LatLongMap(const LatLongImage& image)
+      : width_(image.width), height_(image.height), rgb_(image.rgb.begin(), image.rgb.end()) {}
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  Rgb interpolate(const LatLongPosition& p) const {
+    return interpolateLatLong(at(p.c0, p.r0), at(p.c1, p.r0), at(p.c0, p.r0 + 1), at(p.c1, p.r0 + 1), p.fx, p.fy);
   }
+  Rgb lookup(Vec2 uv) const { return interpolate(latLongPosition(uv, width_, height_)); }
+
+ private:
+  const float* at(int column, int row) const {
+    return &rgb_[(std::size_t(row) * std::size_t(width_) + std::size_t(column)) * 3];
+  }
+  int width_ = 0, height_ = 0;
+  HugePageVector<float> rgb_;
 };
 
 }  // namespace glossy
