@@ -145,18 +145,13 @@ Distribution2D::Distribution2D(std::span<const double> values, std::size_t width
   }
 }
 
-Distribution2D::Cell Distribution2D::invert(Vec2 u) const {
+Distribution2D::Sample Distribution2D::sample(Vec2 u) const {
   std::size_t row = 0;
   const double y = marginal_.sampleContinuous(u.y, nullptr, &row);
   const double ux = clampUnit(u.x);
   const double* cdf = &cdf_[row * (width_ + 1)];
   const std::size_t column = findBin(cdf, &guide_[row * width_], width_, ux);
-  return {Vec2(invertInBin(cdf, width_, column, ux), y), column, row};
-}
-
-Distribution2D::Sample Distribution2D::sample(Vec2 u) const {
-  const Cell cell = invert(u);
-  return {cell.point, cellDensity(cell.column, cell.row), cell.column, cell.row};
+  return {Vec2(invertInBin(cdf, width_, column, ux), y), cellDensity(column, row), column, row};
 }
 
 double Distribution2D::pdf(Vec2 point) const {

@@ -61,10 +61,6 @@ class Distribution1D {
 // per call) in a third, so that a sample touches a few cache lines of one row and pdf() a single value.
 class Distribution2D {
  public:
-  struct Cell {
-    Vec2 point{0.0};  // in [0,1)²
-    std::size_t column = 0, row = 0;  // the cell holding point: ⌊x·width⌋, ⌊y·height⌋
-  };
   struct Sample {
     Vec2 point{0.0};   // in [0,1)²
     double pdf = 0.0;  // with respect to area on the unit square
@@ -80,9 +76,6 @@ class Distribution2D {
 
   // u in [0,1)² (clamped). pdf(sample(u).point) == sample(u).pdf exactly.
   Sample sample(Vec2 u) const;
-  // sample() without reading the density: for callers that keep the cells' densities beside data of
-  // their own (cellDensity gives them).
-  Cell invert(Vec2 u) const;
   double pdf(Vec2 point) const;  // 0 outside [0,1]²
   double cellDensity(std::size_t column, std::size_t row) const { return density_[row * width_ + column]; }
 
