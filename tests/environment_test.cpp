@@ -4,6 +4,7 @@
 // the constant environment, degenerate inputs, and load errors.
 #include "materials/core/input_error.h"
 #include "renderer/lights/environment.h"
+#include "renderer/lights/latlong.h"
 #include "tests/support/chi2.h"
 #include "tests/support/test_support.h"
 
@@ -16,6 +17,7 @@
 #include <map>
 #include <memory>
 #include <random>
+#include <tuple>
 
 namespace glossy::test {
 
@@ -296,6 +298,71 @@ TEST(Environment, BilinearLookupHitsTexelCentresAndInterpolatesAcrossTheSeam) {
                 "just right of the seam");
   expectRgbNear(env.radiance(specDirection(1.0 - 0.25 / w, 1.0 / 3.0)), 0.75 * at(w - 1, 1) + 0.25 * at(0, 1),
                 tolerance, "just left of the seam");
+}
+
+// Maps fine enough for LatLongGrid's tables (cells narrower than kMaxStep) take no libm call per lookup:
+// the same bilinear values as the spec's formula, everywhere, at any rotation.
+TEST(Environment, FineMapsLookUpAsTheSpecSays) {
+  const int w = 300, h = 160;
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<float> texel(0.0f, 4.0f);
+  std::vector<Rgb> texels(std::size_t(w) * h);
+  for (Rgb& t : texels)
+    for (int c = 0; c < 3; ++c) t[c] = texel(rng);
+  auto at = [&](int column, int row) { return texels[std::size_t(row * w + ((column % w) + w) % w)]; };
+  TempDir dir;
+  writeExr(dir / "fine.exr", w, h, 3, rgbMap(w, h, at));
+  // Bilinear at (u, v) with texel centres at ((i + ½)/W, j/(H − 1)), written out from the spec.
+  auto specLookup = [&](Vec2 uv) {
+    const double x = uv.x * w - 0.5, y = uv.y * (h - 1);
+    const int i = int(std::floor(x)), j = std::min(int(y), h - 2);
+    const double fx = x - i, fy = y - j;
+    return (at(i, j) * (1 - fx) + at(i + 1, j) * fx) * (1 - fy) + (at(i, j + 1) * (1 - fx) + at(i + 1, j + 1) * fx) * fy;
+  };
+  std::uniform_real_distribution<double> uniform;
+  for (double degrees : {0.0, 33.0, -120.0}) {
+    const Environment env = Environment::load(dir / "fine.exr", degrees);
+    for (int k = 0; k < 20000; ++k) {
+      // Half of them on texel centres' columns and rows, where a cell ends (not on the poles' rows, whose
+      // random texels are not one value for the one direction there).
+      double u = uniform(rng), v = uniform(rng);
+      if (k % 2) u = (int(u * w) + 0.5) / w, v = double(1 + int(v * (h - 2))) / (h - 1);
+      const Vec3 d = rotateAboutY(specDirection(u, v), degrees);
+      expectRgbNear(env.radiance(d), specLookup({u, v}), 1e-9, "u = " + std::to_string(u) + ", v = " + std::to_string(v));
+    }
+  }
+}
+
+// LatLongGrid, the tabulated conversion, against the libm formulas it replaces: the same cells and weights
+// (up to rounding, and cells differing only on an edge), and direction() inverting position().
+TEST(Environment, TabulatedGridAgreesWithTheFormulas) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> uniform;
+  for (const auto& [w, h, offset] : {std::tuple{1024, 512, 0.0}, std::tuple{2048, 1024, 0.375}, std::tuple{300, 160, 0.9}}) {
+    const LatLongGrid grid(w, h, offset);
+    for (int k = 0; k < 100000; ++k) {
+      const double z = 1.0 - 2.0 * uniform(rng), r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * uniform(rng);
+      const Vec3 d = k == 0 ? Vec3(0, 1, 0) : k == 1 ? Vec3(0, -1, 0) : Vec3(r * std::cos(phi), z, r * std::sin(phi));
+      const LatLongPosition fast = grid.position(d), exact = latLongPosition(grid.uvOf(d), w, h);
+      // The same point: column + fx and row + fy agree, across the seam too.
+      const double dx = std::remainder((fast.c0 + fast.fx) - (exact.c0 + exact.fx), double(w));
+      ASSERT_NEAR(dx, 0.0, 1e-9) << w << "×" << h << ", " << d.x << " " << d.y << " " << d.z;
+      ASSERT_NEAR((fast.r0 + fast.fy) - (exact.r0 + exact.fy), 0.0, 1e-9) << d.x << " " << d.y << " " << d.z;
+      if (fast.c0 != exact.c0) {
+        ASSERT_TRUE(std::min(fast.fx, exact.fx) < 1e-9 && std::max(fast.fx, exact.fx) > 1 - 1e-9);
+      }
+      if (fast.r0 != exact.r0) {
+        ASSERT_TRUE(std::min(fast.fy, exact.fy) < 1e-9 && std::max(fast.fy, exact.fy) > 1 - 1e-9);
+      }
+      ASSERT_EQ(fast.c1, (fast.c0 + 1) % w);
+      double sinTheta = 0.0;
+      const Vec3 back = grid.direction(fast.c0, fast.r0, fast.fx, fast.fy, sinTheta);
+      if (std::abs(d.y) < 1.0) {
+        ASSERT_NEAR(glm::length(back - d), 0.0, 1e-12) << d.x << " " << d.y << " " << d.z;
+      }
+      ASSERT_NEAR(sinTheta, std::sqrt(d.x * d.x + d.z * d.z), 1e-12);
+    }
+  }
 }
 
 TEST(Environment, ReadsRgbaAndIgnoresAlpha) {

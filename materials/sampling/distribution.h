@@ -10,6 +10,7 @@
 #pragma once
 
 #include "materials/core/types.h"
+#include "materials/sampling/huge_pages.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -46,8 +47,7 @@ class Distribution1D {
 
   std::vector<double> values_;
   std::vector<double> cdf_;
-  // guide_[k] = binOf(k/n) by binary search: a lookup starts there and steps forward, which finds the same
-  // bin as a binary search in O(1) expected steps (the environment light's hot path).
+  // guide_[k] = binOf(k/n): a lookup starts there (see findBin in the .cpp).
   std::vector<uint32_t> guide_;
   double integral_ = 0.0;
 };
@@ -55,27 +55,37 @@ class Distribution1D {
 // A density on the unit square [0,1)² from a width × height table, row-major (values[y·width + x]),
 // x along the first coordinate. Sampled as the marginal over rows, then the chosen row's conditional.
 // Rows whose values are all zero have probability 0; an all-zero table is uniform (pdf ≡ 1).
+//
+// The conditionals are one Distribution1D per row in all but storage: their CDFs and guide tables sit in
+// one array each, and the density of every cell (the marginal's times the row's, the product pbrt forms
+// per call) in a third, so that a sample touches a few cache lines of one row and pdf() a single value.
 class Distribution2D {
  public:
   struct Sample {
     Vec2 point{0.0};   // in [0,1)²
     double pdf = 0.0;  // with respect to area on the unit square
+    std::size_t column = 0, row = 0;  // the cell holding point
   };
 
   Distribution2D() = default;
   Distribution2D(std::span<const double> values, std::size_t width, std::size_t height);
 
-  std::size_t width() const { return conditional_.empty() ? 0 : conditional_.front().size(); }
-  std::size_t height() const { return conditional_.size(); }
+  std::size_t width() const { return width_; }
+  std::size_t height() const { return marginal_.size(); }
   double integral() const { return marginal_.integral(); }  // ∫∫ f over the unit square
 
   // u in [0,1)² (clamped). pdf(sample(u).point) == sample(u).pdf exactly.
   Sample sample(Vec2 u) const;
   double pdf(Vec2 point) const;  // 0 outside [0,1]²
+  double cellDensity(std::size_t column, std::size_t row) const { return density_[row * width_ + column]; }
 
  private:
-  std::vector<Distribution1D> conditional_;  // one per row, over x
-  Distribution1D marginal_;                   // over rows, weighted by each row's integral
+  std::size_t width_ = 0;
+  Distribution1D marginal_;       // over rows, weighted by each row's integral
+  // Read at random, hence huge pages (huge_pages.h).
+  HugePageVector<double> cdf_;      // row y's CDF at [y·(width + 1), (y + 1)·(width + 1))
+  HugePageVector<uint32_t> guide_;  // row y's guide table at [y·width, (y + 1)·width)
+  HugePageVector<double> density_;  // p(cell) = marginal density × conditional density, row-major
 };
 
 }  // namespace glossy

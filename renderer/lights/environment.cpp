@@ -87,34 +87,32 @@ struct Environment::Impl {
   bool isConstant = false;
   Rgb constantRadiance{0.0};
 
-  LatLongImage map;
+  LatLongMap map;
   // Rotation about +Y by α shifts every feature's u by −α/(2π) (φ ↦ φ − α for a right-handed turn):
   // the map is looked up at u_world + uOffset.
   double uOffset = 0.0;
   // Over (s, v) with s = u_map − ½/W: its cells are the bilinear patches between adjacent texel centres,
-  // W × (H − 1) of them, so each cell's value can bound the interpolated function exactly.
+  // W × (H − 1) of them, so each cell's value can bound the interpolated function exactly. Cell (i, j) is
+  // patch (i, j) of the map.
   Distribution2D distribution;
 
-  Vec2 mapUv(const Vec3& dir) const {
-    Vec2 uv = latLongFromDirection(dir);
-    uv.x = wrapUnit(uv.x + uOffset);
-    return uv;
-  }
+  // Directions to cells and back (the rotation included).
+  LatLongGrid grid;
 
-  // The solid-angle density of sample() at dir, whose map coordinates are uv.
-  double pdfAt(const Vec3& dir, Vec2 uv) const {
+  // The solid-angle density of sample() at dir, whose lookup position is at: Distribution2D::pdf at
+  // (s, v) = (u_map − ½/W, v), whose cell is the patch the lookup falls in.
+  double pdfAt(const Vec3& dir, const LatLongPosition& at) const {
     const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
     if (!(sinTheta > 0.0)) return 0.0;
-    const double s = wrapUnit(uv.x - 0.5 / map.width);
-    return distribution.pdf({s, uv.y}) / (2.0 * kPi * kPi * sinTheta);
+    return distribution.cellDensity(std::size_t(at.c0), std::size_t(at.r0)) / (2.0 * kPi * kPi * sinTheta);
   }
 
-  void buildDistribution() {
-    const int width = map.width, cells = map.height - 1;
-    std::vector<double> rowLuminance(std::size_t(width) * map.height);
-    for (int row = 0; row < map.height; ++row)
+  void buildDistribution(const LatLongImage& image) {
+    const int width = image.width, cells = image.height - 1;
+    std::vector<double> rowLuminance(std::size_t(width) * image.height);
+    for (int row = 0; row < image.height; ++row)
       for (int column = 0; column < width; ++column)
-        rowLuminance[std::size_t(row) * width + column] = luminance(map.texel(column, row));
+        rowLuminance[std::size_t(row) * width + column] = luminance(image.texel(column, row));
 
     std::vector<double> weights(std::size_t(width) * cells);
     for (int cell = 0; cell < cells; ++cell) {
@@ -132,14 +130,15 @@ struct Environment::Impl {
       }
     }
     distribution = Distribution2D(weights, std::size_t(width), std::size_t(cells));
+    map = LatLongMap(image);
   }
 
-  static std::unique_ptr<Impl> fromMap(LatLongImage map, double rotateDegrees, std::string description) {
+  static std::unique_ptr<Impl> fromMap(const LatLongImage& image, double rotateDegrees, std::string description) {
     auto impl = std::make_unique<Impl>();
     impl->description = withRotation(std::move(description), rotateDegrees);
-    impl->map = std::move(map);
     impl->uOffset = wrapUnit(rotateDegrees / 360.0);
-    impl->buildDistribution();
+    impl->buildDistribution(image);
+    impl->grid = LatLongGrid(image.width, image.height, impl->uOffset);
     return impl;
   }
 };
@@ -174,7 +173,7 @@ Environment Environment::makeDefault(double rotateDegrees) {
 
 Rgb Environment::radiance(const Vec3& dir) const {
   if (impl_->isConstant) return impl_->constantRadiance;
-  return impl_->map.lookup(impl_->mapUv(dir));
+  return impl_->map.interpolate(impl_->grid.position(dir));
 }
 
 Environment::Sample Environment::sample(Vec2 u) const {
@@ -188,21 +187,21 @@ Environment::Sample Environment::sample(Vec2 u) const {
   }
 
   const Distribution2D::Sample cell = env.distribution.sample(u);
-  const double v = cell.point.y;
-  const double sinTheta = std::sin(kPi * v);
+  // The sampled point's cell is the patch of the lookup: there x = u_map·W − ½ = s·W and y = v·(H − 1).
+  const int width = env.map.width(), column = int(cell.column), row = int(cell.row);
+  const LatLongPosition at{column, column + 1 == width ? 0 : column + 1, row, cell.point.x * width - double(column),
+                           cell.point.y * (env.map.height() - 1) - double(row)};
+  double sinTheta = 0.0;
+  const Vec3 dir = env.grid.direction(at.c0, at.r0, at.fx, at.fy, sinTheta);
   // At a pole the lat-long Jacobian vanishes and the solid-angle density is unbounded: no usable sample.
   if (cell.pdf <= 0.0 || sinTheta <= 0.0) return {};
-
-  const double uMap = wrapUnit(cell.point.x + 0.5 / env.map.width);
-  const double phi = 2.0 * kPi * wrapUnit(uMap - env.uOffset);
-  const Vec3 dir(sinTheta * std::sin(phi), std::cos(kPi * v), -sinTheta * std::cos(phi));
-  return {dir, env.map.lookup({uMap, v}), cell.pdf / (2.0 * kPi * kPi * sinTheta)};
+  return {dir, env.map.interpolate(at), cell.pdf / (2.0 * kPi * kPi * sinTheta)};
 }
 
 double Environment::pdf(const Vec3& dir) const {
   const Impl& env = *impl_;
   if (env.isConstant) return kInv4Pi;
-  return env.pdfAt(dir, env.mapUv(dir));
+  return env.pdfAt(dir, env.grid.position(dir));
 }
 
 Rgb Environment::radianceAndPdf(const Vec3& dir, double& pdf) const {
@@ -211,9 +210,9 @@ Rgb Environment::radianceAndPdf(const Vec3& dir, double& pdf) const {
     pdf = kInv4Pi;
     return env.constantRadiance;
   }
-  const Vec2 uv = env.mapUv(dir);
-  pdf = env.pdfAt(dir, uv);
-  return env.map.lookup(uv);
+  const LatLongPosition at = env.grid.position(dir);
+  pdf = env.pdfAt(dir, at);
+  return env.map.interpolate(at);
 }
 
 const std::string& Environment::description() const { return impl_->description; }
