@@ -77,7 +77,7 @@ class PathTracer {
 
       // Rays that left the scene see the environment, MIS-weighted unless they are camera rays.
       for (int i = 0; i < kPacketSize; ++i) escaped[i] = alive[i] && !found[i] && scene_.environment;
-      environmentRadiance(escaped, rays, bsdfPdf, skyRadiance, skyPdf);
+      environmentRadiance(escaped, rays, skyRadiance, skyPdf);
       for (int i = 0; i < kPacketSize; ++i) {
         if (escaped[i])
           radiance[i] += throughput[i] * skyRadiance[i] *
@@ -115,21 +115,19 @@ class PathTracer {
     const Brdf* brdf = nullptr;
   };
 
-  // The radiance (and, for BSDF-sampled rays, the light-sampling pdf) of the environment for the lanes
-  // that want it.
-  void environmentRadiance(const bool* want, const Ray* rays, const double* bsdfPdf, Rgb* radiance, double* pdf) const {
-    for (int i = 0; i < kPacketSize; ++i) {
-      if (!want[i]) continue;
-      if (bsdfPdf[i] > 0.0)
-        radiance[i] = scene_.environment->radianceAndPdf(rays[i].dir, pdf[i]);
-      else
-        radiance[i] = scene_.environment->radiance(rays[i].dir);
-    }
+  // The radiance and the light-sampling pdf of the environment for the lanes that want them (a camera ray
+  // does not need the pdf; reading it with the rest costs next to nothing).
+  void environmentRadiance(const bool* want, const Ray* rays, Rgb* radiance, double* pdf) const {
+    Vec3 dirs[kPacketSize];
+    for (int i = 0; i < kPacketSize; ++i)
+      if (want[i]) dirs[i] = rays[i].dir;
+    scene_.environment->radianceAndPdf(want, dirs, radiance, pdf, kPacketSize);
   }
 
   void environmentSamples(const bool* toEnvironment, const bool* shading, const Vec2* u, Environment::Sample* out) const {
-    for (int i = 0; i < kPacketSize; ++i)
-      if (shading[i] && toEnvironment[i]) out[i] = scene_.environment->sample(u[i]);
+    bool want[kPacketSize];
+    for (int i = 0; i < kPacketSize; ++i) want[i] = shading[i] && toEnvironment[i];
+    scene_.environment->sample(want, u, out, kPacketSize);
   }
 
   // The ray's hit: its emission if it is a light (ending the path), else the shading point. False ends

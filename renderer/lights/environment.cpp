@@ -80,6 +80,14 @@ LatLongImage readLatLong(const std::filesystem::path& path) {
   return image;
 }
 
+// The sample's lookup position: the sampled point's cell is the patch of the lookup, where
+// x = u_map·W − ½ = s·W and y = v·(H − 1).
+LatLongPosition cellPosition(const Distribution2D::Sample& cell, int width, int height) {
+  const int column = int(cell.column), row = int(cell.row);
+  return {column, column + 1 == width ? 0 : column + 1, row, cell.point.x * width - double(column),
+          cell.point.y * (height - 1) - double(row)};
+}
+
 }  // namespace
 
 struct Environment::Impl {
@@ -105,6 +113,15 @@ struct Environment::Impl {
     const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
     if (!(sinTheta > 0.0)) return 0.0;
     return distribution.cellDensity(std::size_t(at.c0), std::size_t(at.r0)) / (2.0 * kPi * kPi * sinTheta);
+  }
+
+  // The sample of the map at the lookup position `at` of the cell Distribution2D drew.
+  Sample sampleAt(const Distribution2D::Sample& cell, const LatLongPosition& at) const {
+    double sinTheta = 0.0;
+    const Vec3 dir = grid.direction(at.c0, at.r0, at.fx, at.fy, sinTheta);
+    // At a pole the lat-long Jacobian vanishes and the solid-angle density is unbounded: no usable sample.
+    if (cell.pdf <= 0.0 || sinTheta <= 0.0) return {};
+    return {dir, map.interpolate(at), cell.pdf / (2.0 * kPi * kPi * sinTheta)};
   }
 
   void buildDistribution(const LatLongImage& image) {
@@ -176,6 +193,7 @@ Rgb Environment::radiance(const Vec3& dir) const {
   return impl_->map.interpolate(impl_->grid.position(dir));
 }
 
+
 Environment::Sample Environment::sample(Vec2 u) const {
   const Impl& env = *impl_;
   if (env.isConstant) {
@@ -187,15 +205,47 @@ Environment::Sample Environment::sample(Vec2 u) const {
   }
 
   const Distribution2D::Sample cell = env.distribution.sample(u);
-  // The sampled point's cell is the patch of the lookup: there x = u_map·W − ½ = s·W and y = v·(H − 1).
-  const int width = env.map.width(), column = int(cell.column), row = int(cell.row);
-  const LatLongPosition at{column, column + 1 == width ? 0 : column + 1, row, cell.point.x * width - double(column),
-                           cell.point.y * (env.map.height() - 1) - double(row)};
-  double sinTheta = 0.0;
-  const Vec3 dir = env.grid.direction(at.c0, at.r0, at.fx, at.fy, sinTheta);
-  // At a pole the lat-long Jacobian vanishes and the solid-angle density is unbounded: no usable sample.
-  if (cell.pdf <= 0.0 || sinTheta <= 0.0) return {};
-  return {dir, env.map.interpolate(at), cell.pdf / (2.0 * kPi * kPi * sinTheta)};
+  return env.sampleAt(cell, cellPosition(cell, env.map.width(), env.map.height()));
+}
+
+void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) const {
+  const Impl& env = *impl_;
+  if (env.isConstant) {
+    for (int i = 0; i < n; ++i)
+      if (want[i]) out[i] = sample(u[i]);
+    return;
+  }
+  Distribution2D::Sample cells[kMaxBatch];
+  LatLongPosition at[kMaxBatch];
+  env.distribution.sample(want, u, cells, n);
+  for (int i = 0; i < n; ++i) {
+    if (!want[i]) continue;
+    at[i] = cellPosition(cells[i], env.map.width(), env.map.height());
+    env.map.prefetch(at[i]);
+  }
+  for (int i = 0; i < n; ++i)
+    if (want[i]) out[i] = env.sampleAt(cells[i], at[i]);
+}
+
+void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const {
+  const Impl& env = *impl_;
+  if (env.isConstant) {
+    for (int i = 0; i < n; ++i)
+      if (want[i]) radiance[i] = radianceAndPdf(dirs[i], pdf[i]);
+    return;
+  }
+  LatLongPosition at[kMaxBatch];
+  for (int i = 0; i < n; ++i) {
+    if (!want[i]) continue;
+    at[i] = env.grid.position(dirs[i]);
+    env.map.prefetch(at[i]);
+    env.distribution.prefetchCellDensity(std::size_t(at[i].c0), std::size_t(at[i].r0));
+  }
+  for (int i = 0; i < n; ++i) {
+    if (!want[i]) continue;
+    pdf[i] = env.pdfAt(dirs[i], at[i]);
+    radiance[i] = env.map.interpolate(at[i]);
+  }
 }
 
 double Environment::pdf(const Vec3& dir) const {

@@ -34,6 +34,12 @@ class Environment {
   double pdf(const Vec3& dir) const;        // exactly the density sample() draws from
   // Both at once, from one direction-to-map conversion (the path tracer's escaping rays need both).
   Rgb radianceAndPdf(const Vec3& dir, double& pdf) const;
+  // Batch forms for the path tracer's packets: for the lanes with want[i] (i < n ≤ kMaxBatch), exactly
+  // what sample(u[i]) and radianceAndPdf(dirs[i], pdf[i]) return. The lanes' map and table reads are
+  // issued step by step for all of them, so that their cache misses overlap instead of queueing.
+  static constexpr int kMaxBatch = 16;
+  void sample(const bool* want, const Vec2* u, Sample* out, int n) const;
+  void radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const;
   const std::string& description() const;  // for image metadata: file name, "constant r,g,b", "default sky"
 
   Environment(Environment&&) noexcept;

@@ -99,6 +99,13 @@ class LatLongMap {
     return interpolateLatLong(at(p.c0, p.r0), at(p.c1, p.r0), at(p.c0, p.r0 + 1), at(p.c1, p.r0 + 1), p.fx, p.fy);
   }
   Rgb lookup(Vec2 uv) const { return interpolate(latLongPosition(uv, width_, height_)); }
+  // The texels interpolate(p) will read (a column pair is one cache line but at the line's end).
+  void prefetch(const LatLongPosition& p) const {
+    __builtin_prefetch(at(p.c0, p.r0));
+    __builtin_prefetch(at(p.c1, p.r0) + 2);
+    __builtin_prefetch(at(p.c0, p.r0 + 1));
+    __builtin_prefetch(at(p.c1, p.r0 + 1) + 2);
+  }
 
  private:
   const float* at(int column, int row) const {
