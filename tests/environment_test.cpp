@@ -377,6 +377,39 @@ TEST(Environment, ReadsRgbaAndIgnoresAlpha) {
 // ---------------------------------------------------------------------------------------------------
 // Sampling
 
+// The path tracer's batch forms: lane by lane exactly the one-at-a-time values, whichever lanes are asked.
+TEST_P(EnvironmentSampling, BatchFormsEqualTheSingleCalls) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> uniform;
+  constexpr int n = Environment::kMaxBatch;
+  for (int round = 0; round < 2000; ++round) {
+    bool want[n];
+    Vec2 u[n];
+    Vec3 dirs[n];
+    for (int i = 0; i < n; ++i) {
+      want[i] = (round + i) % 5 != 0;
+      u[i] = {uniform(rng), uniform(rng)};
+      const double z = 2.0 * uniform(rng) - 1.0, phi = 2.0 * kPi * uniform(rng), r = std::sqrt(1.0 - z * z);
+      dirs[i] = i % 2 ? Vec3(r * std::cos(phi), z, r * std::sin(phi)) : env_->sample(u[i]).dir;
+    }
+    Environment::Sample samples[n];
+    Rgb radiance[n];
+    double pdf[n];
+    env_->sample(want, u, samples, n);
+    env_->radianceAndPdf(want, dirs, radiance, pdf, n);
+    for (int i = 0; i < n; ++i) {
+      if (!want[i]) continue;
+      const Environment::Sample one = env_->sample(u[i]);
+      ASSERT_EQ(samples[i].dir, one.dir);
+      ASSERT_EQ(samples[i].radiance, one.radiance);
+      ASSERT_EQ(samples[i].pdf, one.pdf);
+      double onePdf = 0.0;
+      ASSERT_EQ(radiance[i], env_->radianceAndPdf(dirs[i], onePdf));
+      ASSERT_EQ(pdf[i], onePdf);
+    }
+  }
+}
+
 TEST_P(EnvironmentSampling, PdfIsTheDensitySampleDrawsFrom) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> uniform;
