@@ -61,10 +61,12 @@ class Distribution1D {
 // per call) in a third, so that a sample touches a few cache lines of one row and pdf() a single value.
 class Distribution2D {
  public:
+  // A plain aggregate, always built whole: the batch form's callers keep arrays of them that are not
+  // zeroed per call.
   struct Sample {
-    Vec2 point{0.0};   // in [0,1)²
-    double pdf = 0.0;  // with respect to area on the unit square
-    std::size_t column = 0, row = 0;  // the cell holding point
+    Vec2 point;          // in [0,1)²
+    double pdf;          // with respect to area on the unit square
+    std::size_t column, row;  // the cell holding point
   };
 
   Distribution2D() = default;

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace glossy {
 
@@ -51,14 +52,19 @@ class PathTracer {
   // all lanes at once, so that the lanes' cache misses in the map overlap instead of queueing. Every lane
   // has its own sampler and draws exactly what a lone path would (the same dimensions in the same order),
   // so the image does not depend on how samples are grouped.
-  void tracePacket(Ray* rays, SobolSampler* samplers, bool* alive, Rgb* radiance) const {
+  // Where a path meets a reflecting surface: what its light sample and BSDF sample need.
+  struct ShadingPoint {
+    Vec3 position{0.0}, ng{0.0};  // ng faces the viewer
+    Frame frame{Vec3(0.0, 0.0, 1.0)};
+    Vec3 woLocal{0.0};
+    const Brdf* brdf = nullptr;
+  };
+
+  // What a packet's lanes carry between the stages of a vertex. Built once per task and reused: zeroing
+  // it per packet would cost more than some of the stages.
+  struct Workspace {
     Rgb throughput[kPacketSize];
     double bsdfPdf[kPacketSize];  // solid-angle pdf of the BSDF sample that made the ray; 0 for camera rays
-    for (int i = 0; i < kPacketSize; ++i) {
-      radiance[i] = Rgb(0.0);
-      throughput[i] = Rgb(1.0);
-      bsdfPdf[i] = 0.0;
-    }
     Hit hits[kPacketSize];
     bool found[kPacketSize], escaped[kPacketSize], shading[kPacketSize], toEnvironment[kPacketSize];
     ShadingPoint points[kPacketSize];
@@ -70,6 +76,16 @@ class PathTracer {
     Ray shadows[kPacketSize];
     bool shadowed[kPacketSize], occluded[kPacketSize];
     Rgb unoccluded[kPacketSize];  // what each shadow ray brings if it reaches its light
+  };
+
+  void tracePacket(Ray* rays, SobolSampler* samplers, bool* alive, Rgb* radiance, Workspace& w) const {
+    auto& [throughput, bsdfPdf, hits, found, escaped, shading, toEnvironment, points, uLight, uChoice, lightSamples,
+           skyRadiance, skyPdf, shadows, shadowed, occluded, unoccluded] = w;
+    for (int i = 0; i < kPacketSize; ++i) {
+      radiance[i] = Rgb(0.0);
+      throughput[i] = Rgb(1.0);
+      bsdfPdf[i] = 0.0;
+    }
 
     for (int depth = 1;; ++depth) {
       if (std::none_of(alive, alive + kPacketSize, [](bool a) { return a; })) break;
@@ -107,13 +123,6 @@ class PathTracer {
   }
 
  private:
-  // Where a path meets a reflecting surface: what its light sample and BSDF sample need.
-  struct ShadingPoint {
-    Vec3 position{0.0}, ng{0.0};  // ng faces the viewer
-    Frame frame{Vec3(0.0, 0.0, 1.0)};
-    Vec3 woLocal{0.0};
-    const Brdf* brdf = nullptr;
-  };
 
   // The radiance and the light-sampling pdf of the environment for the lanes that want them (a camera ray
   // does not need the pdf; reading it with the rest costs next to nothing).
@@ -271,6 +280,7 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
     Ray rays[kPacketSize];
     bool alive[kPacketSize];
     Rgb radiance[kPacketSize];
+    auto workspace = std::make_unique<PathTracer::Workspace>();
     for (int ty = tiles.rows().begin(); ty < tiles.rows().end(); ++ty)
       for (int tx = tiles.cols().begin(); tx < tiles.cols().end(); ++tx) {
         for (int y = ty * kTile; y < std::min(settings.height, (ty + 1) * kTile); ++y)
@@ -286,7 +296,7 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
                 samplers[i] = SobolSampler(pixel, uint32_t(settings.firstSample + first + i));
                 rays[i] = cameraRays(Vec2(x, y) + samplers[i].get2D());
               }
-              tracer.tracePacket(rays, samplers, alive, radiance);
+              tracer.tracePacket(rays, samplers, alive, radiance, *workspace);
               for (int i = 0; i < lanes; ++i) {
                 if (isFinite(radiance[i]))
                   sum += radiance[i];

@@ -56,9 +56,10 @@ struct LatLongImage {
 
 // Where a bilinear lookup at (u, v) falls: columns c0, c1 = c0 + 1 (wrapping) and rows r0, r0 + 1, with
 // the weights fx, fy of the second of each.
+// A plain aggregate, always built whole: the batch lookups keep arrays of them that are not zeroed per call.
 struct LatLongPosition {
-  int c0 = 0, c1 = 0, r0 = 0;
-  double fx = 0.0, fy = 0.0;
+  int c0, c1, r0;
+  double fx, fy;
 };
 
 inline LatLongPosition latLongPosition(Vec2 uv, int width, int height) {
