@@ -105,19 +105,7 @@ inline void tracePacket(RTCScene scene, RTCIntersectContext& context, const Reco
     packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
     packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
     if (!q.valid[i]) continue;
-    const RTCRay& r = q.rays[i];
-    packet.ray.org_x[i] = r.org_x;
-    packet.ray.org_y[i] = r.org_y;
-    packet.ray.org_z[i] = r.org_z;
-    packet.ray.tnear[i] = r.tnear;
-    packet.ray.dir_x[i] = r.dir_x;
-    packet.ray.dir_y[i] = r.dir_y;
-    packet.ray.dir_z[i] = r.dir_z;
-    packet.ray.time[i] = r.time;
-    packet.ray.tfar[i] = r.tfar;
-    packet.ray.mask[i] = r.mask;
-    packet.ray.id[i] = r.id;
-    packet.ray.flags[i] = r.flags;
+    setPacketLane(packet.ray, i, q.rays[i]);
   }
   if (q.shadow)
     rtcOccluded8(mask, scene, &context, &packet.ray);

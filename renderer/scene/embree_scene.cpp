@@ -159,27 +159,6 @@ void EmbreeScene::completeHit(const Ray& ray, Hit& hit) const {
   }
 }
 
-namespace {
-
-// Packets are laid out as Embree's SoA structures; a lane is written field by field.
-void setLane(RTCRay8& packet, int lane, const Ray& ray) {
-  const RTCRay r = toRtcRay(ray);
-  packet.org_x[lane] = r.org_x;
-  packet.org_y[lane] = r.org_y;
-  packet.org_z[lane] = r.org_z;
-  packet.tnear[lane] = r.tnear;
-  packet.dir_x[lane] = r.dir_x;
-  packet.dir_y[lane] = r.dir_y;
-  packet.dir_z[lane] = r.dir_z;
-  packet.time[lane] = 0.0f;
-  packet.tfar[lane] = r.tfar;
-  packet.mask[lane] = ~0u;
-  packet.id[lane] = 0;
-  packet.flags[lane] = 0;
-}
-
-}  // namespace
-
 void EmbreeScene::intersect(const bool* valid, const Ray* rays, Hit* hits, bool* found) const {
   if (recorder_) [[unlikely]]
     recorder_->recordPacket(rays, valid, false);
@@ -192,7 +171,7 @@ void EmbreeScene::intersect(const bool* valid, const Ray* rays, Hit* hits, bool*
     packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
     if (!valid[i]) continue;
     any = true;
-    setLane(packet.ray, i, rays[i]);
+    setPacketLane(packet.ray, i, toRtcRay(rays[i]));
   }
   if (!any) return;
   RTCIntersectContext context;
@@ -223,7 +202,7 @@ void EmbreeScene::occluded(const bool* valid, const Ray* rays, bool* occluded) c
     if (valid[i]) occluded[i] = false;
     if (!traced[i]) continue;
     any = true;
-    setLane(packet, i, rays[i]);
+    setPacketLane(packet, i, toRtcRay(rays[i]));
   }
   if (!any) return;
   if (recorder_) [[unlikely]]

@@ -27,6 +27,22 @@ struct Hit {
 // The Embree form of a ray (float; tfar beyond float range becomes +∞).
 RTCRay toRtcRay(const Ray& ray);
 
+// Writes one ray into lane `lane` of an Embree SoA packet.
+inline void setPacketLane(RTCRay8& packet, int lane, const RTCRay& r) {
+  packet.org_x[lane] = r.org_x;
+  packet.org_y[lane] = r.org_y;
+  packet.org_z[lane] = r.org_z;
+  packet.tnear[lane] = r.tnear;
+  packet.dir_x[lane] = r.dir_x;
+  packet.dir_y[lane] = r.dir_y;
+  packet.dir_z[lane] = r.dir_z;
+  packet.time[lane] = r.time;
+  packet.tfar[lane] = r.tfar;
+  packet.mask[lane] = r.mask;
+  packet.id[lane] = r.id;
+  packet.flags[lane] = r.flags;
+}
+
 // Lanes of a packet query: Embree's native 8-wide packets (AVX2), which trace coherent rays (a pixel's
 // samples, their glossy reflections, their shadow rays toward the same light) faster than one at a time.
 inline constexpr int kPacketSize = 8;
