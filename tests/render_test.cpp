@@ -37,11 +37,13 @@ struct Fixture {
   SceneDescription description;
   std::vector<Brdf> brdfs;
   Environment environment = Environment::constant(Rgb(1.0));
+  bool withEnvironment = true;  // false: a scene lit by its emitters alone (RenderScene::environment null)
 
   RgbImage renderWith(const Camera& camera, const RenderSettings& settings, RenderStats* statsOut = nullptr) {
     const EmbreeScene bvh(description);
     const AreaLights lights(description);
-    const RenderScene scene{&description, &bvh, brdfs, Lambertian{Rgb(0.5)}, &environment, &lights};
+    const RenderScene scene{&description, &bvh, brdfs, Lambertian{Rgb(0.5)}, withEnvironment ? &environment : nullptr,
+                            &lights};
     RenderStats stats;
     RgbImage image = render(scene, camera, settings, stats);
     if (statsOut) *statsOut = stats;
@@ -132,6 +134,33 @@ TEST(Render, SphereCentreShowsTheSpecsReferenceAlbedos) {
     const RgbImage img = f.renderWith(orthographicDown(1e-3, {0, 0, 5}, {0, 0, 0}, {0, 1, 0}), settings);
     EXPECT_NEAR(img.at(0, 0)[0], ref.red, 0.01 * ref.red + 5e-5) << ref.material << " " << ref.fit;
   }
+}
+
+// With no environment at all the packets' environment stages must stand aside: the lamp alone lights the
+// floor as brightly as under a black sky (there half the light samples went to the sky).
+TEST(Render, EmittersAloneWithoutAnEnvironment) {
+  Fixture f;
+  f.description.materials.push_back(material("floor", Rgb(0.5)));
+  f.description.materials.push_back(material("lamp", Rgb(0.0), Rgb(10.0, 5.0, 2.0)));
+  f.description.meshes.push_back(quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0));
+  f.description.meshes.push_back(quad({-0.2f, 1, -0.2f}, {0.4f, 0, 0}, {0, 0, 0.4f}, 1));
+  f.brdfs = {Lambertian{Rgb(0.5)}, Lambertian{Rgb(0.0)}};
+  const Camera cam = orthographicDown(2.0, {0, 5, 0}, {0, 0, 0}, {0, 0, -1});
+  RenderSettings settings = quiet(24, 256);
+  settings.maxDepth = 2;
+  f.withEnvironment = false;
+  const RgbImage alone = f.renderWith(cam, settings);
+  f.withEnvironment = true;
+  f.environment = Environment::constant(Rgb(0.0));
+  const RgbImage blackSky = f.renderWith(cam, settings);
+  double sumAlone = 0.0, sumBlack = 0.0;
+  for (size_t i = 0; i < alone.pixels.size(); ++i) {
+    ASSERT_TRUE(std::isfinite(alone.pixels[i]));
+    sumAlone += alone.pixels[i];
+    sumBlack += blackSky.pixels[i];
+  }
+  ASSERT_GT(sumBlack, 0.0);
+  EXPECT_NEAR(sumAlone / sumBlack, 1.0, 0.02);
 }
 
 TEST(Render, EmissiveQuadLightsAPlaneWithItsAnalyticIrradiance) {

@@ -47,11 +47,6 @@ class PathTracer {
     pEnvironment_ = env ? (area ? 0.5 : 1.0) : 0.0;
   }
 
-  // The paths of up to kPacketSize samples, traced together. Each segment's rays go to Embree as one
-  // packet query, each vertex's shadow rays as another, and the environment is looked up and sampled for
-  // all lanes at once, so that the lanes' cache misses in the map overlap instead of queueing. Every lane
-  // has its own sampler and draws exactly what a lone path would (the same dimensions in the same order),
-  // so the image does not depend on how samples are grouped.
   // Where a path meets a reflecting surface: what its light sample and BSDF sample need.
   struct ShadingPoint {
     Vec3 position{0.0}, ng{0.0};  // ng faces the viewer
@@ -78,6 +73,11 @@ class PathTracer {
     Rgb unoccluded[kPacketSize];  // what each shadow ray brings if it reaches its light
   };
 
+  // The paths of up to kPacketSize samples, traced together. Each segment's rays go to Embree as one
+  // packet query, each vertex's shadow rays as another, and the environment is looked up and sampled for
+  // all lanes at once, so that the lanes' cache misses in the map overlap instead of queueing. Every lane
+  // has its own sampler and draws exactly what a lone path would (the same dimensions in the same order),
+  // so the image does not depend on how samples are grouped.
   void tracePacket(Ray* rays, SobolSampler* samplers, bool* alive, Rgb* radiance, Workspace& w) const {
     auto& [throughput, bsdfPdf, hits, found, escaped, shading, toEnvironment, points, uLight, uChoice, lightSamples,
            skyRadiance, skyPdf, shadows, shadowed, occluded, unoccluded] = w;
@@ -123,10 +123,10 @@ class PathTracer {
   }
 
  private:
-
   // The radiance and the light-sampling pdf of the environment for the lanes that want them (a camera ray
   // does not need the pdf; reading it with the rest costs next to nothing).
   void environmentRadiance(const bool* want, const Ray* rays, Rgb* radiance, double* pdf) const {
+    if (!scene_.environment) return;  // then no lane wants it
     Vec3 dirs[kPacketSize];
     for (int i = 0; i < kPacketSize; ++i)
       if (want[i]) dirs[i] = rays[i].dir;
@@ -134,6 +134,7 @@ class PathTracer {
   }
 
   void environmentSamples(const bool* toEnvironment, const bool* shading, const Vec2* u, Environment::Sample* out) const {
+    if (!scene_.environment) return;  // then no lane chooses it
     bool want[kPacketSize];
     for (int i = 0; i < kPacketSize; ++i) want[i] = shading[i] && toEnvironment[i];
     scene_.environment->sample(want, u, out, kPacketSize);
