@@ -38,9 +38,14 @@ struct CookTorrance {
   T lobe(const LobeGeometry& g, const T* shape) const {
     using std::exp;
     const T m2 = shape[0] * shape[0];
+    return lobe(g, m2, exp(-g.h.tan2Theta / m2), shape[1]);
+  }
+  // The same, given m² and beckmann = exp(−tan²θ_h / m²) (which evalPdf shares with the pdf).
+  template <class T>
+  static T lobe(const LobeGeometry& g, const T& m2, const T& beckmann, const T& eta) {
     const double cos2 = g.h.cosTheta * g.h.cosTheta;
-    const T d = exp(-g.h.tan2Theta / m2) / (m2 * (cos2 * cos2));
-    return d * fresnelCookTorrance(g.h.cosVH, shape[1]) * (g.g / (kPi * g.cosL * g.cosV));
+    const T d = beckmann / (m2 * (cos2 * cos2));
+    return d * fresnelCookTorrance(g.h.cosVH, eta) * (g.g / (kPi * g.cosL * g.cosV));
   }
 
   Rgb eval(const Vec3& L, const Vec3& V) const {
@@ -75,10 +80,9 @@ struct CookTorrance {
   BrdfValue evalPdf(const Vec3& L, const Vec3& V) const {
     if (L.z <= 0.0 || V.z <= 0.0) return {};
     const LobeGeometry g(L, V);
-    const double m2 = m * m, cos2 = g.h.cosTheta * g.h.cosTheta;
+    const double m2 = m * m;
     const double beckmann = std::exp(-g.h.tan2Theta / m2);
-    const double specular = beckmann / (m2 * (cos2 * cos2)) * fresnelCookTorrance(g.h.cosVH, eta) *
-                            (g.g / (kPi * g.cosL * g.cosV));
+    const double specular = lobe(g, m2, beckmann, eta);
     const double p = specularProbability();
     return {kd * kInvPi + ks * specular, mixtureDensity(p, p > 0.0 ? lobePdf(g.h, beckmann) : 0.0, L)};
   }

@@ -155,22 +155,19 @@ Distribution2D::Sample Distribution2D::sample(Vec2 u) const {
 }
 
 void Distribution2D::sample(const bool* want, const Vec2* u, Sample* out, int n) const {
-  std::size_t row[kMaxBatch], column[kMaxBatch];
+  std::size_t row[kMaxBatch], column[kMaxBatch], guideEntry[kMaxBatch];
   double ux[kMaxBatch], y[kMaxBatch];
   // The marginal is small and stays cached; the row's guide entry is the first miss.
   for (int i = 0; i < n; ++i) {
     if (!want[i]) continue;
     y[i] = marginal_.sampleContinuous(u[i].y, nullptr, &row[i]);
     ux[i] = clampUnit(u[i].x);
-    const std::size_t k = std::min(std::size_t(ux[i] * double(width_)), width_ - 1);
-    __builtin_prefetch(&guide_[row[i] * width_ + k]);
+    guideEntry[i] = row[i] * width_ + std::min(std::size_t(ux[i] * double(width_)), width_ - 1);
+    __builtin_prefetch(&guide_[guideEntry[i]]);
   }
   // The guide entry gives where in the row's CDF the search starts: the second miss.
-  for (int i = 0; i < n; ++i) {
-    if (!want[i]) continue;
-    const std::size_t k = std::min(std::size_t(ux[i] * double(width_)), width_ - 1);
-    __builtin_prefetch(&cdf_[row[i] * (width_ + 1) + guide_[row[i] * width_ + k]]);
-  }
+  for (int i = 0; i < n; ++i)
+    if (want[i]) __builtin_prefetch(&cdf_[row[i] * (width_ + 1) + guide_[guideEntry[i]]]);
   for (int i = 0; i < n; ++i) {
     if (!want[i]) continue;
     const double* cdf = &cdf_[row[i] * (width_ + 1)];

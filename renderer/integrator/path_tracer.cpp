@@ -64,7 +64,6 @@ class PathTracer {
     bool found[kPacketSize], escaped[kPacketSize], shading[kPacketSize], toEnvironment[kPacketSize];
     ShadingPoint points[kPacketSize];
     Vec2 uLight[kPacketSize];
-    double uChoice[kPacketSize];
     Environment::Sample lightSamples[kPacketSize];
     Rgb skyRadiance[kPacketSize];
     double skyPdf[kPacketSize];
@@ -79,46 +78,46 @@ class PathTracer {
   // has its own sampler and draws exactly what a lone path would (the same dimensions in the same order),
   // so the image does not depend on how samples are grouped.
   void tracePacket(Ray* rays, SobolSampler* samplers, bool* alive, Rgb* radiance, Workspace& w) const {
-    auto& [throughput, bsdfPdf, hits, found, escaped, shading, toEnvironment, points, uLight, uChoice, lightSamples,
-           skyRadiance, skyPdf, shadows, shadowed, occluded, unoccluded] = w;
     for (int i = 0; i < kPacketSize; ++i) {
       radiance[i] = Rgb(0.0);
-      throughput[i] = Rgb(1.0);
-      bsdfPdf[i] = 0.0;
+      w.throughput[i] = Rgb(1.0);
+      w.bsdfPdf[i] = 0.0;
     }
 
     for (int depth = 1;; ++depth) {
       if (std::none_of(alive, alive + kPacketSize, [](bool a) { return a; })) break;
-      scene_.bvh->intersect(alive, rays, hits, found);
+      scene_.bvh->intersect(alive, rays, w.hits, w.found);
 
       // Rays that left the scene see the environment, MIS-weighted unless they are camera rays.
-      for (int i = 0; i < kPacketSize; ++i) escaped[i] = alive[i] && !found[i] && scene_.environment;
-      environmentRadiance(escaped, rays, skyRadiance, skyPdf);
+      for (int i = 0; i < kPacketSize; ++i) w.escaped[i] = alive[i] && !w.found[i] && scene_.environment;
+      environmentRadiance(w.escaped, rays, w.skyRadiance, w.skyPdf);
       for (int i = 0; i < kPacketSize; ++i) {
-        if (escaped[i])
-          radiance[i] += throughput[i] * skyRadiance[i] *
-                         (bsdfPdf[i] > 0.0 ? powerHeuristic(bsdfPdf[i], pEnvironment_ * skyPdf[i]) : 1.0);
-        shading[i] = alive[i] && found[i] && surface(depth, rays[i], hits[i], throughput[i], bsdfPdf[i], radiance[i], points[i]);
-        alive[i] = shading[i];
-        shadowed[i] = false;
-        if (!shading[i]) continue;
+        if (w.escaped[i])
+          radiance[i] += w.throughput[i] * w.skyRadiance[i] *
+                         (w.bsdfPdf[i] > 0.0 ? powerHeuristic(w.bsdfPdf[i], pEnvironment_ * w.skyPdf[i]) : 1.0);
+        w.shading[i] = alive[i] && w.found[i] &&
+                       surface(depth, rays[i], w.hits[i], w.throughput[i], w.bsdfPdf[i], radiance[i], w.points[i]);
+        alive[i] = w.shading[i];
+        w.shadowed[i] = w.toEnvironment[i] = false;
+        if (!w.shading[i]) continue;
         // The area-light choice and triangle are drawn only when there is a choice to make.
-        uChoice[i] = pEnvironment_ > 0.0 && pEnvironment_ < 1.0 ? samplers[i].get1D() : 0.5;
-        uLight[i] = samplers[i].get2D();
-        toEnvironment[i] = uChoice[i] < pEnvironment_;
+        const double uChoice = pEnvironment_ > 0.0 && pEnvironment_ < 1.0 ? samplers[i].get1D() : 0.5;
+        w.uLight[i] = samplers[i].get2D();
+        w.toEnvironment[i] = uChoice < pEnvironment_;
       }
-      environmentSamples(toEnvironment, shading, uLight, lightSamples);
+      if (scene_.environment) scene_.environment->sample(w.toEnvironment, w.uLight, w.lightSamples, kPacketSize);
       for (int i = 0; i < kPacketSize; ++i) {
-        if (!shading[i]) continue;
-        const ShadingPoint& sp = points[i];
-        shadowed[i] = toEnvironment[i] ? lightFromEnvironment(sp, lightSamples[i], shadows[i], unoccluded[i])
-                                       : lightFromArea(sp, samplers[i].get1D(), uLight[i], shadows[i], unoccluded[i]);
-        if (shadowed[i]) unoccluded[i] *= throughput[i];
-        alive[i] = continuePath(depth, sp, samplers[i], throughput[i], bsdfPdf[i], rays[i]);
+        if (!w.shading[i]) continue;
+        const ShadingPoint& sp = w.points[i];
+        w.shadowed[i] = w.toEnvironment[i]
+                            ? lightFromEnvironment(sp, w.lightSamples[i], w.shadows[i], w.unoccluded[i])
+                            : lightFromArea(sp, samplers[i].get1D(), w.uLight[i], w.shadows[i], w.unoccluded[i]);
+        if (w.shadowed[i]) w.unoccluded[i] *= w.throughput[i];
+        alive[i] = continuePath(depth, sp, samplers[i], w.throughput[i], w.bsdfPdf[i], rays[i]);
       }
-      scene_.bvh->occluded(shadowed, shadows, occluded);
+      scene_.bvh->occluded(w.shadowed, w.shadows, w.occluded);
       for (int i = 0; i < kPacketSize; ++i)
-        if (shadowed[i] && !occluded[i]) radiance[i] += unoccluded[i];
+        if (w.shadowed[i] && !w.occluded[i]) radiance[i] += w.unoccluded[i];
     }
   }
 
@@ -131,13 +130,6 @@ class PathTracer {
     for (int i = 0; i < kPacketSize; ++i)
       if (want[i]) dirs[i] = rays[i].dir;
     scene_.environment->radianceAndPdf(want, dirs, radiance, pdf, kPacketSize);
-  }
-
-  void environmentSamples(const bool* toEnvironment, const bool* shading, const Vec2* u, Environment::Sample* out) const {
-    if (!scene_.environment) return;  // then no lane chooses it
-    bool want[kPacketSize];
-    for (int i = 0; i < kPacketSize; ++i) want[i] = shading[i] && toEnvironment[i];
-    scene_.environment->sample(want, u, out, kPacketSize);
   }
 
   // The ray's hit: its emission if it is a light (ending the path), else the shading point. False ends

@@ -208,6 +208,8 @@ Environment::Sample Environment::sample(Vec2 u) const {
   return env.sampleAt(cell, cellPosition(cell, env.map.width(), env.map.height()));
 }
 
+static_assert(Environment::kMaxBatch <= Distribution2D::kMaxBatch, "a batch of samples is one Distribution2D batch");
+
 void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) const {
   const Impl& env = *impl_;
   if (env.isConstant) {

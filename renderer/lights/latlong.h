@@ -49,14 +49,11 @@ struct LatLongImage {
   Vec2 texelUv(int column, int row) const {
     return {(column + 0.5) / width, double(row) / double(height - 1)};
   }
-
-  // Bilinear lookup at (u, v) in [0,1)×[0,1].
-  Rgb lookup(Vec2 uv) const;
 };
 
 // Where a bilinear lookup at (u, v) falls: columns c0, c1 = c0 + 1 (wrapping) and rows r0, r0 + 1, with
-// the weights fx, fy of the second of each.
-// A plain aggregate, always built whole: the batch lookups keep arrays of them that are not zeroed per call.
+// the weights fx, fy of the second of each. A plain aggregate, always built whole: the batch lookups keep
+// arrays of them that are not zeroed per call.
 struct LatLongPosition {
   int c0, c1, r0;
   double fx, fy;
@@ -72,21 +69,8 @@ inline LatLongPosition latLongPosition(Vec2 uv, int width, int height) {
   return {c0, c0 + 1 == width ? 0 : c0 + 1, r0, x - x0, y - r0};
 }
 
-template <class Texel>
-Rgb interpolateLatLong(const Texel& t00, const Texel& t10, const Texel& t01, const Texel& t11, double fx, double fy) {
-  const Rgb top = Rgb(t00[0], t00[1], t00[2]) * (1.0 - fx) + Rgb(t10[0], t10[1], t10[2]) * fx;
-  const Rgb bottom = Rgb(t01[0], t01[1], t01[2]) * (1.0 - fx) + Rgb(t11[0], t11[1], t11[2]) * fx;
-  return top * (1.0 - fy) + bottom * fy;
-}
-
-inline Rgb LatLongImage::lookup(Vec2 uv) const {
-  const LatLongPosition p = latLongPosition(uv, width, height);
-  const auto at = [&](int column, int row) { return &rgb[(std::size_t(row) * std::size_t(width) + std::size_t(column)) * 3]; };
-  return interpolateLatLong(at(p.c0, p.r0), at(p.c1, p.r0), at(p.c0, p.r0 + 1), at(p.c1, p.r0 + 1), p.fx, p.fy);
-}
-
-// The same texels in huge pages (huge_pages.h), for the environment light's random lookups; the same
-// values as LatLongImage::lookup, bit for bit.
+// A LatLongImage's texels in huge pages (huge_pages.h), for the environment light's random lookups, and
+// its bilinear interpolation at a lookup position.
 class LatLongMap {
  public:
   LatLongMap() = default;
@@ -97,10 +81,16 @@ class LatLongMap {
   int height() const { return height_; }
 
   Rgb interpolate(const LatLongPosition& p) const {
-    return interpolateLatLong(at(p.c0, p.r0), at(p.c1, p.r0), at(p.c0, p.r0 + 1), at(p.c1, p.r0 + 1), p.fx, p.fy);
+    const auto rgb = [&](int column, int row) {
+      const float* t = at(column, row);
+      return Rgb(t[0], t[1], t[2]);
+    };
+    const Rgb top = rgb(p.c0, p.r0) * (1.0 - p.fx) + rgb(p.c1, p.r0) * p.fx;
+    const Rgb bottom = rgb(p.c0, p.r0 + 1) * (1.0 - p.fx) + rgb(p.c1, p.r0 + 1) * p.fx;
+    return top * (1.0 - p.fy) + bottom * p.fy;
   }
-  Rgb lookup(Vec2 uv) const { return interpolate(latLongPosition(uv, width_, height_)); }
-  // The texels interpolate(p) will read (a column pair is one cache line but at the line's end).
+  // The texels interpolate(p) will read: a row's two texels are 24 bytes and may straddle a cache line,
+  // so both ends are fetched.
   void prefetch(const LatLongPosition& p) const {
     __builtin_prefetch(at(p.c0, p.r0));
     __builtin_prefetch(at(p.c1, p.r0) + 2);
