@@ -1,6 +1,7 @@
 // Nanoseconds per call of the environment light's hot calls, on 1 thread: sample(u), pdf(dir) and
 // radianceAndPdf(dir), on directions sample() returns (the light samples' MIS pdfs) and on uniformly
 // random directions (escaping BSDF rays). Prints the median of RUNS timings of each; asserts nothing.
+// The batch forms are timed per lane, in batches of 8 (a packet) and 64 (a wave).
 // The inputs are made before the clock starts, so only the calls are timed.
 #include "renderer/lights/environment.h"
 
@@ -115,6 +116,35 @@ int main(int argc, char** argv) {
     });
   };
 
+  // The batch forms, n lanes per call as the path tracer's waves use them; ns per lane.
+  auto timeSampleBatch = [&](const std::vector<Vec2>& us, int n) {
+    return nsPerCall(us.size(), [&] {
+      bool want[Environment::kMaxBatch];
+      std::fill(want, want + n, true);
+      Environment::Sample out[Environment::kMaxBatch];
+      double sum = 0.0;
+      for (std::size_t first = 0; first + std::size_t(n) <= us.size(); first += std::size_t(n)) {
+        env.sample(want, &us[first], out, n);
+        for (int i = 0; i < n; ++i) sum += out[i].pdf + out[i].dir.x + out[i].radiance.g;
+      }
+      sink += sum;
+    });
+  };
+  auto timeRadianceAndPdfBatch = [&](const std::vector<Vec3>& dirs, int n) {
+    return nsPerCall(dirs.size(), [&] {
+      bool want[Environment::kMaxBatch];
+      std::fill(want, want + n, true);
+      Rgb radiance[Environment::kMaxBatch];
+      double pdf[Environment::kMaxBatch];
+      double sum = 0.0;
+      for (std::size_t first = 0; first + std::size_t(n) <= dirs.size(); first += std::size_t(n)) {
+        env.radianceAndPdf(want, &dirs[first], radiance, pdf, n);
+        for (int i = 0; i < n; ++i) sum += radiance[i].g + pdf[i];
+      }
+      sink += sum;
+    });
+  };
+
   struct Row {
     const char* name;
     std::function<double()> time;
@@ -126,7 +156,11 @@ int main(int argc, char** argv) {
                         {"pdf(dir), uniform dirs", [&] { return timePdf(uniformDirs); }, {}},
                         {"radianceAndPdf, sampled dirs", [&] { return timeRadianceAndPdf(sampled); }, {}},
                         {"radianceAndPdf, uniform dirs", [&] { return timeRadianceAndPdf(uniformDirs); }, {}},
-                        {"radiance(dir), uniform dirs", [&] { return timeRadiance(uniformDirs); }, {}}};
+                        {"radiance(dir), uniform dirs", [&] { return timeRadiance(uniformDirs); }, {}},
+                        {"sample, batches of 8, random u", [&] { return timeSampleBatch(random, 8); }, {}},
+                        {"sample, batches of 64, random u", [&] { return timeSampleBatch(random, 64); }, {}},
+                        {"radianceAndPdf, batches of 8, uniform dirs", [&] { return timeRadianceAndPdfBatch(uniformDirs, 8); }, {}},
+                        {"radianceAndPdf, batches of 64, uniform dirs", [&] { return timeRadianceAndPdfBatch(uniformDirs, 64); }, {}}};
   for (Row& row : rows) row.time();  // warm-up: page faults, caches
   // Runs interleave the calls, so that a burst of load from other processes hits all of them alike.
   for (int run = 0; run < runs; ++run)

@@ -82,7 +82,7 @@ class Distribution2D {
   // loads (guide table → CDF → density) that mostly miss the cache; one lane at a time, each waits for its
   // own chain. Here every step is taken for all lanes before the next, each step's loads prefetched, so the
   // lanes' misses overlap.
-  static constexpr int kMaxBatch = 16;
+  static constexpr int kMaxBatch = 64;
   void sample(const bool* want, const Vec2* u, Sample* out, int n) const;
   double pdf(Vec2 point) const;  // 0 outside [0,1]²
   double cellDensity(std::size_t column, std::size_t row) const { return density_[row * width_ + column]; }

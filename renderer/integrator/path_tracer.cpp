@@ -17,12 +17,18 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <vector>
 
 namespace glossy {
 
 namespace {
 
 constexpr int kTile = 16;
+// Paths traced together (kWaveSize / kPacketSize Embree packets): long enough for the environment's cache
+// misses to overlap, short enough for a wave's state to stay in L1/L2.
+constexpr int kWaveSize = 64;
+static_assert(kWaveSize % kPacketSize == 0, "a wave is whole Embree packets");
+static_assert(kWaveSize <= Environment::kMaxBatch, "a wave's environment lookups are one batch");
 
 double powerHeuristic(double a, double b) {
   const double a2 = a * a, b2 = b * b;
@@ -55,43 +61,44 @@ class PathTracer {
     const Brdf* brdf = nullptr;
   };
 
-  // What a packet's lanes carry between the stages of a vertex. Built once per task and reused: zeroing
-  // it per packet would cost more than some of the stages.
+  // What a wave's lanes carry between the stages of a vertex. Built once per task and reused: zeroing
+  // it per wave would cost more than some of the stages.
   struct Workspace {
-    Rgb throughput[kPacketSize];
-    double bsdfPdf[kPacketSize];  // solid-angle pdf of the BSDF sample that made the ray; 0 for camera rays
-    Hit hits[kPacketSize];
-    bool found[kPacketSize], escaped[kPacketSize], shading[kPacketSize], toEnvironment[kPacketSize];
-    ShadingPoint points[kPacketSize];
-    Vec2 uLight[kPacketSize];
-    Environment::Sample lightSamples[kPacketSize];
-    Rgb skyRadiance[kPacketSize];
-    double skyPdf[kPacketSize];
-    Ray shadows[kPacketSize];
-    bool shadowed[kPacketSize], occluded[kPacketSize];
-    Rgb unoccluded[kPacketSize];  // what each shadow ray brings if it reaches its light
+    Rgb throughput[kWaveSize];
+    double bsdfPdf[kWaveSize];  // solid-angle pdf of the BSDF sample that made the ray; 0 for camera rays
+    Hit hits[kWaveSize];
+    bool found[kWaveSize], escaped[kWaveSize], shading[kWaveSize], toEnvironment[kWaveSize];
+    ShadingPoint points[kWaveSize];
+    Vec2 uLight[kWaveSize];
+    Environment::Sample lightSamples[kWaveSize];
+    Rgb skyRadiance[kWaveSize];
+    double skyPdf[kWaveSize];
+    Ray shadows[kWaveSize];
+    bool shadowed[kWaveSize], occluded[kWaveSize];
+    Rgb unoccluded[kWaveSize];  // what each shadow ray brings if it reaches its light
   };
 
-  // The paths of up to kPacketSize samples, traced together. Each segment's rays go to Embree as one
-  // packet query, each vertex's shadow rays as another, and the environment is looked up and sampled for
-  // all lanes at once, so that the lanes' cache misses in the map overlap instead of queueing. Every lane
-  // has its own sampler and draws exactly what a lone path would (the same dimensions in the same order),
-  // so the image does not depend on how samples are grouped.
-  void tracePacket(Ray* rays, SobolSampler* samplers, bool* alive, Rgb* radiance, Workspace& w) const {
-    for (int i = 0; i < kPacketSize; ++i) {
+  // The paths of up to kWaveSize samples, traced together in stages. Each segment's rays go to Embree as
+  // packet queries of kPacketSize lanes, each vertex's shadow rays likewise, and the environment is looked
+  // up and sampled for all lanes at once: a lookup is a chain of dependent loads that mostly miss the
+  // cache, and across a whole wave each step's misses overlap instead of queueing. Every lane has its own
+  // sampler and draws exactly what a lone path would (the same dimensions in the same order), so the image
+  // does not depend on how samples are grouped.
+  void traceWave(Ray* rays, SobolSampler* samplers, bool* alive, Rgb* radiance, Workspace& w) const {
+    for (int i = 0; i < kWaveSize; ++i) {
       radiance[i] = Rgb(0.0);
       w.throughput[i] = Rgb(1.0);
       w.bsdfPdf[i] = 0.0;
     }
 
     for (int depth = 1;; ++depth) {
-      if (std::none_of(alive, alive + kPacketSize, [](bool a) { return a; })) break;
-      scene_.bvh->intersect(alive, rays, w.hits, w.found);
+      if (std::none_of(alive, alive + kWaveSize, [](bool a) { return a; })) break;
+      for (int p = 0; p < kWaveSize; p += kPacketSize) scene_.bvh->intersect(alive + p, rays + p, w.hits + p, w.found + p);
 
       // Rays that left the scene see the environment, MIS-weighted unless they are camera rays.
-      for (int i = 0; i < kPacketSize; ++i) w.escaped[i] = alive[i] && !w.found[i] && scene_.environment;
+      for (int i = 0; i < kWaveSize; ++i) w.escaped[i] = alive[i] && !w.found[i] && scene_.environment;
       environmentRadiance(w.escaped, rays, w.skyRadiance, w.skyPdf);
-      for (int i = 0; i < kPacketSize; ++i) {
+      for (int i = 0; i < kWaveSize; ++i) {
         if (w.escaped[i])
           radiance[i] += w.throughput[i] * w.skyRadiance[i] *
                          (w.bsdfPdf[i] > 0.0 ? powerHeuristic(w.bsdfPdf[i], pEnvironment_ * w.skyPdf[i]) : 1.0);
@@ -105,8 +112,8 @@ class PathTracer {
         w.uLight[i] = samplers[i].get2D();
         w.toEnvironment[i] = uChoice < pEnvironment_;
       }
-      if (scene_.environment) scene_.environment->sample(w.toEnvironment, w.uLight, w.lightSamples, kPacketSize);
-      for (int i = 0; i < kPacketSize; ++i) {
+      if (scene_.environment) scene_.environment->sample(w.toEnvironment, w.uLight, w.lightSamples, kWaveSize);
+      for (int i = 0; i < kWaveSize; ++i) {
         if (!w.shading[i]) continue;
         const ShadingPoint& sp = w.points[i];
         w.shadowed[i] = w.toEnvironment[i]
@@ -115,8 +122,8 @@ class PathTracer {
         if (w.shadowed[i]) w.unoccluded[i] *= w.throughput[i];
         alive[i] = continuePath(depth, sp, samplers[i], w.throughput[i], w.bsdfPdf[i], rays[i]);
       }
-      scene_.bvh->occluded(w.shadowed, w.shadows, w.occluded);
-      for (int i = 0; i < kPacketSize; ++i)
+      for (int p = 0; p < kWaveSize; p += kPacketSize) scene_.bvh->occluded(w.shadowed + p, w.shadows + p, w.occluded + p);
+      for (int i = 0; i < kWaveSize; ++i)
         if (w.shadowed[i] && !w.occluded[i]) radiance[i] += w.unoccluded[i];
     }
   }
@@ -126,10 +133,10 @@ class PathTracer {
   // does not need the pdf; reading it with the rest costs next to nothing).
   void environmentRadiance(const bool* want, const Ray* rays, Rgb* radiance, double* pdf) const {
     if (!scene_.environment) return;  // then no lane wants it
-    Vec3 dirs[kPacketSize];
-    for (int i = 0; i < kPacketSize; ++i)
+    Vec3 dirs[kWaveSize];
+    for (int i = 0; i < kWaveSize; ++i)
       if (want[i]) dirs[i] = rays[i].dir;
-    scene_.environment->radianceAndPdf(want, dirs, radiance, pdf, kPacketSize);
+    scene_.environment->radianceAndPdf(want, dirs, radiance, pdf, kWaveSize);
   }
 
   // The ray's hit: its emission if it is a light (ending the path), else the shading point. False ends
@@ -269,38 +276,54 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
   const CameraRays cameraRays(camera, settings.width, settings.height);
   auto renderTiles = [&](const tbb::blocked_range2d<int>& tiles) {
     uint64_t localDropped = 0;
-    SobolSampler samplers[kPacketSize];
-    Ray rays[kPacketSize];
-    bool alive[kPacketSize];
-    Rgb radiance[kPacketSize];
+    SobolSampler samplers[kWaveSize];
+    Ray rays[kWaveSize];
+    bool alive[kWaveSize];
+    Rgb radiance[kWaveSize];
+    int lanePixel[kWaveSize];  // which of the tile's pixels each lane samples
     auto workspace = std::make_unique<PathTracer::Workspace>();
+    std::vector<SobolPixel> pixels;
+    std::vector<Rgb> sums;
+    pixels.reserve(size_t(kTile) * kTile);
     for (int ty = tiles.rows().begin(); ty < tiles.rows().end(); ++ty)
       for (int tx = tiles.cols().begin(); tx < tiles.cols().end(); ++tx) {
-        for (int y = ty * kTile; y < std::min(settings.height, (ty + 1) * kTile); ++y)
-          for (int x = tx * kTile; x < std::min(settings.width, (tx + 1) * kTile); ++x) {
-            // A pixel's samples, kPacketSize at a time: their rays are as coherent as rays get.
-            Rgb sum(0.0);
-            SobolPixel pixel(settings.seed, uint32_t(x), uint32_t(y));
-            for (int first = 0; first < settings.spp; first += kPacketSize) {
-              const int lanes = std::min(kPacketSize, settings.spp - first);
-              for (int i = 0; i < kPacketSize; ++i) {
-                alive[i] = i < lanes;
-                if (!alive[i]) continue;
-                samplers[i] = SobolSampler(pixel, uint32_t(settings.firstSample + first + i));
-                rays[i] = cameraRays(Vec2(x, y) + samplers[i].get2D());
-              }
-              tracer.tracePacket(rays, samplers, alive, radiance, *workspace);
-              for (int i = 0; i < lanes; ++i) {
-                if (isFinite(radiance[i]))
-                  sum += radiance[i];
-                else
-                  ++localDropped;
-              }
+        const int x0 = tx * kTile, y0 = ty * kTile;
+        const int tileWidth = std::min(settings.width, x0 + kTile) - x0;
+        const int count = tileWidth * (std::min(settings.height, y0 + kTile) - y0);
+        pixels.clear();
+        for (int p = 0; p < count; ++p)
+          pixels.emplace_back(settings.seed, uint32_t(x0 + p % tileWidth), uint32_t(y0 + p / tileWidth));
+        sums.assign(size_t(count), Rgb(0.0));
+        // The tile's (pixel, sample) pairs in order, kWaveSize at a time: a pixel's samples are neighbours
+        // in a wave, so its packets' rays are as coherent as rays get, and each pixel's sum is taken in
+        // sample order whatever the wave boundaries.
+        int pixel = settings.spp > 0 ? 0 : count, sampleIndex = 0;
+        while (pixel < count) {
+          int lanes = 0;
+          for (; lanes < kWaveSize && pixel < count; ++lanes) {
+            lanePixel[lanes] = pixel;
+            alive[lanes] = true;
+            samplers[lanes] = SobolSampler(pixels[size_t(pixel)], uint32_t(settings.firstSample + sampleIndex));
+            rays[lanes] = cameraRays(Vec2(x0 + pixel % tileWidth, y0 + pixel / tileWidth) + samplers[lanes].get2D());
+            if (++sampleIndex == settings.spp) {
+              sampleIndex = 0;
+              ++pixel;
             }
-            const Rgb mean = sum / double(std::max(1, settings.spp));
-            float* px = image.at(x, y);
-            for (int c = 0; c < 3; ++c) px[c] = float(std::min(mean[c], double(std::numeric_limits<float>::max())));
           }
+          std::fill(alive + lanes, alive + kWaveSize, false);
+          tracer.traceWave(rays, samplers, alive, radiance, *workspace);
+          for (int i = 0; i < lanes; ++i) {
+            if (isFinite(radiance[i]))
+              sums[size_t(lanePixel[i])] += radiance[i];
+            else
+              ++localDropped;
+          }
+        }
+        for (int p = 0; p < count; ++p) {
+          const Rgb mean = sums[size_t(p)] / double(std::max(1, settings.spp));
+          float* px = image.at(x0 + p % tileWidth, y0 + p / tileWidth);
+          for (int c = 0; c < 3; ++c) px[c] = float(std::min(mean[c], double(std::numeric_limits<float>::max())));
+        }
         progress.advance();
       }
     dropped += localDropped;

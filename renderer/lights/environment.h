@@ -37,7 +37,7 @@ class Environment {
   // Batch forms for the path tracer's packets: for the lanes with want[i] (i < n ≤ kMaxBatch), exactly
   // what sample(u[i]) and radianceAndPdf(dirs[i], pdf[i]) return. The lanes' map and table reads are
   // issued step by step for all of them, so that their cache misses overlap instead of queueing.
-  static constexpr int kMaxBatch = 16;
+  static constexpr int kMaxBatch = 64;
   void sample(const bool* want, const Vec2* u, Sample* out, int n) const;
   void radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const;
   const std::string& description() const;  // for image metadata: file name, "constant r,g,b", "default sky"
