@@ -115,10 +115,9 @@ struct Environment::Impl {
     return distribution.cellDensity(std::size_t(at.c0), std::size_t(at.r0)) / (2.0 * kPi * kPi * sinTheta);
   }
 
-  // The sample of the map at the lookup position `at` of the cell Distribution2D drew.
-  Sample sampleAt(const Distribution2D::Sample& cell, const LatLongPosition& at) const {
-    double sinTheta = 0.0;
-    const Vec3 dir = grid.direction(at.c0, at.r0, at.fx, at.fy, sinTheta);
+  // The sample of the map in direction dir (with its sin θ), at the lookup position `at` of the cell
+  // Distribution2D drew.
+  Sample sampleAt(const Distribution2D::Sample& cell, const LatLongPosition& at, const Vec3& dir, double sinTheta) const {
     // At a pole the lat-long Jacobian vanishes and the solid-angle density is unbounded: no usable sample.
     if (cell.pdf <= 0.0 || sinTheta <= 0.0) return {};
     return {dir, map.interpolate(at), cell.pdf / (2.0 * kPi * kPi * sinTheta)};
@@ -204,8 +203,10 @@ Environment::Sample Environment::sample(Vec2 u) const {
     return {Vec3(sinTheta * std::cos(phi), cosTheta, sinTheta * std::sin(phi)), env.constantRadiance, kInv4Pi};
   }
 
-  const Distribution2D::Sample cell = env.distribution.sample(u);
-  return env.sampleAt(cell, cellPosition(cell, env.map.width(), env.map.height()));
+  const bool want = true;
+  Sample out;
+  sample(&want, &u, &out, 1);
+  return out;
 }
 
 static_assert(Environment::kMaxBatch <= Distribution2D::kMaxBatch, "a batch of samples is one Distribution2D batch");
@@ -218,15 +219,20 @@ void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) co
     return;
   }
   Distribution2D::Sample cells[kMaxBatch];
-  LatLongPosition at[kMaxBatch];
   env.distribution.sample(want, u, cells, n);
+  // The wanted lanes, packed, for the grid's batch conversion.
+  int lane[kMaxBatch], count = 0;
+  LatLongPosition at[kMaxBatch];
   for (int i = 0; i < n; ++i) {
     if (!want[i]) continue;
-    at[i] = cellPosition(cells[i], env.map.width(), env.map.height());
-    env.map.prefetch(at[i]);
+    at[count] = cellPosition(cells[i], env.map.width(), env.map.height());
+    env.map.prefetch(at[count]);
+    lane[count++] = i;
   }
-  for (int i = 0; i < n; ++i)
-    if (want[i]) out[i] = env.sampleAt(cells[i], at[i]);
+  Vec3 dirs[kMaxBatch];
+  double sinTheta[kMaxBatch];
+  env.grid.directions(at, dirs, sinTheta, count);
+  for (int k = 0; k < count; ++k) out[lane[k]] = env.sampleAt(cells[lane[k]], at[k], dirs[k], sinTheta[k]);
 }
 
 void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const {
@@ -236,17 +242,23 @@ void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radian
       if (want[i]) radiance[i] = radianceAndPdf(dirs[i], pdf[i]);
     return;
   }
+  // The wanted lanes, packed, for the grid's batch conversion.
+  int lane[kMaxBatch], count = 0;
+  Vec3 packed[kMaxBatch];
+  for (int i = 0; i < n; ++i)
+    if (want[i]) {
+      packed[count] = dirs[i];
+      lane[count++] = i;
+    }
   LatLongPosition at[kMaxBatch];
-  for (int i = 0; i < n; ++i) {
-    if (!want[i]) continue;
-    at[i] = env.grid.position(dirs[i]);
-    env.map.prefetch(at[i]);
-    env.distribution.prefetchCellDensity(std::size_t(at[i].c0), std::size_t(at[i].r0));
+  env.grid.positions(packed, at, count);
+  for (int k = 0; k < count; ++k) {
+    env.map.prefetch(at[k]);
+    env.distribution.prefetchCellDensity(std::size_t(at[k].c0), std::size_t(at[k].r0));
   }
-  for (int i = 0; i < n; ++i) {
-    if (!want[i]) continue;
-    pdf[i] = env.pdfAt(dirs[i], at[i]);
-    radiance[i] = env.map.interpolate(at[i]);
+  for (int k = 0; k < count; ++k) {
+    pdf[lane[k]] = env.pdfAt(packed[k], at[k]);
+    radiance[lane[k]] = env.map.interpolate(at[k]);
   }
 }
 

@@ -106,95 +106,36 @@ class LatLongMap {
   HugePageVector<float> rgb_;
 };
 
-// The cells of a W × H lat-long map (the bilinear patches between texel centres, W × (H − 1)) as
-// directions, without atan2, acos, sin or cos per call: between the cell edges, whose sines and cosines are
-// tabulated, the angles are within one cell of an edge, where short series are exact to double rounding.
-// A map is turned by uOffset (looked up at u_world + uOffset).
-//
-// position() gives what latLongPosition(u, v) gives for the direction's (u, v) — the same cell and the
-// same weights up to rounding (a few 1e-16) — and direction() is its inverse. Maps too coarse for the
-// series (cells wider than kMaxStep) take the libm formulas.
+// Directions and lookup positions on a W × H lat-long map turned by uOffset (looked up at
+// u_world + uOffset), by the spec's formulas, for whole batches at a time: θ = atan2(ρ, y) (= acos y for a
+// unit direction, and as accurate near the poles), φ = atan2(x, −z), and back by sin and cos, all from
+// lanes:: (libmvec), a few ns per lane where libm's scalar calls cost 20–30. The one-direction forms are
+// batches of one, so they return exactly what the same direction gets in any batch.
 class LatLongGrid {
  public:
-  static constexpr double kMaxStep = 0.025;  // radians; the series below are exact to ~1e-19 up to here
-
   LatLongGrid() = default;
   LatLongGrid(int width, int height, double uOffset)
-      : width_(width), height_(height), uOffset_(uOffset), rows_(height - 1),
-        dPhi_(2.0 * kPi / width), dTheta_(kPi / (height - 1)) {
-    tabulated_ = dPhi_ <= kMaxStep && dTheta_ <= kMaxStep;
-    if (!tabulated_) return;
-    // Edge c of the columns (world φ) is the centre of texel c: u_map = (c + ½)/W.
-    columnEdges_.resize(std::size_t(width));
-    for (int c = 0; c < width; ++c) {
-      const double phi = 2.0 * kPi * ((c + 0.5) / width - uOffset);
-      columnEdges_[std::size_t(c)] = {std::cos(phi), std::sin(phi)};
-    }
-    // Edge r of the rows is texel row r: θ = πr/(H − 1).
-    rowEdges_.resize(std::size_t(height));
-    for (int r = 0; r < height; ++r) {
-      const double theta = kPi * double(r) / double(rows_);
-      rowEdges_[std::size_t(r)] = {std::cos(theta), std::sin(theta)};
-    }
-    rowEdges_.back() = {-1.0, 0.0};  // exactly the pole, as row 0 is
-  }
+      : width_(width), height_(height), uOffset_(uOffset), rows_(height - 1) {}
 
-  // The lookup position of unit direction d (x = u·W − ½ split into column c0 and weight fx, likewise y).
+  // out[i]: the lookup position of unit direction d[i], what latLongPosition(uvOf(d[i])) gives (the same
+  // cell and weights up to rounding, and cells differing only on an edge). Any n.
+  void positions(const Vec3* d, LatLongPosition* out, int n) const;
   LatLongPosition position(const Vec3& d) const {
-    const double rho = std::sqrt(d.x * d.x + d.z * d.z);  // sin θ
-    // Within 1e-4 of a pole the half-plane tests below lose their sign; the formulas cost nothing there.
-    if (!tabulated_ || !(rho > 1e-4)) return latLongPosition(uvOf(d), width_, height_);
-
-    const double y = std::clamp(d.y, -1.0, 1.0);
-    // The row: θ ∈ [θ_r, θ_r+1), i.e. sin(θ − θ_r) = ρ cos θ_r − y sin θ_r ≥ 0 > sin(θ − θ_r+1), from a
-    // guess good to 1e-5 rad, a small fraction of a row: the loops take a step now and then, rarely two.
-    const double rowGuess = approxAtan2(rho, y) * (rows_ / kPi);
-    int r = rowGuess > 0.0 ? std::min(int(rowGuess), rows_ - 1) : 0;
-    auto aboveRowEdge = [&](int edge) {
-      const Edge& e = rowEdges_[std::size_t(edge)];
-      return rho * e.cos - y * e.sin;
-    };
-    while (r > 0 && aboveRowEdge(r) < 0.0) --r;
-    while (r < rows_ - 1 && aboveRowEdge(r + 1) >= 0.0) ++r;
-    const double fy = std::clamp(asinSmall(aboveRowEdge(r)) / dTheta_, 0.0, 1.0);
-
-    // The column likewise: φ ∈ [e_c, e_c+1) with sin(φ − e) = (x cos e + z sin e)/ρ, as sin φ = x/ρ and
-    // cos φ = −z/ρ.
-    const double columnGuess = (approxAtan2(d.x, -d.z) * (0.5 * kInvPi) + uOffset_) * width_ - 0.5;
-    int c = std::isfinite(columnGuess) ? int(std::floor(columnGuess)) % width_ : 0;
-    if (c < 0) c += width_;
-    auto pastColumnEdge = [&](int edge) {
-      const Edge& e = columnEdges_[std::size_t(edge)];
-      return d.x * e.cos + d.z * e.sin;
-    };
-    // Bounded loops: the tests cannot disagree for long, but a direction that is not unit must still end.
-    for (int k = 0; k < width_ && pastColumnEdge(c) < 0.0; ++k) c = c == 0 ? width_ - 1 : c - 1;
-    for (int k = 0; k < width_ && pastColumnEdge(next(c)) >= 0.0; ++k) c = next(c);
-    const double fx = std::clamp(asinSmall(pastColumnEdge(c) / rho) / dPhi_, 0.0, 1.0);
-    return {c, next(c), r, fx, fy};
+    LatLongPosition p;
+    positions(&d, &p, 1);
+    return p;
   }
 
-  // The unit direction at weights (fx, fy) in cell (column, row), and its sin θ.
+  // out[i]: the unit direction at the weights of at[i] in its cell, and its sin θ. Any n.
+  void directions(const LatLongPosition* at, Vec3* out, double* sinTheta, int n) const;
   Vec3 direction(int column, int row, double fx, double fy, double& sinTheta) const {
-    if (!tabulated_) {
-      const double v = (row + fy) / rows_;
-      const double uMap = wrapUnit((column + fx + 0.5) / width_);
-      const double theta = kPi * v, phi = 2.0 * kPi * wrapUnit(uMap - uOffset_);
-      sinTheta = std::sin(theta);
-      return {sinTheta * std::sin(phi), std::cos(theta), -sinTheta * std::cos(phi)};
-    }
-    const Edge r = rowEdges_[std::size_t(row)], c = columnEdges_[std::size_t(column)];
-    double sinT, cosT, sinP, cosP;
-    sinCosSmall(fy * dTheta_, sinT, cosT);
-    sinCosSmall(fx * dPhi_, sinP, cosP);
-    // θ = θ_r + δθ, φ = e_c + δφ by the angle sums.
-    sinTheta = r.sin * cosT + r.cos * sinT;
-    const double cosTheta = r.cos * cosT - r.sin * sinT;
-    const double sinPhi = c.sin * cosP + c.cos * sinP, cosPhi = c.cos * cosP - c.sin * sinP;
-    return {sinTheta * sinPhi, cosTheta, -sinTheta * cosPhi};
+    const LatLongPosition at{column, column + 1 == width_ ? 0 : column + 1, row, fx, fy};
+    Vec3 d;
+    directions(&at, &d, &sinTheta, 1);
+    return d;
   }
 
-  // (u, v) in the map, by the spec's formulas.
+  // (u, v) in the map, by the spec's formulas (libm, one direction).
   Vec2 uvOf(const Vec3& d) const {
     Vec2 uv = latLongFromDirection(d);
     uv.x = wrapUnit(uv.x + uOffset_);
@@ -202,39 +143,9 @@ class LatLongGrid {
   }
 
  private:
-  struct Edge {
-    double cos = 1.0, sin = 0.0;
-  };
-
-  int next(int column) const { return column + 1 == width_ ? 0 : column + 1; }
-
-  // atan2 to about 1e-5 rad (Abramowitz & Stegun 4.4.49 on the octant): only a guess, corrected exactly.
-  static double approxAtan2(double y, double x) {
-    const double ax = std::abs(x), ay = std::abs(y), hi = std::max(ax, ay);
-    const double t = hi > 0.0 ? std::min(ax, ay) / hi : 0.0, t2 = t * t;
-    double a = t * (0.9998660 + t2 * (-0.3302995 + t2 * (0.1801410 + t2 * (-0.0851330 + t2 * 0.0208351))));
-    if (ay > ax) a = 0.5 * kPi - a;
-    if (x < 0.0) a = kPi - a;
-    return y < 0.0 ? -a : a;
-  }
-  // asin t for |t| ≤ sin kMaxStep: the Taylor series to t⁹ (the next term is < 1e-19 of t).
-  static double asinSmall(double t) {
-    const double t2 = t * t;
-    return t * (1.0 + t2 * (1.0 / 6.0 + t2 * (3.0 / 40.0 + t2 * (5.0 / 112.0 + t2 * (35.0 / 1152.0)))));
-  }
-  // sin and cos of |a| ≤ kMaxStep: Taylor series to a⁹ and a¹⁰.
-  static void sinCosSmall(double a, double& s, double& c) {
-    const double a2 = a * a;
-    s = a * (1.0 - a2 / 6.0 * (1.0 - a2 / 20.0 * (1.0 - a2 / 42.0 * (1.0 - a2 / 72.0))));
-    c = 1.0 - a2 / 2.0 * (1.0 - a2 / 12.0 * (1.0 - a2 / 30.0 * (1.0 - a2 / 56.0 * (1.0 - a2 / 90.0))));
-  }
-
   int width_ = 0, height_ = 0;
   double uOffset_ = 0.0;
   int rows_ = 0;  // of cells: H − 1
-  double dPhi_ = 0.0, dTheta_ = 0.0;
-  bool tabulated_ = false;
-  std::vector<Edge> columnEdges_, rowEdges_;
 };
 
 }  // namespace glossy
