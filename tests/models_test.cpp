@@ -38,6 +38,7 @@ TEST(Fresnel, LimitsAndNormalIncidence) {
   for (double eta : {1.0001, 1.5, 2.236525, 9.79957, 99.999413}) {
     const double f0 = (eta - 1) / (eta + 1);
     EXPECT_NEAR(fresnelCookTorrance(1.0, eta), f0 * f0, 1e-15) << eta;
+    EXPECT_NEAR(fresnelAtNormalIncidence(eta), fresnelCookTorrance(1.0, eta), 1e-15) << eta;
     EXPECT_NEAR(fresnelCookTorrance(0.0, eta), 1.0, 1e-15) << eta;
     // Against the textbook form: the mean of the s and p reflectances with Snell's law.
     for (double c = 0.0; c <= 1.0; c += 1.0 / 64) {

@@ -53,7 +53,7 @@ struct AshikhminShirley {
   // Sampling: cos θ_h = ξ^(1/(n+1)), i.e. 1 − cos θ_h = −expm1(ln ξ / (n+1)); pdf_h = (n+1)/(2π) cosⁿθ_h.
   double specularProbability() const {
     // Head-on lobe albedo ≈ Ks F(1): the (n+1)/(2π) cosⁿ lobe integrates to 1 over H's hemisphere.
-    return lobeProbability(meanOf(ks) * fresnelCookTorrance(1.0, eta), kd);
+    return lobeProbability(meanOf(ks) * fresnelAtNormalIncidence(eta), kd);
   }
   bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const {
     return reflectAboutHalfVector(V, -std::expm1(std::log(u.x) / (n + 1.0)), 2.0 * kPi * u.y, L);

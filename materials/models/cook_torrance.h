@@ -57,7 +57,7 @@ struct CookTorrance {
   // Sampling (Beckmann): tan²θ_h = −m² ln(1 − ξ), φ_h uniform; pdf_h = exp(−tan²θ_h/m²) / (π m² cos³θ_h).
   double specularProbability() const {
     // Head-on lobe albedo ≈ 4 Ks F(1): D cos θ_h integrates to π over the hemisphere (G ≈ 1).
-    return lobeProbability(4.0 * meanOf(ks) * fresnelCookTorrance(1.0, eta), kd);
+    return lobeProbability(4.0 * meanOf(ks) * fresnelAtNormalIncidence(eta), kd);
   }
   bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const {
     const double tan2 = -m * m * std::log1p(-u.x);

@@ -23,4 +23,10 @@ T fresnelCookTorrance(double c, const T& eta) {
   return 0.5 * a * a * (1.0 + b * b);
 }
 
+// F(1) in closed form, ((η − 1)/(η + 1))²: the samplers' lobe probabilities read it at every vertex.
+inline double fresnelAtNormalIncidence(double eta) {
+  const double r = (eta - 1.0) / (eta + 1.0);
+  return r * r;
+}
+
 }  // namespace glossy

@@ -20,11 +20,11 @@ struct HalfVector {
   HalfVector(const Vec3& L, const Vec3& V) {
     const Vec3 h = L + V;
     const double p2 = h.x * h.x + h.y * h.y;
-    const double len = std::sqrt(p2 + h.z * h.z);
-    cosTheta = h.z / len;
+    const double len = std::sqrt(p2 + h.z * h.z), invLen = 1.0 / len;
+    cosTheta = h.z * invLen;
     oneMinusCosTheta = p2 / (len * (len + h.z));
     tan2Theta = p2 / (h.z * h.z);
-    cosVH = (V.x * h.x + V.y * h.y + V.z * h.z) / len;
+    cosVH = (V.x * h.x + V.y * h.y + V.z * h.z) * invLen;
   }
 };
 

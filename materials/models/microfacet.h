@@ -52,7 +52,7 @@ struct Microfacet {
   // pdf(L) = pdf_h / (4⟨V,H⟩), pdf_h = S(x) / (2π ∫₀¹ S).
   double specularProbability() const {
     // Head-on lobe albedo ≈ 8 A F(1) ∫ S(x) dx over H within 45° of N (G ≈ 1).
-    return lobeProbability(8.0 * meanOf(a) * fresnelCookTorrance(1.0, eta) * AbcProfile{b, c}.integral(1.0 - std::sqrt(0.5)), kd);
+    return lobeProbability(8.0 * meanOf(a) * fresnelAtNormalIncidence(eta) * AbcProfile{b, c}.integral(1.0 - std::sqrt(0.5)), kd);
   }
   bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const {
     return reflectAboutHalfVector(V, AbcProfile{b, c}.invert(u.x, 1.0), 2.0 * kPi * u.y, L);

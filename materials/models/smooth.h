@@ -57,7 +57,7 @@ struct Smooth {
   // pdf(L) = p_disk(L_p) cos θ_L with p_disk = S(d²) / (π ∫₀^{R²} S). Exact for every C.
   double specularProbability() const {
     // Head-on lobe albedo ≈ π A F(1) ∫₀¹ S(s) ds (s = sin²θ_L).
-    return lobeProbability(kPi * meanOf(a) * fresnelCookTorrance(1.0, eta) * AbcProfile{b, c}.integral(1.0), kd);
+    return lobeProbability(kPi * meanOf(a) * fresnelAtNormalIncidence(eta) * AbcProfile{b, c}.integral(1.0), kd);
   }
   bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const {
     const double r = 1.0 + std::sqrt(V.x * V.x + V.y * V.y);
