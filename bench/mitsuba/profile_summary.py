@@ -18,8 +18,8 @@ import sys
 CATEGORIES = [  # (category, regex on the file the instructions come from, or on the object)
     ("Embree traversal (libembree3)", r"libembree3"),
     ("Sobol sampler (sobol_sampler.h)", r"sobol_sampler\.h"),
-    ("environment: lookup, pdf, sampling (latlong.h, environment.cpp, distribution.*)",
-     r"latlong\.h|environment\.cpp|distribution\.(cpp|h)"),
+    ("environment: lookup, pdf, sampling (latlong.*, environment.cpp, distribution.*, libmvec)",
+     r"latlong\.(h|cpp)|environment\.cpp|distribution\.(cpp|h)|lane_math\.cpp|libmvec"),
     ("BRDF eval / sample / pdf (materials/models)",
      r"materials/models/|\b(cook_torrance|brdf_sample|brdf|fresnel|half_vector|vgroove|warp|lambertian)\.h"),
     ("ray/hit set-up around Embree (embree_scene.cpp)", r"embree_scene\.cpp"),
@@ -32,13 +32,11 @@ LIBM = re.compile(r"libm\.so|/math/|sysdeps/ieee754|fenv_private")
 
 
 # A sampling profile has no call graph here (libm has no frame pointers): its libm time is charged by
-# function to the callers that callgrind finds for it on this scene (atan2 and acos: only the lat-long
-# lookup; tan: the camera; exp, log1p: the BRDF; sincos: environment sampling about 2/3, BRDF sampling 1/3).
+# function to the callers that callgrind finds for it on this scene (the environment's trigonometry is
+# libmvec's, not libm's; tan: the camera; exp, log1p, sincos: the BRDF's sampling and evaluation).
 LIBM_CALLERS = [
-    (r"atan2|acos", "environment: lookup, pdf, sampling (latlong.h, environment.cpp, distribution.*)"),
     (r"\btan|_tan", "camera rays (camera_rays.h)"),
-    (r"exp|log1p", "BRDF eval / sample / pdf (materials/models)"),
-    (r"sincos|sin|cos", "sincos (environment and BRDF sampling)"),
+    (r"exp|log1p|sincos|sin|cos", "BRDF eval / sample / pdf (materials/models)"),
 ]
 
 

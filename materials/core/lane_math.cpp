@@ -21,10 +21,11 @@ namespace glossy::lanes {
 namespace {
 
 // Initialised before main, hence the explicit __builtin_cpu_init.
-const bool kHasAvx2 = [] {
+const bool kCpuHasAvx2 = [] {
   __builtin_cpu_init();
   return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 }();
+bool useAvx2 = kCpuHasAvx2;
 
 // A batch of n lanes as whole vectors of W: the last, partial one is copied into padded arrays (padding
 // with harmless arguments, 0 and 1) and its lanes copied back.
@@ -92,12 +93,20 @@ void sinCosSse2(const double* a, double* s, double* c, int n) {
 
 }  // namespace
 
+Isa isa() { return useAvx2 ? Isa::Avx2 : Isa::Sse2; }
+
+bool setIsa(Isa isa) {
+  if (isa == Isa::Avx2 && !kCpuHasAvx2) return false;
+  useAvx2 = isa == Isa::Avx2;
+  return true;
+}
+
 void atan2(const double* y, const double* x, double* out, int n) {
-  kHasAvx2 ? atan2Avx2(y, x, out, n) : atan2Sse2(y, x, out, n);
+  useAvx2 ? atan2Avx2(y, x, out, n) : atan2Sse2(y, x, out, n);
 }
 
 void sinCos(const double* a, double* s, double* c, int n) {
-  kHasAvx2 ? sinCosAvx2(a, s, c, n) : sinCosSse2(a, s, c, n);
+  useAvx2 ? sinCosAvx2(a, s, c, n) : sinCosSse2(a, s, c, n);
 }
 
 }  // namespace glossy::lanes
