@@ -1,11 +1,35 @@
 // libmvec's entry points follow the x86-64 vector function ABI (_ZGV<isa>N<lanes><args>_<name>): 'b' is
 // SSE2 (xmm, baseline x86-64), 'd' AVX2 (ymm). The AVX2 loops are compiled for AVX2 alone and chosen once
-// at run time, so the rest of the build stays baseline x86-64.
+// at run time, so the rest of the build stays baseline x86-64. Elsewhere (no libmvec ABI to call) the
+// lanes are libm's, one at a time.
 #include "materials/core/lane_math.h"
 
-#include <immintrin.h>
-
 #include <algorithm>
+#include <cmath>
+
+#if !defined(__x86_64__)
+
+namespace glossy::lanes {
+
+Isa isa() { return Isa::Sse2; }
+bool setIsa(Isa isa) { return isa == Isa::Sse2; }
+
+void atan2(const double* y, const double* x, double* out, int n) {
+  for (int i = 0; i < n; ++i) out[i] = std::atan2(y[i], x[i]);
+}
+
+void sinCos(const double* a, double* s, double* c, int n) {
+  for (int i = 0; i < n; ++i) {
+    s[i] = std::sin(a[i]);
+    c[i] = std::cos(a[i]);
+  }
+}
+
+}  // namespace glossy::lanes
+
+#else
+
+#include <immintrin.h>
 
 extern "C" {
 __m128d _ZGVbN2vv_atan2(__m128d y, __m128d x);
@@ -110,3 +134,5 @@ void sinCos(const double* a, double* s, double* c, int n) {
 }
 
 }  // namespace glossy::lanes
+
+#endif  // __x86_64__

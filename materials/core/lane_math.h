@@ -14,8 +14,9 @@ void atan2(const double* y, const double* x, double* out, int n);
 // sinOut[i] = sin(a[i]), cosOut[i] = cos(a[i]) for i < n.
 void sinCos(const double* a, double* sinOut, double* cosOut, int n);
 
-// Which of libmvec's variants the calls use: AVX2 where the CPU has it (chosen at start-up). Tests switch
-// to SSE2 to check that path too; nothing else should.
+// Which of libmvec's variants the calls use: AVX2 where the CPU has it (chosen at start-up), else SSE2;
+// off x86-64, libm one lane at a time (reported as Sse2). Tests switch to SSE2 to check that path too;
+// nothing else should.
 enum class Isa { Sse2, Avx2 };
 Isa isa();
 bool setIsa(Isa isa);  // false (and no change) if the CPU lacks it
