@@ -9,13 +9,13 @@ namespace {
 constexpr int kChunk = 64;  // lanes converted per pass, on the stack
 }
 
-void LatLongGrid::positions(const Vec3* d, LatLongPosition* out, int n) const {
+void LatLongGrid::positions(const Vec3* d, const int* lanes, int n, LatLongPosition* out) const {
   for (int first = 0; first < n; first += kChunk) {
     const int count = std::min(kChunk, n - first);
     // θ and φ of every lane from one pass: y and x of the two atan2s side by side.
     double y[2 * kChunk], x[2 * kChunk], angle[2 * kChunk];
     for (int i = 0; i < count; ++i) {
-      const Vec3& v = d[first + i];
+      const Vec3& v = d[lanes[first + i]];
       y[i] = std::sqrt(v.x * v.x + v.z * v.z);
       x[i] = v.y;
       y[count + i] = v.x;

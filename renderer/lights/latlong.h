@@ -117,12 +117,13 @@ class LatLongGrid {
   LatLongGrid(int width, int height, double uOffset)
       : width_(width), height_(height), uOffset_(uOffset), rows_(height - 1) {}
 
-  // out[i]: the lookup position of unit direction d[i], what latLongPosition(uvOf(d[i])) gives (the same
-  // cell and weights up to rounding, and cells differing only on an edge). Any n.
-  void positions(const Vec3* d, LatLongPosition* out, int n) const;
+  // out[k]: the lookup position of unit direction d[lanes[k]], k < n, what latLongPosition(uvOf(...))
+  // gives (the same cell and weights up to rounding, and cells differing only on an edge). Any n.
+  void positions(const Vec3* d, const int* lanes, int n, LatLongPosition* out) const;
   LatLongPosition position(const Vec3& d) const {
+    const int lane = 0;
     LatLongPosition p;
-    positions(&d, &p, 1);
+    positions(&d, &lane, 1, &p);
     return p;
   }
 
