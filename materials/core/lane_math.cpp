@@ -51,68 +51,41 @@ const bool kCpuHasAvx2 = [] {
 }();
 bool useAvx2 = kCpuHasAvx2;
 
-// A batch of n lanes as whole vectors of W: the last, partial one is copied into padded arrays (padding
-// with harmless arguments, 0 and 1) and its lanes copied back.
-template <int W>
-struct Padded {
-  alignas(32) double in0[W], in1[W], out0[W], out1[W];
-  int count;
-  Padded(const double* a, const double* b, int n) : count(n) {
-    std::fill(in0, in0 + W, 0.0);
-    std::fill(in1, in1 + W, 1.0);
-    std::copy(a, a + n, in0);
-    if (b) std::copy(b, b + n, in1);
-  }
-};
+// One vector's worth of lanes per call (4 for AVX2, 2 for SSE2): in0, in1 are the arguments, out0, out1
+// the results (atan2: out0 = atan2(in0, in1); sinCos: out0 = sin in0, out1 = cos in0). Only these touch
+// the ISA's registers; the loop around them is the same for both.
+using Block = void (*)(const double* in0, const double* in1, double* out0, double* out1);
 
-__attribute__((target("avx2,fma"))) void atan2Avx2(const double* y, const double* x, double* out, int n) {
-  int i = 0;
-  for (; i + 4 <= n; i += 4) _mm256_storeu_pd(out + i, _ZGVdN4vv_atan2(_mm256_loadu_pd(y + i), _mm256_loadu_pd(x + i)));
-  if (i == n) return;
-  Padded<4> t(y + i, x + i, n - i);
-  _mm256_store_pd(t.out0, _ZGVdN4vv_atan2(_mm256_load_pd(t.in0), _mm256_load_pd(t.in1)));
-  std::copy(t.out0, t.out0 + t.count, out + i);
+__attribute__((target("avx2,fma"))) void atan2Avx2(const double* y, const double* x, double* out, double*) {
+  _mm256_storeu_pd(out, _ZGVdN4vv_atan2(_mm256_loadu_pd(y), _mm256_loadu_pd(x)));
+}
+__attribute__((target("avx2,fma"))) void sinCosAvx2(const double* a, const double*, double* s, double* c) {
+  const __m256d v = _mm256_loadu_pd(a);
+  _mm256_storeu_pd(s, _ZGVdN4v_sin(v));
+  _mm256_storeu_pd(c, _ZGVdN4v_cos(v));
+}
+void atan2Sse2(const double* y, const double* x, double* out, double*) {
+  _mm_storeu_pd(out, _ZGVbN2vv_atan2(_mm_loadu_pd(y), _mm_loadu_pd(x)));
+}
+void sinCosSse2(const double* a, const double*, double* s, double* c) {
+  const __m128d v = _mm_loadu_pd(a);
+  _mm_storeu_pd(s, _ZGVbN2v_sin(v));
+  _mm_storeu_pd(c, _ZGVbN2v_cos(v));
 }
 
-__attribute__((target("avx2,fma"))) void sinCosAvx2(const double* a, double* s, double* c, int n) {
+// n lanes as whole blocks of w: the last, partial one goes through arrays padded with harmless
+// arguments (0 and 1), and only its real lanes are copied back. in1 and out1 may be null where the
+// operation has no second argument or result.
+void forBlocks(Block block, int w, const double* in0, const double* in1, double* out0, double* out1, int n) {
   int i = 0;
-  for (; i + 4 <= n; i += 4) {
-    const __m256d v = _mm256_loadu_pd(a + i);
-    _mm256_storeu_pd(s + i, _ZGVdN4v_sin(v));
-    _mm256_storeu_pd(c + i, _ZGVdN4v_cos(v));
-  }
+  for (; i + w <= n; i += w) block(in0 + i, in1 ? in1 + i : nullptr, out0 + i, out1 ? out1 + i : nullptr);
   if (i == n) return;
-  Padded<4> t(a + i, nullptr, n - i);
-  const __m256d v = _mm256_load_pd(t.in0);
-  _mm256_store_pd(t.out0, _ZGVdN4v_sin(v));
-  _mm256_store_pd(t.out1, _ZGVdN4v_cos(v));
-  std::copy(t.out0, t.out0 + t.count, s + i);
-  std::copy(t.out1, t.out1 + t.count, c + i);
-}
-
-void atan2Sse2(const double* y, const double* x, double* out, int n) {
-  int i = 0;
-  for (; i + 2 <= n; i += 2) _mm_storeu_pd(out + i, _ZGVbN2vv_atan2(_mm_loadu_pd(y + i), _mm_loadu_pd(x + i)));
-  if (i == n) return;
-  Padded<2> t(y + i, x + i, n - i);
-  _mm_store_pd(t.out0, _ZGVbN2vv_atan2(_mm_load_pd(t.in0), _mm_load_pd(t.in1)));
-  std::copy(t.out0, t.out0 + t.count, out + i);
-}
-
-void sinCosSse2(const double* a, double* s, double* c, int n) {
-  int i = 0;
-  for (; i + 2 <= n; i += 2) {
-    const __m128d v = _mm_loadu_pd(a + i);
-    _mm_storeu_pd(s + i, _ZGVbN2v_sin(v));
-    _mm_storeu_pd(c + i, _ZGVbN2v_cos(v));
-  }
-  if (i == n) return;
-  Padded<2> t(a + i, nullptr, n - i);
-  const __m128d v = _mm_load_pd(t.in0);
-  _mm_store_pd(t.out0, _ZGVbN2v_sin(v));
-  _mm_store_pd(t.out1, _ZGVbN2v_cos(v));
-  std::copy(t.out0, t.out0 + t.count, s + i);
-  std::copy(t.out1, t.out1 + t.count, c + i);
+  double a[4] = {0.0, 0.0, 0.0, 0.0}, b[4] = {1.0, 1.0, 1.0, 1.0}, r0[4], r1[4];
+  std::copy(in0 + i, in0 + n, a);
+  if (in1) std::copy(in1 + i, in1 + n, b);
+  block(a, b, r0, r1);
+  std::copy(r0, r0 + (n - i), out0 + i);
+  if (out1) std::copy(r1, r1 + (n - i), out1 + i);
 }
 
 }  // namespace
@@ -126,11 +99,17 @@ bool setIsa(Isa isa) {
 }
 
 void atan2(const double* y, const double* x, double* out, int n) {
-  useAvx2 ? atan2Avx2(y, x, out, n) : atan2Sse2(y, x, out, n);
+  if (useAvx2)
+    forBlocks(atan2Avx2, 4, y, x, out, nullptr, n);
+  else
+    forBlocks(atan2Sse2, 2, y, x, out, nullptr, n);
 }
 
 void sinCos(const double* a, double* s, double* c, int n) {
-  useAvx2 ? sinCosAvx2(a, s, c, n) : sinCosSse2(a, s, c, n);
+  if (useAvx2)
+    forBlocks(sinCosAvx2, 4, a, nullptr, s, c, n);
+  else
+    forBlocks(sinCosSse2, 2, a, nullptr, s, c, n);
 }
 
 }  // namespace glossy::lanes

@@ -93,7 +93,8 @@ class PathTracer {
 
     for (int depth = 1;; ++depth) {
       if (std::none_of(alive, alive + kWaveSize, [](bool a) { return a; })) break;
-      for (int p = 0; p < kWaveSize; p += kPacketSize) scene_.bvh->intersect(alive + p, rays + p, w.hits + p, w.found + p);
+      for (int p = 0; p < kWaveSize; p += kPacketSize)
+        scene_.bvh->intersect(alive + p, rays + p, w.hits + p, w.found + p);
 
       // Rays that left the scene see the environment, MIS-weighted unless they are camera rays.
       for (int i = 0; i < kWaveSize; ++i) w.escaped[i] = alive[i] && !w.found[i] && scene_.environment;
@@ -122,7 +123,8 @@ class PathTracer {
         if (w.shadowed[i]) w.unoccluded[i] *= w.throughput[i];
         alive[i] = continuePath(depth, sp, samplers[i], w.throughput[i], w.bsdfPdf[i], rays[i]);
       }
-      for (int p = 0; p < kWaveSize; p += kPacketSize) scene_.bvh->occluded(w.shadowed + p, w.shadows + p, w.occluded + p);
+      for (int p = 0; p < kWaveSize; p += kPacketSize)
+        scene_.bvh->occluded(w.shadowed + p, w.shadows + p, w.occluded + p);
       for (int i = 0; i < kWaveSize; ++i)
         if (w.shadowed[i] && !w.occluded[i]) radiance[i] += w.unoccluded[i];
     }
