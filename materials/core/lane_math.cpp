@@ -1,5 +1,5 @@
 // libmvec's entry points follow the x86-64 vector function ABI (_ZGV<isa>N<lanes><args>_<name>): 'b' is
-// SSE2 (xmm, baseline x86-64), 'd' AVX2 (ymm). The AVX2 loops are compiled for AVX2 alone and chosen once
+// SSE2 (xmm, baseline x86-64), 'd' AVX2 (ymm). The AVX2 blocks are compiled for AVX2 alone and chosen once
 // at run time, so the rest of the build stays baseline x86-64. Elsewhere (no libmvec ABI to call) the
 // lanes are libm's, one at a time.
 #include "materials/core/lane_math.h"
