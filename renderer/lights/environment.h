@@ -34,7 +34,7 @@ class Environment {
   double pdf(const Vec3& dir) const;        // exactly the density sample() draws from
   // Both at once, from one direction-to-map conversion (the path tracer's escaping rays need both).
   Rgb radianceAndPdf(const Vec3& dir, double& pdf) const;
-  // Batch forms for the path tracer's packets: for the lanes with want[i] (i < n ≤ kMaxBatch), exactly
+  // Batch forms for the path tracer's waves: for the lanes with want[i] (i < n ≤ kMaxBatch), exactly
   // what sample(u[i]) and radianceAndPdf(dirs[i], pdf[i]) return. The lanes' map and table reads are
   // issued step by step for all of them, so that their cache misses overlap instead of queueing.
   static constexpr int kMaxBatch = 64;
