@@ -49,9 +49,6 @@ inline double lobeProbability(double specularAlbedo, const Rgb& kd) {
   return p < 0.05 ? 0.05 : p > 0.95 ? 0.95 : p;
 }
 
-// The mixture sampler. Model provides eval(L, V), specularProbability(), sampleLobe(V, u, L) (false when
-// the lobe gives no direction) and lobePdf(L, V) (solid angle, exactly what sampleLobe draws from).
-// A direction below the horizon is an invalid sample; the pdf is not renormalised for it.
 // The mixture's density from its specular lobe's density at L (for L.z > 0).
 inline double mixtureDensity(double pSpecular, double lobePdf, const Vec3& L) {
   return (pSpecular > 0.0 ? pSpecular * lobePdf : 0.0) + (pSpecular < 1.0 ? (1.0 - pSpecular) * L.z * kInvPi : 0.0);
@@ -73,6 +70,9 @@ BrdfValue evalWithPdf(const Model& model, const Vec3& L, const Vec3& V) {
     return {model.eval(L, V), model.pdf(L, V)};
 }
 
+// The mixture sampler. Model provides eval(L, V), specularProbability(), sampleLobe(V, u, L) (false when
+// the lobe gives no direction) and lobePdf(L, V) (solid angle, exactly what sampleLobe draws from).
+// A direction below the horizon is an invalid sample; the pdf is not renormalised for it.
 template <class Model>
 BrdfSample sampleMixture(const Model& model, const Vec3& V, double uLobe, Vec2 u) {
   if (V.z <= 0.0) return {};

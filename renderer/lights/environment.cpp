@@ -192,7 +192,6 @@ Rgb Environment::radiance(const Vec3& dir) const {
   return impl_->map.interpolate(impl_->grid.position(dir));
 }
 
-
 Environment::Sample Environment::sample(Vec2 u) const {
   const Impl& env = *impl_;
   if (env.isConstant) {
