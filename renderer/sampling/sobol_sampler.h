@@ -36,8 +36,6 @@ constexpr uint32_t laineKarras(uint32_t x, uint32_t seed) {
   return x;
 }
 
-constexpr uint32_t owenScramble(uint32_t x, uint32_t seed) { return reverseBits(laineKarras(reverseBits(x), seed)); }
-
 // Generator matrix columns of the second Sobol' dimension (primitive polynomial x + 1): v_k = v_{k−1} ^ (v_{k−1} >> 1).
 constexpr std::array<uint32_t, 32> makeSecondDimension() {
   std::array<uint32_t, 32> v{};
@@ -120,8 +118,8 @@ class SobolSampler {
   SobolSampler(SobolPixel& pixel, uint32_t sampleIndex)
       : pixel_(&pixel), reversedIndex_(sobol_detail::reverseBits(sampleIndex)) {}
 
-  // With R = bit reversal and LK the Laine-Karras step, owenScramble(x) = R(LK(R(x))); the shuffled index
-  // is i = owenScramble(index), Sobol' dimension 0 of i is R(i) and dimension 1 is P·i (P: kDim1). Written
+  // With R = bit reversal and LK the Laine-Karras step, the Owen scramble of x is R(LK(R(x))); the shuffled
+  // index is i = R(LK(R(index))), Sobol' dimension 0 of i is R(i) and dimension 1 is P·i (P: kDim1). Written
   // out, R∘R cancels twice, and R(P·i) comes from the tables: four reversals instead of seven, no bit loop.
   Vec2 get2D() {
     using namespace sobol_detail;
