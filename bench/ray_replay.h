@@ -100,13 +100,7 @@ inline void traceOne(RTCScene scene, RTCIntersectContext& context, const RTCRay&
 inline void tracePacket(RTCScene scene, RTCIntersectContext& context, const RecordedQuery& q) {
   alignas(32) int mask[kPacketSize];
   alignas(32) RTCRayHit8 packet;
-  for (int i = 0; i < kPacketSize; ++i) {
-    mask[i] = q.valid[i] ? -1 : 0;
-    packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
-    packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
-    if (!q.valid[i]) continue;
-    setPacketLane(packet.ray, i, q.rays[i]);
-  }
+  for (int i = 0; i < kPacketSize; ++i) setPacketHitLane(packet, mask, i, q.valid[i] ? &q.rays[i] : nullptr);
   if (q.shadow)
     rtcOccluded8(mask, scene, &context, &packet.ray);
   else

@@ -166,12 +166,13 @@ void EmbreeScene::intersect(const bool* valid, const Ray* rays, Hit* hits, bool*
   alignas(32) RTCRayHit8 packet;
   bool any = false;
   for (int i = 0; i < kPacketSize; ++i) {
-    mask[i] = valid[i] ? -1 : 0;
-    packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
-    packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
-    if (!valid[i]) continue;
+    if (!valid[i]) {
+      setPacketHitLane(packet, mask, i, nullptr);
+      continue;
+    }
+    const RTCRay ray = toRtcRay(rays[i]);
+    setPacketHitLane(packet, mask, i, &ray);
     any = true;
-    setPacketLane(packet.ray, i, toRtcRay(rays[i]));
   }
   if (!any) return;
   RTCIntersectContext context;

@@ -43,6 +43,15 @@ inline void setPacketLane(RTCRay8& packet, int lane, const RTCRay& r) {
   packet.flags[lane] = r.flags;
 }
 
+// Lane `lane` of a closest-hit packet and its mask: the ray, or (ray == nullptr) an inactive lane. Either
+// way the hit starts as "none", which Embree leaves in place for a miss.
+inline void setPacketHitLane(RTCRayHit8& packet, int* mask, int lane, const RTCRay* ray) {
+  mask[lane] = ray ? -1 : 0;
+  packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+  packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+  if (ray) setPacketLane(packet.ray, lane, *ray);
+}
+
 // Lanes of a packet query: Embree's native 8-wide packets (AVX2), which trace coherent rays (a pixel's
 // samples, their glossy reflections, their shadow rays toward the same light) faster than one at a time.
 inline constexpr int kPacketSize = 8;
