@@ -331,7 +331,10 @@ FitReport fitModel(const MetricData& data, std::string_view model, const FitSett
   FitReport report;
   if (!dispatch(model, data, settings, report)) {
     std::string known;
-    for (std::string_view n : fittableModels()) known += (known.empty() ? "" : ", ") + std::string(n);
+    for (std::string_view n : fittableModels()) {
+      if (!known.empty()) known += ", ";
+      known += n;
+    }
     throw InputError("--model: cannot fit '" + std::string(model) + "' (fittable: " + known + ")");
   }
   return report;
