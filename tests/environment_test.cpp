@@ -431,10 +431,12 @@ TEST_P(EnvironmentSampling, PdfIsTheDensitySampleDrawsFrom) {
   EXPECT_EQ(invalid, 0);
 }
 
-// The pdf integrates to 1 over the sphere, and a χ² test finds the samples distributed as it says.
+// The pdf integrates to 1 over the sphere, and a χ² test finds the samples distributed as it says. The map
+// keeps each cell's density in float (beside its texel), so the integral is 1 to float rounding: a cell's
+// share is off by at most 2⁻²⁴ of itself (6e-8), the sum by much less.
 TEST_P(EnvironmentSampling, PdfIsNormalisedAndSamplesFollowIt) {
   const Quadrature& q = quadrature();
-  ASSERT_NEAR(q.pdfIntegral, 1.0, 1e-9);
+  ASSERT_NEAR(q.pdfIntegral, 1.0, 3e-8);
   const int n = 200000;
   std::vector<double> observed(q.binProbability.size(), 0.0);
   std::mt19937_64 rng(12345);

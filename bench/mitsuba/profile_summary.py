@@ -2,7 +2,7 @@
 
 callgrind attributes the instructions of inlined code to the file the code comes from (fi=/fe= records)
 inside the function it was inlined into, so with -O3 -g the header a cost comes from tells what it is:
-sobol_sampler.h the sampler, cook_torrance.h the BRDF, latlong.h the environment lookup, and so on.
+cmj_sampler.h the sampler, cook_torrance.h the BRDF, latlong.h the environment lookup, and so on.
 Calls into libm (atan2, acos, sincos, exp, ...) are charged, with everything below them, to the code that
 called them. Prints the top self costs (file:function) and the cost by category, in % of instructions.
 
@@ -17,7 +17,7 @@ import sys
 
 CATEGORIES = [  # (category, regex on the file the instructions come from, or on the object)
     ("Embree traversal (libembree3)", r"libembree3"),
-    ("Sobol sampler (sobol_sampler.h)", r"sobol_sampler\.h"),
+    ("sampler (cmj_sampler.h)", r"cmj_sampler\.h"),
     ("environment: lookup, pdf, sampling (latlong.*, environment.cpp, distribution.*, libmvec)",
      r"latlong\.(h|cpp)|environment\.cpp|distribution\.(cpp|h)|lane_math\.cpp|libmvec"),
     ("BRDF eval / sample / pdf (materials/models)",

@@ -2,7 +2,7 @@
 
 #include "materials/core/frame.h"
 #include "renderer/camera/camera_rays.h"
-#include "renderer/sampling/sobol_sampler.h"
+#include "renderer/sampling/cmj_sampler.h"
 #include "renderer/util/progress.h"
 
 #include <tbb/blocked_range2d.h>
@@ -84,7 +84,7 @@ class PathTracer {
   // cache, and across a whole wave each step's misses overlap instead of queueing. Every lane has its own
   // sampler and draws exactly what a lone path would (the same dimensions in the same order), so the image
   // does not depend on how samples are grouped.
-  void traceWave(Ray* rays, SobolSampler* samplers, bool* alive, Rgb* radiance, Workspace& w) const {
+  void traceWave(Ray* rays, CmjSampler* samplers, bool* alive, Rgb* radiance, Workspace& w) const {
     for (int i = 0; i < kWaveSize; ++i) {
       radiance[i] = Rgb(0.0);
       w.throughput[i] = Rgb(1.0);
@@ -181,7 +181,7 @@ class PathTracer {
 
   // The BSDF sample that continues the path: the next ray, the throughput and pdf it carries. False ends
   // the path.
-  bool continuePath(int depth, const ShadingPoint& sp, SobolSampler& sampler, Rgb& throughput, double& bsdfPdf,
+  bool continuePath(int depth, const ShadingPoint& sp, CmjSampler& sampler, Rgb& throughput, double& bsdfPdf,
                     Ray& ray) const {
     const double uLobe = sampler.get1D();
     const BrdfSample s = sampleBrdf(*sp.brdf, sp.woLocal, uLobe, sampler.get2D());
@@ -276,15 +276,16 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
   if (!settings.progress) progress.finish();
 
   const CameraRays cameraRays(camera, settings.width, settings.height);
+  const CmjPattern pattern(uint32_t(std::max(1, settings.spp)));
   auto renderTiles = [&](const tbb::blocked_range2d<int>& tiles) {
     uint64_t localDropped = 0;
-    SobolSampler samplers[kWaveSize];
+    CmjSampler samplers[kWaveSize];
     Ray rays[kWaveSize];
     bool alive[kWaveSize];
     Rgb radiance[kWaveSize];
     int lanePixel[kWaveSize];  // which of the tile's pixels each lane samples
     auto workspace = std::make_unique<PathTracer::Workspace>();
-    std::vector<SobolPixel> pixels;
+    std::vector<CmjPixel> pixels;
     std::vector<Rgb> sums;
     pixels.reserve(size_t(kTile) * kTile);
     for (int ty = tiles.rows().begin(); ty < tiles.rows().end(); ++ty)
@@ -294,7 +295,7 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
         const int count = tileWidth * (std::min(settings.height, y0 + kTile) - y0);
         pixels.clear();
         for (int p = 0; p < count; ++p)
-          pixels.emplace_back(settings.seed, uint32_t(x0 + p % tileWidth), uint32_t(y0 + p / tileWidth));
+          pixels.emplace_back(settings.seed, uint32_t(settings.firstSample), uint32_t(x0 + p % tileWidth), uint32_t(y0 + p / tileWidth));
         sums.assign(size_t(count), Rgb(0.0));
         // The tile's (pixel, sample) pairs in order, kWaveSize at a time: a pixel's samples are neighbours
         // in a wave, so its packets' rays are as coherent as rays get, and each pixel's sum is taken in
@@ -305,7 +306,7 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
           for (; lanes < kWaveSize && pixel < count; ++lanes) {
             lanePixel[lanes] = pixel;
             alive[lanes] = true;
-            samplers[lanes] = SobolSampler(pixels[size_t(pixel)], uint32_t(settings.firstSample + sampleIndex));
+            samplers[lanes] = CmjSampler(pattern, pixels[size_t(pixel)], uint32_t(sampleIndex));
             rays[lanes] = cameraRays(Vec2(x0 + pixel % tileWidth, y0 + pixel / tileWidth) + samplers[lanes].get2D());
             if (++sampleIndex == settings.spp) {
               sampleIndex = 0;

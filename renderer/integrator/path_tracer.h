@@ -19,7 +19,7 @@ namespace glossy {
 struct RenderSettings {
   int width = 512, height = 512;
   int spp = 64;
-  int firstSample = 0;    // index of the first sample of each pixel: progressive passes continue the sequence
+  int firstSample = 0;    // samples of each pixel before this pass: seeds a progressive pass's own pattern
   int maxDepth = 8;
   int rouletteDepth = 4;  // Russian roulette from this depth on
   uint32_t seed = 0;

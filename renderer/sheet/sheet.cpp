@@ -50,8 +50,8 @@ PanelRender renderPanel(const SheetScene& scene, const SheetPanel& panel, const 
     out.spp = s.spp;
     out.droppedSamples = stats.droppedSamples;
   } else {
-    // Progressive: passes of 1, 2, 4, … samples continue each pixel's sequence, until the next pass would
-    // overrun the budget (it takes about twice the last one).
+    // Progressive: passes of 1, 2, 4, … samples, each its own sample pattern (seeded by its first sample),
+    // until the next pass would overrun the budget (it takes about twice the last one).
     out.image = RgbImage(s.width, s.height);
     int pass = 1;
     for (;;) {

@@ -1,0 +1,187 @@
+// Correlated multi-jittered sampling (Kensler 2013, "Correlated Multi-Jittered Sampling", Pixar Technical
+// Memo 13-01), padded per dimension: the kind of sampler Mitsuba 3 calls `multijitter`.
+//
+// In every pair of dimensions a pixel's N samples lie on an m × n grid of cells, at most one per cell, and
+// at most one in each of the grid's m·n thin columns and m·n thin rows; a 1D value is one point in each of
+// N intervals. Unlike a (0,2)-sequence, whose prefixes are nets only at powers of two, this stratifies the
+// count asked for: 90 samples are better than 64, not barely better (docs/performance.md measures it).
+//
+// Each dimension shuffles the sample index with its own permutation, which decorrelates the pairs; the
+// permutations and the jitter are hashed from (seed, pass, pixel, dimension), so a value depends only on
+// those and the sample index: renders are identical whatever the thread count or tile order. The pattern
+// needs the count up front, so a progressive pass is a pattern of its own, seeded apart from the others.
+#pragma once
+
+#include "materials/core/types.h"
+
+#include <array>
+#include <bit>
+#include <cstdint>
+
+namespace glossy {
+
+namespace cmj_detail {
+
+inline uint64_t mix(uint32_t a, uint32_t b) {  // murmur3's finaliser on two words: all 64 bits mixed
+  uint64_t h = (uint64_t(a) << 32 | b) * 0xff51afd7ed558ccdull;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ull;
+  h ^= h >> 33;
+  return h;
+}
+inline uint32_t hash(uint32_t a, uint32_t b) { return static_cast<uint32_t>(mix(a, b)); }
+
+// 2^k − 1 for the smallest 2^k ≥ size: the domain of permute's bijection.
+constexpr uint32_t maskFor(uint32_t size) { return size <= 1 ? 0u : std::bit_ceil(size) - 1u; }
+
+// A seeded permutation of [0, size), size > (mask + 1) / 2 with mask = 2^k − 1, from a 64-bit key.
+// First a cheap bijection of the k-bit integers (xor or add the key's low half, multiply by an odd number,
+// xor-shift by half the width: each invertible modulo 2^k), applied again until it lands in range (cycle
+// walking, fewer than two rounds on average). It decorrelates, but a family this small is far from
+// uniform over all permutations: for a fixed i its value is not uniform over keys (±15 % on [0, 10)), and
+// samples placed by it would be biased. So the result is then rotated by an offset drawn uniformly from
+// [0, size) with the key's other half: whatever the bijection, every i then goes to every value with the
+// same probability, which is all an unbiased sampler needs.
+inline uint32_t permute(uint32_t i, uint32_t size, uint32_t mask, uint64_t key) {
+  if (mask == 0) return 0;
+  const uint32_t seed = uint32_t(key);
+  const int half = (std::popcount(mask) + 1) / 2;
+  do {
+    i ^= seed;
+    i = (i * 0x9e3779b1u) & mask;
+    i ^= i >> half;
+    i += seed >> 10;
+    i = (i * (((seed >> 20) << 1) | 1u)) & mask;
+    i ^= i >> half;
+    i ^= seed >> 21;
+    i = (i * 0x85ebca6bu) & mask;
+    i ^= i >> half;
+  } while (i >= size);
+  i += uint32_t((key >> 32) * size >> 32);
+  return i >= size ? i - size : i;
+}
+
+inline double toUnit(uint32_t x) { return x * 0x1p-32; }  // in [0, 1): never 1
+
+// (k + j) / n with j < 1 can round up to the next stratum's edge, and past the last one to 1.
+inline double belowOne(double x) { return x < 1.0 ? x : 0x1.fffffffffffffp-1; }
+
+}  // namespace cmj_detail
+
+// The grid of every pixel's pattern for N samples. N = m·n with n ≤ 2m when N has such a factor pair
+// (90 = 9 × 10, 128 = 8 × 16); otherwise m = ⌊√N⌋, n = ⌈N / m⌉, and the N samples take a random N of the
+// m·n cells (a fresh choice per pixel and dimension), so that every cell, and every point of the square,
+// is equally likely: a fixed choice would never sample the cells left out.
+class CmjPattern {
+ public:
+  explicit CmjPattern(uint32_t count) : count_(count == 0 ? 1 : count) {
+    uint32_t root = 1;
+    while ((root + 1) * (root + 1) <= count_) ++root;
+    columns_ = root;
+    rows_ = (count_ + root - 1) / root;
+    for (uint32_t m = root; m > 0; --m)
+      if (count_ % m == 0) {
+        if (count_ / m <= 2 * m) {
+          columns_ = m;
+          rows_ = count_ / m;
+        }
+        break;
+      }
+    cells_ = columns_ * rows_;
+    perCell_ = 1.0 / cells_;
+    perCount_ = 1.0 / count_;
+    countMask_ = cmj_detail::maskFor(count_);
+    cellMask_ = cmj_detail::maskFor(cells_);
+    columnMask_ = cmj_detail::maskFor(columns_);
+    rowMask_ = cmj_detail::maskFor(rows_);
+  }
+
+  uint32_t count() const { return count_; }
+  uint32_t columns() const { return columns_; }  // m
+  uint32_t rows() const { return rows_; }        // n
+
+ private:
+  friend class CmjSampler;
+  uint32_t count_, columns_ = 1, rows_ = 1, cells_ = 1;
+  uint32_t countMask_ = 0, cellMask_ = 0, columnMask_ = 0, rowMask_ = 0;
+  double perCell_ = 1.0, perCount_ = 1.0;  // 1 / (m·n), 1 / N
+};
+
+// The seeds of one pixel's dimensions. A pixel's samples differ only in their index, so the samples traced
+// together share one CmjPixel: the first to reach a dimension hashes its seeds, the others reuse them.
+class CmjPixel {
+ public:
+  // Independent hashes, not multiples of one seed: a multiple's low bits are a function of the seed's
+  // low bits, which is all a small permutation reads, and correlated permutations bias the points.
+  struct Seeds {
+    uint64_t cell, column, row;  // keys of the index shuffle and of the thin-column and thin-row permutations
+  };
+
+  // pass tells a progressive render's passes apart.
+  CmjPixel(uint32_t seed, uint32_t pass, uint32_t x, uint32_t y)
+      : pixelSeed_(cmj_detail::hash(cmj_detail::hash(x, y), cmj_detail::hash(seed, pass))) {}
+
+  Seeds seeds(uint32_t dimension) {
+    if (dimension >= kCached) return compute(dimension);
+    if (!(known_ >> dimension & 1u)) {
+      cache_[dimension] = compute(dimension);
+      known_ |= 1u << dimension;
+    }
+    return cache_[dimension];
+  }
+
+ private:
+  static constexpr uint32_t kCached = 32;
+  Seeds compute(uint32_t dimension) const {
+    const uint64_t cell = cmj_detail::mix(pixelSeed_, dimension);
+    const uint64_t column = cmj_detail::mix(uint32_t(cell), 0x9e3779b9u), row = cmj_detail::mix(uint32_t(column), 0x7f4a7c15u);
+    return {cell, column, row};
+  }
+
+  uint32_t pixelSeed_;
+  uint32_t known_ = 0;  // bit d: cache_[d] is filled
+  std::array<Seeds, kCached> cache_;
+};
+
+// One sample of a pixel: its 2D and 1D values, dimension after dimension.
+class CmjSampler {
+ public:
+  CmjSampler() = default;
+  // sampleIndex < pattern.count().
+  CmjSampler(const CmjPattern& pattern, CmjPixel& pixel, uint32_t sampleIndex)
+      : pattern_(&pattern), pixel_(&pixel), index_(sampleIndex) {}
+
+  // The dimension's shuffle of the index picks cell (c, r); inside it the point's thin column is a
+  // permutation of r and its thin row one of c, the same permutations in every cell (the "correlated"
+  // offsets, which put one point in each thin column and row), plus jitter.
+  Vec2 get2D() {
+    using namespace cmj_detail;
+    const CmjPattern& g = *pattern_;
+    const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
+    const uint32_t cell = permute(index_, g.cells_, g.cellMask_, p.cell);
+    const uint32_t c = cell % g.columns_, r = cell / g.columns_;
+    const uint32_t thinColumn = permute(r, g.rows_, g.rowMask_, p.column);
+    const uint32_t thinRow = permute(c, g.columns_, g.columnMask_, p.row);
+    const uint64_t jitter = mix(cell, uint32_t(p.cell >> 32));
+    // (c + (thinColumn + j) / n) / m, and the same for y, with one rounding each.
+    return {belowOne((c * g.rows_ + thinColumn + toUnit(uint32_t(jitter >> 32))) * g.perCell_),
+            belowOne((r * g.columns_ + thinRow + toUnit(uint32_t(jitter))) * g.perCell_)};
+  }
+
+  // One point in each of the N intervals [k/N, (k+1)/N).
+  double get1D() {
+    using namespace cmj_detail;
+    const CmjPattern& g = *pattern_;
+    const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
+    const uint32_t k = permute(index_, g.count_, g.countMask_, p.cell);
+    return belowOne((k + toUnit(hash(k, uint32_t(p.cell >> 32)))) * g.perCount_);
+  }
+
+ private:
+  const CmjPattern* pattern_ = nullptr;
+  CmjPixel* pixel_ = nullptr;
+  uint32_t index_ = 0;
+  uint32_t dimension_ = 0;
+};
+
+}  // namespace glossy
