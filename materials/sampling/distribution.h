@@ -81,12 +81,12 @@ class Distribution2D {
   // out[i] = sample(u[i]) for the lanes with want[i], i < n ≤ kMaxBatch. A sample is a chain of dependent
   // loads (guide table → CDF → density) that mostly miss the cache; one lane at a time, each waits for its
   // own chain. Here every step is taken for all lanes before the next, each step's loads prefetched, so the
-  // lanes' misses overlap.
+  // lanes' misses overlap. withPdf = false leaves out the density (pdf = 0) and its load, for a caller that
+  // keeps the densities where it reads anyway.
   static constexpr int kMaxBatch = 64;
-  void sample(const bool* want, const Vec2* u, Sample* out, int n) const;
+  void sample(const bool* want, const Vec2* u, Sample* out, int n, bool withPdf = true) const;
   double pdf(Vec2 point) const;  // 0 outside [0,1]²
   double cellDensity(std::size_t column, std::size_t row) const { return density_[row * width_ + column]; }
-  void prefetchCellDensity(std::size_t column, std::size_t row) const { __builtin_prefetch(&density_[row * width_ + column]); }
 
  private:
   std::size_t width_ = 0;

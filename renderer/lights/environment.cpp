@@ -9,6 +9,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <limits>
 #include <sstream>
 
 namespace glossy {
@@ -107,20 +108,22 @@ struct Environment::Impl {
   // Directions to cells and back (the rotation included).
   LatLongGrid grid;
 
-  // The solid-angle density of sample() at dir, whose lookup position is at: Distribution2D::pdf at
-  // (s, v) = (u_map − ½/W, v), whose cell is the patch the lookup falls in.
+  // The solid-angle density of sample() at dir, whose lookup position is at: Distribution2D's density at
+  // (s, v) = (u_map − ½/W, v), whose cell is the patch the lookup falls in, as the map keeps it (in float,
+  // beside the cell's texel; sample() reports the same value).
   double pdfAt(const Vec3& dir, const LatLongPosition& at) const {
     const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
     if (!(sinTheta > 0.0)) return 0.0;
-    return distribution.cellDensity(std::size_t(at.c0), std::size_t(at.r0)) / (2.0 * kPi * kPi * sinTheta);
+    return double(map.cellValue(at)) / (2.0 * kPi * kPi * sinTheta);
   }
 
   // The sample of the map in direction dir (with its sin θ), at the lookup position `at` of the cell
   // Distribution2D drew.
-  Sample sampleAt(const Distribution2D::Sample& cell, const LatLongPosition& at, const Vec3& dir, double sinTheta) const {
+  Sample sampleAt(const LatLongPosition& at, const Vec3& dir, double sinTheta) const {
+    const double density = map.cellValue(at);
     // At a pole the lat-long Jacobian vanishes and the solid-angle density is unbounded: no usable sample.
-    if (cell.pdf <= 0.0 || sinTheta <= 0.0) return {};
-    return {dir, map.interpolate(at), cell.pdf / (2.0 * kPi * kPi * sinTheta)};
+    if (density <= 0.0 || sinTheta <= 0.0) return {};
+    return {dir, map.interpolate(at), density / (2.0 * kPi * kPi * sinTheta)};
   }
 
   void buildDistribution(const LatLongImage& image) {
@@ -146,7 +149,16 @@ struct Environment::Impl {
       }
     }
     distribution = Distribution2D(weights, std::size_t(width), std::size_t(cells));
-    map = LatLongMap(image);
+    std::vector<float> densities(weights.size());
+    for (int cell = 0; cell < cells; ++cell)
+      for (int column = 0; column < width; ++column) {
+        const double d = distribution.cellDensity(std::size_t(column), std::size_t(cell));
+        float& f = densities[std::size_t(cell) * width + column];
+        f = float(d);
+        // A cell that can be drawn keeps a positive pdf, however faint (MIS divides by it).
+        if (d > 0.0 && f == 0.0f) f = std::numeric_limits<float>::denorm_min();
+      }
+    map = LatLongMap(image, densities);
   }
 
   static std::unique_ptr<Impl> fromMap(const LatLongImage& image, double rotateDegrees, std::string description) {
@@ -218,7 +230,7 @@ void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) co
     return;
   }
   Distribution2D::Sample cells[kMaxBatch];
-  env.distribution.sample(want, u, cells, n);
+  env.distribution.sample(want, u, cells, n, /*withPdf=*/false);  // the map holds the densities
   // The wanted lanes, packed, for the grid's batch conversion.
   int lane[kMaxBatch], count = 0;
   LatLongPosition at[kMaxBatch];
@@ -231,7 +243,7 @@ void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) co
   Vec3 dirs[kMaxBatch];
   double sinTheta[kMaxBatch];
   env.grid.directions(at, dirs, sinTheta, count);
-  for (int k = 0; k < count; ++k) out[lane[k]] = env.sampleAt(cells[lane[k]], at[k], dirs[k], sinTheta[k]);
+  for (int k = 0; k < count; ++k) out[lane[k]] = env.sampleAt(at[k], dirs[k], sinTheta[k]);
 }
 
 void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const {
@@ -248,10 +260,7 @@ void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radian
     if (want[i]) lane[count++] = i;
   LatLongPosition at[kMaxBatch];
   env.grid.positions(dirs, lane, count, at);
-  for (int k = 0; k < count; ++k) {
-    env.map.prefetch(at[k]);
-    env.distribution.prefetchCellDensity(std::size_t(at[k].c0), std::size_t(at[k].r0));
-  }
+  for (int k = 0; k < count; ++k) env.map.prefetch(at[k]);
   for (int k = 0; k < count; ++k) {
     pdf[lane[k]] = env.pdfAt(dirs[lane[k]], at[k]);
     radiance[lane[k]] = env.map.interpolate(at[k]);
