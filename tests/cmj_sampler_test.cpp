@@ -32,7 +32,7 @@ TEST(CmjSampler, PermuteIsAPermutationOfEveryRange) {
   for (uint32_t size = 1; size <= 300; ++size)
     for (uint64_t seed : {uint64_t(0), uint64_t(1), uint64_t(0xdeadbeef12345678u), uint64_t(0x0123456789abcdefu)}) {
       std::set<uint32_t> seen;
-      for (uint32_t i = 0; i < size; ++i) seen.insert(cmj_detail::permute(i, size, cmj_detail::maskFor(size), seed));
+      for (uint32_t i = 0; i < size; ++i) seen.insert(cmj_detail::permute(i, cmj_detail::PermutationRange(size), seed));
       ASSERT_EQ(seen.size(), size) << "size " << size << " seed " << seed;
       ASSERT_LT(*seen.rbegin(), size);
     }

@@ -31,10 +31,16 @@ inline uint64_t mix(uint32_t a, uint32_t b) {  // murmur3's finaliser on two wor
 }
 inline uint32_t hash(uint32_t a, uint32_t b) { return static_cast<uint32_t>(mix(a, b)); }
 
-// 2^k − 1 for the smallest 2^k ≥ size: the domain of permute's bijection.
-constexpr uint32_t maskFor(uint32_t size) { return size <= 1 ? 0u : std::bit_ceil(size) - 1u; }
+// [0, size) and what permute needs of it, computed once per render: mask = 2^k − 1 for the smallest
+// 2^k ≥ size (the domain of its bijection), and half of k rounded up.
+struct PermutationRange {
+  explicit PermutationRange(uint32_t n = 1)
+      : size(n == 0 ? 1 : n), mask(size <= 1 ? 0u : std::bit_ceil(size) - 1u), halfWidth((std::bit_width(mask) + 1) / 2) {}
+  uint32_t size, mask;
+  int halfWidth;
+};
 
-// A seeded permutation of [0, size), size > (mask + 1) / 2 with mask = 2^k − 1, from a 64-bit key.
+// A seeded permutation of [0, size), from a 64-bit key.
 // First a cheap bijection of the k-bit integers (xor or add the key's low half, multiply by an odd number,
 // xor-shift by half the width: each invertible modulo 2^k), applied again until it lands in range (cycle
 // walking, fewer than two rounds on average). It decorrelates, but a family this small is far from
@@ -42,10 +48,11 @@ constexpr uint32_t maskFor(uint32_t size) { return size <= 1 ? 0u : std::bit_cei
 // samples placed by it would be biased. So the result is then rotated by an offset drawn uniformly from
 // [0, size) with the key's other half: whatever the bijection, every i then goes to every value with the
 // same probability, which is all an unbiased sampler needs.
-inline uint32_t permute(uint32_t i, uint32_t size, uint32_t mask, uint64_t key) {
+inline uint32_t permute(uint32_t i, const PermutationRange& range, uint64_t key) {
+  const uint32_t size = range.size, mask = range.mask;
   if (mask == 0) return 0;
   const uint32_t seed = uint32_t(key);
-  const int half = (std::popcount(mask) + 1) / 2;
+  const int half = range.halfWidth;
   do {
     i ^= seed;
     i = (i * 0x9e3779b1u) & mask;
@@ -90,10 +97,10 @@ class CmjPattern {
     cells_ = columns_ * rows_;
     perCell_ = 1.0 / cells_;
     perCount_ = 1.0 / count_;
-    countMask_ = cmj_detail::maskFor(count_);
-    cellMask_ = cmj_detail::maskFor(cells_);
-    columnMask_ = cmj_detail::maskFor(columns_);
-    rowMask_ = cmj_detail::maskFor(rows_);
+    countRange_ = cmj_detail::PermutationRange(count_);
+    cellRange_ = cmj_detail::PermutationRange(cells_);
+    columnRange_ = cmj_detail::PermutationRange(columns_);
+    rowRange_ = cmj_detail::PermutationRange(rows_);
   }
 
   uint32_t count() const { return count_; }
@@ -103,7 +110,7 @@ class CmjPattern {
  private:
   friend class CmjSampler;
   uint32_t count_, columns_ = 1, rows_ = 1, cells_ = 1;
-  uint32_t countMask_ = 0, cellMask_ = 0, columnMask_ = 0, rowMask_ = 0;
+  cmj_detail::PermutationRange countRange_, cellRange_, columnRange_, rowRange_;
   double perCell_ = 1.0, perCount_ = 1.0;  // 1 / (m·n), 1 / N
 };
 
@@ -158,10 +165,10 @@ class CmjSampler {
     using namespace cmj_detail;
     const CmjPattern& g = *pattern_;
     const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
-    const uint32_t cell = permute(index_, g.cells_, g.cellMask_, p.cell);
+    const uint32_t cell = permute(index_, g.cellRange_, p.cell);
     const uint32_t c = cell % g.columns_, r = cell / g.columns_;
-    const uint32_t thinColumn = permute(r, g.rows_, g.rowMask_, p.column);
-    const uint32_t thinRow = permute(c, g.columns_, g.columnMask_, p.row);
+    const uint32_t thinColumn = permute(r, g.rowRange_, p.column);
+    const uint32_t thinRow = permute(c, g.columnRange_, p.row);
     const uint64_t jitter = mix(cell, uint32_t(p.cell >> 32));
     // (c + (thinColumn + j) / n) / m, and the same for y, with one rounding each.
     return {belowOne((c * g.rows_ + thinColumn + toUnit(uint32_t(jitter >> 32))) * g.perCell_),
@@ -173,7 +180,7 @@ class CmjSampler {
     using namespace cmj_detail;
     const CmjPattern& g = *pattern_;
     const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
-    const uint32_t k = permute(index_, g.count_, g.countMask_, p.cell);
+    const uint32_t k = permute(index_, g.countRange_, p.cell);
     return belowOne((k + toUnit(hash(k, uint32_t(p.cell >> 32)))) * g.perCount_);
   }
 
