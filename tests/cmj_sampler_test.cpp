@@ -38,13 +38,15 @@ TEST(CmjSampler, PermuteIsAPermutationOfEveryRange) {
     }
 }
 
-TEST(CmjSampler, GridIsTheCountWhenAFactorPairIsCloseToSquare) {
+TEST(CmjSampler, GridSparesTheFewestCells) {
   const auto grid = [](uint32_t n) { const CmjPattern g(n); return std::pair(g.columns(), g.rows()); };
   EXPECT_EQ(grid(90), std::pair(9u, 10u));
   EXPECT_EQ(grid(128), std::pair(8u, 16u));
   EXPECT_EQ(grid(64), std::pair(8u, 8u));
   EXPECT_EQ(grid(2), std::pair(1u, 2u));
   EXPECT_EQ(grid(89), std::pair(9u, 10u));  // prime: 9 × 10 cells, 89 of them used
+  EXPECT_EQ(grid(86), std::pair(8u, 11u));  // 2 cells to spare, where 9 × 10 has 4
+  EXPECT_EQ(grid(3), std::pair(1u, 3u));
   EXPECT_EQ(grid(7), std::pair(2u, 4u));
   EXPECT_EQ(grid(0), std::pair(1u, 1u));    // treated as 1
 }

@@ -75,25 +75,29 @@ inline double belowOne(double x) { return x < 1.0 ? x : 0x1.fffffffffffffp-1; }
 
 }  // namespace cmj_detail
 
-// The grid of every pixel's pattern for N samples. N = m·n with n ≤ 2m when N has such a factor pair
-// (90 = 9 × 10, 128 = 8 × 16); otherwise m = ⌊√N⌋, n = ⌈N / m⌉, and the N samples take a random N of the
-// m·n cells (a fresh choice per pixel and dimension), so that every cell, and every point of the square,
-// is equally likely: a fixed choice would never sample the cells left out.
+// The grid of every pixel's pattern for N samples: of the m × n grids with m ≤ n ≤ 2m and m·n ≥ N, the one
+// with the fewest cells to spare (90 = 9 × 10, 128 = 8 × 16, 86: 8 × 11), the squarer of two equal. Where
+// cells are left over, the N samples take a random N of them (a fresh choice per pixel and dimension), so
+// that every cell, and every point of the square, is equally likely: a fixed choice would never sample the
+// cells left out. Each cell left out costs some stratification (rel. RMSE · √spp on the benchmark: 0.114
+// at 90 = 9 × 10, 0.125 at 86 on 9 × 10), hence the fewest.
 class CmjPattern {
  public:
   explicit CmjPattern(uint32_t count) : count_(count == 0 ? 1 : count) {
     uint32_t root = 1;
     while ((root + 1) * (root + 1) <= count_) ++root;
-    columns_ = root;
+    columns_ = root;  // for N < 5, where no grid but 1 × N (or 1 × 1, 1 × 2, 2 × 2) qualifies
     rows_ = (count_ + root - 1) / root;
-    for (uint32_t m = root; m > 0; --m)
-      if (count_ % m == 0) {
-        if (count_ / m <= 2 * m) {
-          columns_ = m;
-          rows_ = count_ / m;
-        }
-        break;
+    uint32_t spare = ~0u;
+    for (uint32_t m = root; m > 0; --m) {
+      const uint32_t n = (count_ + m - 1) / m;
+      if (n > 2 * m) break;  // smaller m only stretch the grid further
+      if (m * n - count_ < spare) {
+        spare = m * n - count_;
+        columns_ = m;
+        rows_ = n;
       }
+    }
     cells_ = columns_ * rows_;
     perCell_ = 1.0 / cells_;
     perCount_ = 1.0 / count_;
