@@ -295,7 +295,8 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
         const int count = tileWidth * (std::min(settings.height, y0 + kTile) - y0);
         pixels.clear();
         for (int p = 0; p < count; ++p)
-          pixels.emplace_back(settings.seed, uint32_t(settings.firstSample), uint32_t(x0 + p % tileWidth), uint32_t(y0 + p / tileWidth));
+          pixels.emplace_back(settings.seed, uint32_t(settings.firstSample), uint32_t(x0 + p % tileWidth),
+                              uint32_t(y0 + p / tileWidth));
         sums.assign(size_t(count), Rgb(0.0));
         // The tile's (pixel, sample) pairs in order, kWaveSize at a time: a pixel's samples are neighbours
         // in a wave, so its packets' rays are as coherent as rays get, and each pixel's sum is taken in

@@ -35,7 +35,8 @@ inline uint32_t hash(uint32_t a, uint32_t b) { return static_cast<uint32_t>(mix(
 // 2^k ≥ size (the domain of its bijection), and half of k rounded up.
 struct PermutationRange {
   explicit PermutationRange(uint32_t n = 1)
-      : size(n == 0 ? 1 : n), mask(size <= 1 ? 0u : std::bit_ceil(size) - 1u), halfWidth((std::bit_width(mask) + 1) / 2) {}
+      : size(n == 0 ? 1 : n), mask(size <= 1 ? 0u : std::bit_ceil(size) - 1u),
+        halfWidth((std::bit_width(mask) + 1) / 2) {}
   uint32_t size, mask;
   int halfWidth;
 };
@@ -145,7 +146,8 @@ class CmjPixel {
   static constexpr uint32_t kCached = 32;
   Seeds compute(uint32_t dimension) const {
     const uint64_t cell = cmj_detail::mix(pixelSeed_, dimension);
-    const uint64_t column = cmj_detail::mix(uint32_t(cell), 0x9e3779b9u), row = cmj_detail::mix(uint32_t(column), 0x7f4a7c15u);
+    const uint64_t column = cmj_detail::mix(uint32_t(cell), 0x9e3779b9u);
+    const uint64_t row = cmj_detail::mix(uint32_t(column), 0x7f4a7c15u);
     return {cell, column, row};
   }
 
