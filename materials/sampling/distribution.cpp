@@ -154,8 +154,8 @@ Distribution2D::Sample Distribution2D::sample(Vec2 u) const {
   return {Vec2(invertInBin(cdf, width_, column, ux), y), cellDensity(column, row), column, row};
 }
 
-void Distribution2D::sample(const bool* want, const Vec2* u, Sample* out, int n, bool withPdf) const {
-  std::size_t row[kMaxBatch], column[kMaxBatch], guideEntry[kMaxBatch];
+void Distribution2D::sampleCells(const bool* want, const Vec2* u, Sample* out, int n) const {
+  std::size_t row[kMaxBatch], guideEntry[kMaxBatch];
   double ux[kMaxBatch], y[kMaxBatch];
   // The marginal is small and stays cached; the row's guide entry is the first miss.
   for (int i = 0; i < n; ++i) {
@@ -171,13 +171,9 @@ void Distribution2D::sample(const bool* want, const Vec2* u, Sample* out, int n,
   for (int i = 0; i < n; ++i) {
     if (!want[i]) continue;
     const double* cdf = &cdf_[row[i] * (width_ + 1)];
-    column[i] = findBin(cdf, &guide_[row[i] * width_], width_, ux[i]);
-    if (withPdf) __builtin_prefetch(&density_[row[i] * width_ + column[i]]);
-    out[i] = {Vec2(invertInBin(cdf, width_, column[i], ux[i]), y[i]), 0.0, column[i], row[i]};
+    const std::size_t column = findBin(cdf, &guide_[row[i] * width_], width_, ux[i]);
+    out[i] = {Vec2(invertInBin(cdf, width_, column, ux[i]), y[i]), 0.0, column, row[i]};
   }
-  if (!withPdf) return;
-  for (int i = 0; i < n; ++i)
-    if (want[i]) out[i].pdf = cellDensity(column[i], row[i]);
 }
 
 double Distribution2D::pdf(Vec2 point) const {

@@ -78,13 +78,14 @@ class Distribution2D {
 
   // u in [0,1)² (clamped). pdf(sample(u).point) == sample(u).pdf exactly.
   Sample sample(Vec2 u) const;
-  // out[i] = sample(u[i]) for the lanes with want[i], i < n ≤ kMaxBatch. A sample is a chain of dependent
-  // loads (guide table → CDF → density) that mostly miss the cache; one lane at a time, each waits for its
-  // own chain. Here every step is taken for all lanes before the next, each step's loads prefetched, so the
-  // lanes' misses overlap. withPdf = false leaves out the density (pdf = 0) and its load, for a caller that
-  // keeps the densities where it reads anyway.
+  // out[i] = sample(u[i]) for the lanes with want[i], i < n ≤ kMaxBatch, but for its pdf, left at 0: the
+  // caller (the environment light) keeps the densities beside what it reads next, so that a sample does
+  // not pay for one more miss (cellDensity gives it otherwise). A sample is a chain of dependent loads
+  // (guide table → CDF) that mostly miss the cache; one lane at a time, each waits for its own chain. Here
+  // every step is taken for all lanes before the next, each step's loads prefetched, so the lanes' misses
+  // overlap.
   static constexpr int kMaxBatch = 64;
-  void sample(const bool* want, const Vec2* u, Sample* out, int n, bool withPdf = true) const;
+  void sampleCells(const bool* want, const Vec2* u, Sample* out, int n) const;
   double pdf(Vec2 point) const;  // 0 outside [0,1]²
   double cellDensity(std::size_t column, std::size_t row) const { return density_[row * width_ + column]; }
 

@@ -230,7 +230,7 @@ void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) co
     return;
   }
   Distribution2D::Sample cells[kMaxBatch];
-  env.distribution.sample(want, u, cells, n, /*withPdf=*/false);  // the map holds the densities
+  env.distribution.sampleCells(want, u, cells, n);  // the map holds the densities
   // The wanted lanes, packed, for the grid's batch conversion.
   int lane[kMaxBatch], count = 0;
   LatLongPosition at[kMaxBatch];
