@@ -13,7 +13,7 @@ namespace glossy::test {
 
 namespace {
 
-const std::vector<uint32_t> kCounts = {1, 2, 3, 5, 7, 8, 16, 17, 63, 64, 89, 90, 97, 100, 128, 130, 256};
+const std::vector<uint32_t> kCounts = {1, 2, 3, 4, 5, 6, 7, 8, 16, 17, 63, 64, 85, 86, 89, 90, 97, 100, 128, 130, 256};
 
 std::vector<Vec2> points2D(const CmjPattern& g, uint32_t seed, uint32_t dimension) {
   CmjPixel pixel(seed, 0, 3, 4);
@@ -38,33 +38,44 @@ TEST(CmjSampler, PermuteIsAPermutationOfEveryRange) {
     }
 }
 
-TEST(CmjSampler, GridSparesTheFewestCells) {
-  const auto grid = [](uint32_t n) { const CmjPattern g(n); return std::pair(g.columns(), g.rows()); };
-  EXPECT_EQ(grid(90), std::pair(9u, 10u));
-  EXPECT_EQ(grid(128), std::pair(8u, 16u));
-  EXPECT_EQ(grid(64), std::pair(8u, 8u));
-  EXPECT_EQ(grid(2), std::pair(1u, 2u));
-  EXPECT_EQ(grid(89), std::pair(9u, 10u));  // prime: 9 × 10 cells, 89 of them used
-  EXPECT_EQ(grid(86), std::pair(8u, 11u));  // 2 cells to spare, where 9 × 10 has 4
-  EXPECT_EQ(grid(3), std::pair(1u, 3u));
-  EXPECT_EQ(grid(7), std::pair(2u, 4u));
-  EXPECT_EQ(grid(0), std::pair(1u, 1u));    // treated as 1
+TEST(CmjSampler, LayoutIsAFullGridOrColumnsOfTwoHeights) {
+  struct Layout {
+    uint32_t columns, rows, wide;
+    bool operator==(const Layout&) const = default;
+  };
+  const auto layout = [](uint32_t n) { const CmjPattern g(n); return Layout{g.columns(), g.rows(), g.wideColumns()}; };
+  EXPECT_EQ(layout(90), (Layout{9, 10, 0}));   // 9 × 10
+  EXPECT_EQ(layout(128), (Layout{8, 16, 0}));  // 8 × 16, not 11 columns of two heights
+  EXPECT_EQ(layout(64), (Layout{8, 8, 0}));
+  EXPECT_EQ(layout(84), (Layout{7, 12, 0}));   // the squarest full grid with n ≤ 2m
+  EXPECT_EQ(layout(89), (Layout{9, 9, 8}));    // prime: 8 columns of 10 cells and 1 of 9
+  EXPECT_EQ(layout(86), (Layout{9, 9, 5}));    // 2 × 43 has no grid with n ≤ 2m
+  EXPECT_EQ(layout(7), (Layout{2, 3, 1}));     // a column of 4 and one of 3
+  EXPECT_EQ(layout(5), (Layout{2, 2, 1}));
+  EXPECT_EQ(layout(3), (Layout{1, 3, 0}));     // below 4 only 1 × N
+  EXPECT_EQ(layout(2), (Layout{1, 2, 0}));
+  EXPECT_EQ(layout(0), (Layout{1, 1, 0}));     // treated as 1
 }
 
-// At most one point per cell, thin column and thin row, exactly one when the grid is the count.
+// Exactly one point per cell, per thin column (1/N wide) and per thin row of the columns of one height.
 TEST(CmjSampler, EveryDimensionPairIsMultiJitteredForAnyCount) {
   for (uint32_t n : kCounts) {
     const CmjPattern g(n);
-    const uint32_t m = g.columns(), rows = g.rows(), cells = m * rows;
+    const uint32_t m = g.columns(), q = g.rows(), r = g.wideColumns(), wideCells = r * (q + 1);
+    ASSERT_EQ(m * q + r, n);
     for (uint32_t seed : {1u, 77u})
       for (uint32_t dimension : {0u, 1u, 5u}) {
         const std::vector<Vec2> pts = points2D(g, seed, dimension);
-        std::set<uint32_t> cell, thinColumn, thinRow;
+        std::set<std::pair<uint32_t, uint32_t>> cell, thinRow;
+        std::set<uint32_t> thinColumn;
         for (const Vec2& u : pts) {
           ASSERT_TRUE(u.x >= 0.0 && u.x < 1.0 && u.y >= 0.0 && u.y < 1.0);
-          cell.insert(uint32_t(u.y * rows) * m + uint32_t(u.x * m));
-          thinColumn.insert(uint32_t(u.x * cells));
-          thinRow.insert(uint32_t(u.y * cells));
+          const uint32_t t = uint32_t(u.x * n);  // the thin column; its column and that column's height:
+          const bool wide = t < wideCells;
+          const uint32_t column = wide ? t / (q + 1) : r + (t - wideCells) / q, height = wide ? q + 1 : q;
+          cell.insert({column, uint32_t(u.y * height)});
+          thinColumn.insert(t);
+          thinRow.insert({wide, uint32_t(u.y * height * (wide ? r : m - r))});
         }
         ASSERT_EQ(cell.size(), n) << "N " << n << ": two samples share a cell";
         ASSERT_EQ(thinColumn.size(), n) << "N " << n << ": two samples share a thin column";
@@ -91,11 +102,11 @@ TEST(CmjSampler, OneDimensionalValuesFillEveryIntervalOnce) {
 
 // Every sample is uniform on the square (and every 1D value on [0, 1)), over pixels: a χ² test of where a
 // pixel's samples land on a 16 × 16 lattice (not aligned with the cells) finds no bias. Two ways to fail
-// that it catches: a fixed choice of cells where the grid has more cells than samples (N = 7: 2 × 4), and
-// permutations whose value for a given input is not uniform over seeds (a ±15 % bias at N = 90). A pixel's
+// that it catches: columns of two heights that are not as wide as their share of the samples (N = 7, 85),
+// and permutations whose value for a given input is not uniform over seeds (a ±15 % bias at N = 90). A pixel's
 // samples are stratified, so the counts vary less than multinomially: the test is conservative.
 TEST(CmjSampler, SamplesAreUniformOverPixels) {
-  for (uint32_t n : {7u, 90u, 128u}) {
+  for (uint32_t n : {7u, 85u, 90u, 128u}) {
     const CmjPattern g(n);
     constexpr int kBins = 16;
     const int pixels = int(4000000 / n);

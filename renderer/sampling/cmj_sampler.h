@@ -1,9 +1,9 @@
 // Correlated multi-jittered sampling (Kensler 2013, "Correlated Multi-Jittered Sampling", Pixar Technical
 // Memo 13-01), padded per dimension: the kind of sampler Mitsuba 3 calls `multijitter`.
 //
-// In every pair of dimensions a pixel's N samples lie on an m × n grid of cells, at most one per cell, and
-// at most one in each of the grid's m·n thin columns and m·n thin rows; a 1D value is one point in each of
-// N intervals. Unlike a (0,2)-sequence, whose prefixes are nets only at powers of two, this stratifies the
+// In every pair of dimensions a pixel's N samples lie one per cell of an m × n grid, and one in each of the
+// grid's m·n thin columns and m·n thin rows (counts with no such grid: CmjPattern); a 1D value is one point
+// in each of N intervals. Unlike a (0,2)-sequence, whose prefixes are nets only at powers of two, this stratifies the
 // count asked for: 90 samples are better than 64, not barely better (docs/performance.md measures it).
 //
 // Each dimension shuffles the sample index with its own permutation, which decorrelates the pairs; the
@@ -76,47 +76,59 @@ inline double belowOne(double x) { return x < 1.0 ? x : 0x1.fffffffffffffp-1; }
 
 }  // namespace cmj_detail
 
-// The grid of every pixel's pattern for N samples: of the m × n grids with m ≤ n ≤ 2m and m·n ≥ N, the one
-// with the fewest cells to spare (90 = 9 × 10, 128 = 8 × 16, 86: 8 × 11), the squarer of two equal. Where
-// cells are left over, the N samples take a random N of them (a fresh choice per pixel and dimension), so
-// that every cell, and every point of the square, is equally likely: a fixed choice would never sample the
-// cells left out. Each cell left out costs some stratification (rel. RMSE · √spp on the benchmark: 0.114
-// at 90 = 9 × 10, 0.125 at 86 on 9 × 10), hence the fewest.
+// The layout of every pixel's pattern for N samples: N cells of area 1/N that tile the square, in m
+// columns. Where N = m·n with m ≤ n ≤ 2m this is the m × n grid (90 = 9 × 10, 128 = 8 × 16). Any other N
+// takes m = ⌊√N⌋ columns of two heights: the first r = N mod m hold ⌊N/m⌋ + 1 cells, the rest ⌊N/m⌋, and
+// each column is as wide as its cell count / N (89 = 8 columns of 10 + 1 of 9). So no count leaves a cell
+// empty: a padded grid (86 samples in 9 × 10 cells) must leave some out, and each cell left out cost
+// stratification (rel. RMSE · √spp on the benchmark: 0.114 at 90 = 9 × 10, 0.125 at 86 in those cells).
+// Thin columns are 1/N wide everywhere; thin rows split a column's cells among the columns of its height.
 class CmjPattern {
  public:
   explicit CmjPattern(uint32_t count) : count_(count == 0 ? 1 : count) {
     uint32_t root = 1;
     while ((root + 1) * (root + 1) <= count_) ++root;
-    columns_ = root;  // for N < 5, where no grid but 1 × N (or 1 × 1, 1 × 2, 2 × 2) qualifies
-    rows_ = (count_ + root - 1) / root;
-    uint32_t spare = ~0u;
+    // A full grid if there is one (N < 4 has only 1 × N), else ⌊√N⌋ columns.
+    columns_ = root;
     for (uint32_t m = root; m > 0; --m) {
-      const uint32_t n = (count_ + m - 1) / m;
-      if (n > 2 * m) break;  // smaller m only stretch the grid further
-      if (m * n - count_ < spare) {
-        spare = m * n - count_;
+      const uint32_t n = count_ / m;
+      if (n > 2 * m && root > 1) break;  // smaller m only stretch the grid further
+      if (n * m == count_) {
         columns_ = m;
-        rows_ = n;
+        break;
       }
     }
-    cells_ = columns_ * rows_;
-    perCell_ = 1.0 / cells_;
-    perCount_ = 1.0 / count_;
+    rows_ = count_ / columns_;
+    const uint32_t wide = count_ % columns_;
+    wideColumns_ = wide;
+    bands_[0] = Band(0, rows_ + 1, wide);
+    bands_[1] = Band(wide * (rows_ + 1), rows_, columns_ - wide);
     countRange_ = cmj_detail::PermutationRange(count_);
-    cellRange_ = cmj_detail::PermutationRange(cells_);
-    columnRange_ = cmj_detail::PermutationRange(columns_);
-    rowRange_ = cmj_detail::PermutationRange(rows_);
+    perCount_ = 1.0 / count_;
   }
 
   uint32_t count() const { return count_; }
-  uint32_t columns() const { return columns_; }  // m
-  uint32_t rows() const { return rows_; }        // n
+  uint32_t columns() const { return columns_; }          // m
+  uint32_t rows() const { return rows_; }                // cells in each of the narrow columns, ⌊N/m⌋
+  uint32_t wideColumns() const { return wideColumns_; }  // the first r columns hold rows() + 1 cells
 
  private:
   friend class CmjSampler;
-  uint32_t count_, columns_ = 1, rows_ = 1, cells_ = 1;
-  cmj_detail::PermutationRange countRange_, cellRange_, columnRange_, rowRange_;
-  double perCell_ = 1.0, perCount_ = 1.0;  // 1 / (m·n), 1 / N
+  // The columns of one height: they start at thin column `start` (cell index `start` too: cells are
+  // numbered column by column), each `height` cells tall and `height` thin columns wide.
+  struct Band {
+    Band() = default;
+    Band(uint32_t first, uint32_t cells, uint32_t count)
+        : start(first), height(cells), columns(count), heightRange(cells), columnRange(count),
+          perThinRow(1.0 / (double(cells) * (count == 0 ? 1 : count))) {}
+    uint32_t start = 0, height = 1, columns = 0;
+    cmj_detail::PermutationRange heightRange, columnRange;
+    double perThinRow = 1.0;  // 1 / (height · columns): a thin row's height
+  };
+  uint32_t count_, columns_ = 1, rows_ = 1, wideColumns_ = 0;
+  Band bands_[2];  // the wide columns (possibly none), then the narrow ones
+  cmj_detail::PermutationRange countRange_;
+  double perCount_ = 1.0;  // 1 / N
 };
 
 // The seeds of one pixel's dimensions. A pixel's samples differ only in their index, so the samples traced
@@ -164,21 +176,22 @@ class CmjSampler {
   CmjSampler(const CmjPattern& pattern, CmjPixel& pixel, uint32_t sampleIndex)
       : pattern_(&pattern), pixel_(&pixel), index_(sampleIndex) {}
 
-  // The dimension's shuffle of the index picks cell (c, r); inside it the point's thin column is a
-  // permutation of r and its thin row one of c, the same permutations in every cell (the "correlated"
-  // offsets, which put one point in each thin column and row), plus jitter.
+  // The dimension's shuffle of the index picks cell i of column c; inside it the point's thin column is
+  // a permutation of i and its thin row one of c, the same permutations in every column of a height (the
+  // "correlated" offsets, which put one point in each thin column and row), plus jitter.
   Vec2 get2D() {
     using namespace cmj_detail;
     const CmjPattern& g = *pattern_;
     const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
-    const uint32_t cell = permute(index_, g.cellRange_, p.cell);
-    const uint32_t c = cell % g.columns_, r = cell / g.columns_;
-    const uint32_t thinColumn = permute(r, g.rowRange_, p.column);
-    const uint32_t thinRow = permute(c, g.columnRange_, p.row);
+    const uint32_t cell = permute(index_, g.countRange_, p.cell);
+    const CmjPattern::Band& band = g.bands_[cell >= g.bands_[1].start];
+    const uint32_t k = cell - band.start, c = k / band.height, i = k - c * band.height;
+    const uint32_t thinColumn = permute(i, band.heightRange, p.column);
+    const uint32_t thinRow = permute(c, band.columnRange, p.row);
     const uint64_t jitter = mix(cell, uint32_t(p.cell >> 32));
-    // (c + (thinColumn + j) / n) / m, and the same for y, with one rounding each.
-    return {belowOne((c * g.rows_ + thinColumn + toUnit(uint32_t(jitter >> 32))) * g.perCell_),
-            belowOne((r * g.columns_ + thinRow + toUnit(uint32_t(jitter))) * g.perCell_)};
+    // The column's first thin column + (thinColumn + j), over N; (i + (thinRow + j) / columns) / height.
+    return {belowOne((band.start + c * band.height + thinColumn + toUnit(uint32_t(jitter >> 32))) * g.perCount_),
+            belowOne((i * band.columns + thinRow + toUnit(uint32_t(jitter))) * band.perThinRow)};
   }
 
   // One point in each of the N intervals [k/N, (k+1)/N).
