@@ -11,11 +11,15 @@
 //                                   of the recorded rays through raw Embree (each after a warm-up), one ray
 //                                   at a time and in the render's own packets
 //                                   → "ok RAYS SAMPLES PT_SECONDS RAW_SECONDS RAW_PACKET_SECONDS" (medians)
+//   dumprays SPP FILE               record every ray of one render and write them to FILE, 8 little-endian
+//                                   float32 per ray: origin, direction, tfar, 1 for a shadow ray else 0 (for
+//                                   timing another renderer's traversal on the same rays) → "ok RAYS"
 //   quit
 //
 // An error answers "error MESSAGE". `glossy_compare --write-sky FILE` writes glossy's built-in procedural
 // sky as a float EXR (the map both renderers load) and exits.
 #include "bench/ray_replay.h"
+#include "materials/core/atomic_file.h"
 #include "renderer/image/exr_image.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/lights/default_sky.h"
@@ -29,6 +33,8 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 using namespace glossy;
 using namespace glossy::bench;
@@ -122,6 +128,29 @@ int main(int argc, char** argv) {
           const double raw = replaySeconds(bvh, rays, Replay::OneRayAtATime, settings.threads, runs);
           const double rawPackets = replaySeconds(bvh, rays, Replay::AsRecorded, settings.threads, runs);
           std::printf("ok %zu %.17g %.9g %.9g %.9g\n", rays.rays, double(width) * height * settings.spp, pt, raw, rawPackets);
+        } else if (command == "dumprays") {
+          RenderSettings settings = base;
+          std::string out;
+          if (!(in >> settings.spp >> out)) throw std::runtime_error("usage: dumprays SPP FILE");
+          settings.threads = 1;
+          RenderStats stats;
+          Recorder recorder;
+          bvh.setRecorder(&recorder);
+          render(scene, camera, settings, stats);
+          bvh.setRecorder(nullptr);
+          const RecordedRays rays = recorder.take();
+          std::vector<float> records;
+          records.reserve(rays.rays * 8);
+          for (const RecordedQuery& q : rays.queries)
+            for (int i = 0; i < kPacketSize; ++i)
+              if (q.valid[i]) {
+                const RTCRay& r = q.rays[i];
+                records.insert(records.end(), {r.org_x, r.org_y, r.org_z, r.dir_x, r.dir_y, r.dir_z, r.tfar,
+                                               q.shadow ? 1.0f : 0.0f});
+              }
+          writeFileAtomically(out, std::string_view(reinterpret_cast<const char*>(records.data()),
+                                                    records.size() * sizeof(float)));
+          std::printf("ok %zu\n", rays.rays);
         } else {
           throw std::runtime_error("unknown command '" + command + "'");
         }

@@ -14,7 +14,8 @@ Run through scripts/compare-mitsuba, which makes the venv and builds glossy. Ste
     glossy's time is its render call (bench/compare_bench.cpp); Mitsuba's is mi.render + dr.eval +
     dr.sync_thread, so every kernel has run.
  3. Ray rates: glossy's path-tracing rays/s beside raw Embree's on the very rays of the same render, at
-    1 and 2 threads (bench/ray_replay.h).
+    1 and 2 threads (bench/ray_replay.h); and the same ratio for Mitsuba: its render's rate on that many rays
+    beside its own traversal (ray_intersect_preliminary, ray_test) of those rays.
  4. Agreement: converged images of both (each the mean of two half renders, cached in OUT/ref), relative
     RMSE between them over the sphere and the background, beside the noise floor the halves measure;
     the same for a grey Lambertian sphere (the environment orientation check).
@@ -91,6 +92,10 @@ class Glossy:
         rays, samples, pt, raw, raw_packets = self._ask(f"rays {spp} {threads} {runs}")
         return int(rays), float(samples), float(pt), float(raw), float(raw_packets)
 
+    def dump_rays(self, spp, path):
+        """Every ray of one render at spp, written to path (bench/compare_bench.cpp: 8 float32 per ray)."""
+        return int(self._ask(f"dumprays {spp} {path}")[0])
+
     def close(self):
         try:
             self.proc.stdin.write("quit\n")
@@ -155,6 +160,32 @@ class SppRounding:
             return 1
         finally:
             mi.set_log_level(level)
+
+
+def mitsuba_raw_seconds(ply, ray_file, runs):
+    """Mitsuba's own traversal of the rays glossy traced, on the same mesh: ray_intersect_preliminary for the
+    path rays, ray_test for the shadow rays (what its path integrator calls), one wavefront each, after two
+    warm-ups (JIT compile excluded). Median seconds at the current thread count."""
+    rec = np.fromfile(ray_file, dtype=np.float32).reshape(-1, 8)
+    scene = mi.load_dict({"type": "scene", "sphere": {"type": "ply", "filename": str(ply)}})
+
+    def rays(r):
+        return mi.Ray3f(mi.Point3f(r[:, 0], r[:, 1], r[:, 2]), mi.Vector3f(r[:, 3], r[:, 4], r[:, 5]), r[:, 6], 0.0, [])
+
+    def run():
+        path, shadow = rays(rec[rec[:, 7] == 0]), rays(rec[rec[:, 7] > 0])
+        dr.eval(path, shadow)
+        dr.sync_thread()
+        start = time.perf_counter()
+        pi = scene.ray_intersect_preliminary(path)
+        hit = scene.ray_test(shadow)
+        dr.eval(pi.t, pi.prim_index, hit)
+        dr.sync_thread()
+        return time.perf_counter() - start
+
+    run()
+    run()
+    return statistics.median(run() for _ in range(runs))
 
 
 def mitsuba_render_chunked(scene, spp, seed, rounding, chunk=256):
@@ -315,6 +346,20 @@ def main():
     m2 = statistics.median(mitsuba_render(mts, a.ray_spp, 980 + k)[0] for k in range(3))
     scaling = {"glossy_1": rays[1]["samples_per_s"], "glossy_2": rays[2]["samples_per_s"],
                "mitsuba_1": N * a.ray_spp / m1, "mitsuba_2": N * a.ray_spp / m2, "spp": a.ray_spp}
+    # The same ratio for Mitsuba: its render's ray rate beside its own traversal of glossy's rays. Its ray
+    # count is taken as glossy's (same scene and algorithm); it traces a shadow ray for every emitter sample,
+    # also those glossy skips (below the surface, zero BRDF), so that count is a lower bound and the ratio too.
+    ray_file = out / f"rays-{a.ray_spp}spp.bin"
+    n_dumped = glossy.dump_rays(a.ray_spp, ray_file)
+    for threads, m_pt in ((1, m1), (2, m2)):
+        dr.set_thread_count(threads)
+        m_raw = mitsuba_raw_seconds(out / "sphere.ply", ray_file, a.runs)
+        rays[threads].update({"mitsuba_pt_seconds": m_pt, "mitsuba_raw_seconds": m_raw,
+                              "mitsuba_raw_rays_per_s": n_dumped / m_raw, "mitsuba_pt_rays_per_s": n_dumped / m_pt,
+                              "mitsuba_pt_over_raw": m_raw / m_pt})
+        log(f"rays, {threads} thread(s): Mitsuba PT >= {n_dumped / m_pt:.3g}/s, its own traversal {n_dumped / m_raw:.3g}/s")
+    dr.set_thread_count(a.threads)
+    ray_file.unlink()
 
     # 4. Converged images (cached) and their agreement.
     def converged(name, render_half, spp):
@@ -447,6 +492,12 @@ def print_table(r):
     for t, v in r["rays"].items():
         print(f"{'  ' + str(t) + ' thread(s)':44} {v['pt_rays_per_s']:12.4g} {v['raw_rays_per_s']:12.4g} "
               f"{100 * v['pt_over_raw']:7.1f}% {v['raw_packet_rays_per_s']:12.4g} {100 * v['pt_over_raw_packets']:7.1f}%")
+    print(f"Mitsuba on the same rays (its ray count taken as glossy's: a lower bound): "
+          f"{'PT rays/s':>12} {'own raw':>12} {'PT/raw':>8}")
+    for t, v in r["rays"].items():
+        if "mitsuba_raw_seconds" in v:
+            print(f"{'  ' + str(t) + ' thread(s)':44} {v['mitsuba_pt_rays_per_s']:12.4g} {v['mitsuba_raw_rays_per_s']:12.4g} "
+                  f"{100 * v['mitsuba_pt_over_raw']:7.1f}%")
     print(f"agreement of the converged images (Cook-Torrance {r['reference']['spp']} spp each, grey diffuse "
           f"{r['reference']['check_spp']} spp each): rel. RMSE Mitsuba vs glossy [noise floor]")
     for name, g in r["agreement"].items():
