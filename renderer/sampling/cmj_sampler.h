@@ -114,8 +114,8 @@ class CmjPattern {
 
  private:
   friend class CmjSampler;
-  // The columns of one height: they start at thin column `start` (cell index `start` too: cells are
-  // numbered column by column), each `height` cells tall and `height` thin columns wide.
+  // The columns of one height: they start at thin column `start` (and cell index `start`: a band's cells
+  // are numbered row by row, as in Kensler's grid), each `height` cells tall and `height` thin columns wide.
   struct Band {
     Band() = default;
     Band(uint32_t first, uint32_t cells, uint32_t count)
@@ -185,7 +185,7 @@ class CmjSampler {
     const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
     const uint32_t cell = permute(index_, g.countRange_, p.cell);
     const CmjPattern::Band& band = g.bands_[cell >= g.bands_[1].start];
-    const uint32_t k = cell - band.start, c = k / band.height, i = k - c * band.height;
+    const uint32_t k = cell - band.start, i = k / band.columns, c = k - i * band.columns;
     const uint32_t thinColumn = permute(i, band.heightRange, p.column);
     const uint32_t thinRow = permute(c, band.columnRange, p.row);
     const uint64_t jitter = mix(cell, uint32_t(p.cell >> 32));
