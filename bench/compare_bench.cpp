@@ -56,6 +56,16 @@ int writeSky(const std::string& path) {
   return 0;
 }
 
+// Every ray of one render (rendering is deterministic: another render with these settings casts the same).
+RecordedRays recordRays(EmbreeScene& bvh, const RenderScene& scene, const Camera& camera, const RenderSettings& settings) {
+  RenderStats stats;
+  Recorder recorder;
+  bvh.setRecorder(&recorder);
+  render(scene, camera, settings, stats);
+  bvh.setRecorder(nullptr);
+  return recorder.take();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -117,12 +127,8 @@ int main(int argc, char** argv) {
           RenderSettings settings = base;
           int runs = 5;
           if (!(in >> settings.spp >> settings.threads >> runs) || runs < 1) throw std::runtime_error("usage: rays SPP THREADS RUNS");
+          const RecordedRays rays = recordRays(bvh, scene, camera, settings);
           RenderStats stats;
-          Recorder recorder;
-          bvh.setRecorder(&recorder);
-          render(scene, camera, settings, stats);
-          bvh.setRecorder(nullptr);
-          const RecordedRays rays = recorder.take();
           render(scene, camera, settings, stats);  // warm-up
           const double pt = medianSeconds(runs, [&] { render(scene, camera, settings, stats); });
           const double raw = replaySeconds(bvh, rays, Replay::OneRayAtATime, settings.threads, runs);
@@ -133,12 +139,7 @@ int main(int argc, char** argv) {
           std::string out;
           if (!(in >> settings.spp >> out)) throw std::runtime_error("usage: dumprays SPP FILE");
           settings.threads = 1;
-          RenderStats stats;
-          Recorder recorder;
-          bvh.setRecorder(&recorder);
-          render(scene, camera, settings, stats);
-          bvh.setRecorder(nullptr);
-          const RecordedRays rays = recorder.take();
+          const RecordedRays rays = recordRays(bvh, scene, camera, settings);
           std::vector<float> records;
           records.reserve(rays.rays * 8);
           for (const RecordedQuery& q : rays.queries)
