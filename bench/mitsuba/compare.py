@@ -162,19 +162,20 @@ class SppRounding:
             mi.set_log_level(level)
 
 
-def mitsuba_raw_seconds(ply, ray_file, runs):
+def mitsuba_raw_seconds(ply, ray_file, runs, thread_counts):
     """Mitsuba's own traversal of the rays glossy traced, on the same mesh: ray_intersect_preliminary for the
     path rays, ray_test for the shadow rays (what its path integrator calls), one wavefront each, after two
-    warm-ups (JIT compile excluded). Median seconds at the current thread count."""
+    warm-ups (JIT compile excluded). {threads: median seconds} for each thread count."""
     rec = np.fromfile(ray_file, dtype=np.float32).reshape(-1, 8)
     scene = mi.load_dict({"type": "scene", "sphere": {"type": "ply", "filename": str(ply)}})
 
     def rays(r):
         return mi.Ray3f(mi.Point3f(r[:, 0], r[:, 1], r[:, 2]), mi.Vector3f(r[:, 3], r[:, 4], r[:, 5]), r[:, 6], 0.0, [])
 
+    path, shadow = rays(rec[rec[:, 7] == 0]), rays(rec[rec[:, 7] > 0])
+    dr.eval(path, shadow)
+
     def run():
-        path, shadow = rays(rec[rec[:, 7] == 0]), rays(rec[rec[:, 7] > 0])
-        dr.eval(path, shadow)
         dr.sync_thread()
         start = time.perf_counter()
         pi = scene.ray_intersect_preliminary(path)
@@ -183,9 +184,13 @@ def mitsuba_raw_seconds(ply, ray_file, runs):
         dr.sync_thread()
         return time.perf_counter() - start
 
-    run()
-    run()
-    return statistics.median(run() for _ in range(runs))
+    seconds = {}
+    for threads in thread_counts:
+        dr.set_thread_count(threads)
+        run()
+        run()
+        seconds[threads] = statistics.median(run() for _ in range(runs))
+    return seconds
 
 
 def mitsuba_render_chunked(scene, spp, seed, rounding, chunk=256):
@@ -351,9 +356,9 @@ def main():
     # also those glossy skips (below the surface, zero BRDF), so that count is a lower bound and the ratio too.
     ray_file = out / f"rays-{a.ray_spp}spp.bin"
     n_dumped = glossy.dump_rays(a.ray_spp, ray_file)
+    m_raws = mitsuba_raw_seconds(out / "sphere.ply", ray_file, a.runs, (1, 2))
     for threads, m_pt in ((1, m1), (2, m2)):
-        dr.set_thread_count(threads)
-        m_raw = mitsuba_raw_seconds(out / "sphere.ply", ray_file, a.runs)
+        m_raw = m_raws[threads]
         rays[threads].update({"mitsuba_pt_seconds": m_pt, "mitsuba_raw_seconds": m_raw,
                               "mitsuba_raw_rays_per_s": n_dumped / m_raw, "mitsuba_pt_rays_per_s": n_dumped / m_pt,
                               "mitsuba_pt_over_raw": m_raw / m_pt})

@@ -108,13 +108,17 @@ struct Environment::Impl {
   // Directions to cells and back (the rotation included).
   LatLongGrid grid;
 
+  // A cell's density on the (s, v) square as a density over solid angle at sin θ: the lat-long map's
+  // Jacobian is dω = 2π² sin θ ds dv.
+  static double solidAngleDensity(double cellValue, double sinTheta) { return cellValue / (2.0 * kPi * kPi * sinTheta); }
+
   // The solid-angle density of sample() at dir, whose lookup position is at: Distribution2D's density at
   // (s, v) = (u_map − ½/W, v), whose cell is the patch the lookup falls in, as the map keeps it (in float,
   // beside the cell's texel; sample() reports the same value).
   double pdfAt(const Vec3& dir, const LatLongPosition& at) const {
     const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
     if (!(sinTheta > 0.0)) return 0.0;
-    return double(map.cellValue(at)) / (2.0 * kPi * kPi * sinTheta);
+    return solidAngleDensity(map.cellValue(at), sinTheta);
   }
 
   // The sample of the map in direction dir (with its sin θ), at the lookup position `at` of the cell
@@ -123,7 +127,7 @@ struct Environment::Impl {
     const double density = map.cellValue(at);
     // At a pole the lat-long Jacobian vanishes and the solid-angle density is unbounded: no usable sample.
     if (density <= 0.0 || sinTheta <= 0.0) return {};
-    return {dir, map.interpolate(at), density / (2.0 * kPi * kPi * sinTheta)};
+    return {dir, map.interpolate(at), solidAngleDensity(density, sinTheta)};
   }
 
   void buildDistribution(const LatLongImage& image) {

@@ -100,7 +100,6 @@ class CmjPattern {
     }
     rows_ = count_ / columns_;
     const uint32_t wide = count_ % columns_;
-    wideColumns_ = wide;
     bands_[0] = Band(0, rows_ + 1, wide);
     bands_[1] = Band(wide * (rows_ + 1), rows_, columns_ - wide);
     countRange_ = cmj_detail::PermutationRange(count_);
@@ -110,7 +109,7 @@ class CmjPattern {
   uint32_t count() const { return count_; }
   uint32_t columns() const { return columns_; }          // m
   uint32_t rows() const { return rows_; }                // cells in each of the narrow columns, ⌊N/m⌋
-  uint32_t wideColumns() const { return wideColumns_; }  // the first r columns hold rows() + 1 cells
+  uint32_t wideColumns() const { return bands_[0].columns; }  // the first r columns hold rows() + 1 cells
 
  private:
   friend class CmjSampler;
@@ -125,7 +124,7 @@ class CmjPattern {
     cmj_detail::PermutationRange heightRange, columnRange;
     double perThinRow = 1.0;  // 1 / (height · columns): a thin row's height
   };
-  uint32_t count_, columns_ = 1, rows_ = 1, wideColumns_ = 0;
+  uint32_t count_, columns_ = 1, rows_ = 1;
   Band bands_[2];  // the wide columns (possibly none), then the narrow ones
   cmj_detail::PermutationRange countRange_;
   double perCount_ = 1.0;  // 1 / N
