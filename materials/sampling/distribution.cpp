@@ -154,28 +154,6 @@ Distribution2D::Sample Distribution2D::sample(Vec2 u) const {
   return {Vec2(invertInBin(cdf, width_, column, ux), y), cellDensity(column, row), column, row};
 }
 
-void Distribution2D::sampleCells(const bool* want, const Vec2* u, Sample* out, int n) const {
-  std::size_t row[kMaxBatch], guideEntry[kMaxBatch];
-  double ux[kMaxBatch], y[kMaxBatch];
-  // The marginal is small and stays cached; the row's guide entry is the first miss.
-  for (int i = 0; i < n; ++i) {
-    if (!want[i]) continue;
-    y[i] = marginal_.sampleContinuous(u[i].y, nullptr, &row[i]);
-    ux[i] = clampUnit(u[i].x);
-    guideEntry[i] = row[i] * width_ + std::min(std::size_t(ux[i] * double(width_)), width_ - 1);
-    __builtin_prefetch(&guide_[guideEntry[i]]);
-  }
-  // The guide entry gives where in the row's CDF the search starts: the second miss.
-  for (int i = 0; i < n; ++i)
-    if (want[i]) __builtin_prefetch(&cdf_[row[i] * (width_ + 1) + guide_[guideEntry[i]]]);
-  for (int i = 0; i < n; ++i) {
-    if (!want[i]) continue;
-    const double* cdf = &cdf_[row[i] * (width_ + 1)];
-    const std::size_t column = findBin(cdf, &guide_[row[i] * width_], width_, ux[i]);
-    out[i] = {Vec2(invertInBin(cdf, width_, column, ux[i]), y[i]), 0.0, column, row[i]};
-  }
-}
-
 double Distribution2D::pdf(Vec2 point) const {
   if (!(point.x >= 0.0 && point.x <= 1.0 && point.y >= 0.0 && point.y <= 1.0)) return 0.0;
   const std::size_t row = std::min(std::size_t(point.y * double(height())), height() - 1);

@@ -1,5 +1,6 @@
 // Piecewise-constant probability densities on [0,1) and [0,1)², sampled by exact inversion of their CDFs
-// (after pbrt's Distribution1D/2D). Shared by the environment light and the measured-BRDF sampler.
+// (after pbrt's Distribution1D/2D). Distribution2D samples the measured BRDFs' half vectors; the environment
+// light uses Distribution1D for its rows and BlockedDistribution2D (blocked_distribution.h) within them.
 //
 // A tabulated function f of n non-negative bins defines the density p(x) = f(⌊x·n⌋) / ∫f on [0,1).
 // Degenerate tables never produce NaN: when every value is zero the density is uniform (p ≡ 1), so the
@@ -61,8 +62,6 @@ class Distribution1D {
 // per call) in a third, so that a sample touches a few cache lines of one row and pdf() a single value.
 class Distribution2D {
  public:
-  // A plain aggregate, always built whole: the batch form's callers keep arrays of them that are not
-  // zeroed per call.
   struct Sample {
     Vec2 point;          // in [0,1)²
     double pdf;          // with respect to area on the unit square
@@ -78,14 +77,6 @@ class Distribution2D {
 
   // u in [0,1)² (clamped). pdf(sample(u).point) == sample(u).pdf exactly.
   Sample sample(Vec2 u) const;
-  // out[i] = sample(u[i]) for the lanes with want[i], i < n ≤ kMaxBatch, but for its pdf, left at 0: the
-  // caller (the environment light) keeps the densities beside what it reads next, so that a sample does
-  // not pay for one more miss (cellDensity gives it otherwise). A sample is a chain of dependent loads
-  // (guide table → CDF) that mostly miss the cache; one lane at a time, each waits for its own chain. Here
-  // every step is taken for all lanes before the next, each step's loads prefetched, so the lanes' misses
-  // overlap.
-  static constexpr int kMaxBatch = 64;
-  void sampleCells(const bool* want, const Vec2* u, Sample* out, int n) const;
   double pdf(Vec2 point) const;  // 0 outside [0,1]²
   double cellDensity(std::size_t column, std::size_t row) const { return density_[row * width_ + column]; }
 

@@ -5,7 +5,7 @@
 #include "materials/core/input_error.h"
 #include "renderer/lights/default_sky.h"
 #include "renderer/lights/latlong.h"
-#include "materials/sampling/distribution.h"
+#include "materials/sampling/blocked_distribution.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -83,7 +83,7 @@ LatLongImage readLatLong(const std::filesystem::path& path) {
 
 // The sample's lookup position: the sampled point's cell is the patch of the lookup, where
 // x = u_map·W − ½ = s·W and y = v·(H − 1).
-LatLongPosition cellPosition(const Distribution2D::Sample& cell, int width, int height) {
+LatLongPosition cellPosition(const BlockedDistribution2D::Sample& cell, int width, int height) {
   const int column = int(cell.column), row = int(cell.row);
   return {column, column + 1 == width ? 0 : column + 1, row, cell.point.x * width - double(column),
           cell.point.y * (height - 1) - double(row)};
@@ -102,8 +102,9 @@ struct Environment::Impl {
   double uOffset = 0.0;
   // Over (s, v) with s = u_map − ½/W: its cells are the bilinear patches between adjacent texel centres,
   // W × (H − 1) of them, so each cell's value can bound the interpolated function exactly. Cell (i, j) is
-  // patch (i, j) of the map.
-  Distribution2D distribution;
+  // patch (i, j) of the map. Blocked (blocked_distribution.h): a sample reads one line of it that can
+  // miss the cache, where a full CDF and its guide table read two or three in a chain.
+  BlockedDistribution2D distribution;
 
   // Directions to cells and back (the rotation included).
   LatLongGrid grid;
@@ -112,7 +113,7 @@ struct Environment::Impl {
   // Jacobian is dω = 2π² sin θ ds dv.
   static double solidAngleDensity(double cellValue, double sinTheta) { return cellValue / (2.0 * kPi * kPi * sinTheta); }
 
-  // The solid-angle density of sample() at dir, whose lookup position is at: Distribution2D's density at
+  // The solid-angle density of sample() at dir, whose lookup position is at: the distribution's density at
   // (s, v) = (u_map − ½/W, v), whose cell is the patch the lookup falls in, as the map keeps it (in float,
   // beside the cell's texel; sample() reports the same value).
   double pdfAt(const Vec3& dir, const LatLongPosition& at) const {
@@ -122,7 +123,7 @@ struct Environment::Impl {
   }
 
   // The sample of the map in direction dir (with its sin θ), at the lookup position `at` of the cell
-  // Distribution2D drew.
+  // the distribution drew.
   Sample sampleAt(const LatLongPosition& at, const Vec3& dir, double sinTheta) const {
     const double density = map.cellValue(at);
     // At a pole the lat-long Jacobian vanishes and the solid-angle density is unbounded: no usable sample.
@@ -152,7 +153,7 @@ struct Environment::Impl {
         weights[std::size_t(cell) * width + column] = meanLuminance * meanSinTheta;
       }
     }
-    distribution = Distribution2D(weights, std::size_t(width), std::size_t(cells));
+    distribution = BlockedDistribution2D(weights, std::size_t(width), std::size_t(cells));
     std::vector<float> densities(weights.size());
     for (int cell = 0; cell < cells; ++cell)
       for (int column = 0; column < width; ++column) {
@@ -224,7 +225,7 @@ Environment::Sample Environment::sample(Vec2 u) const {
   return out;
 }
 
-static_assert(Environment::kMaxBatch <= Distribution2D::kMaxBatch, "a batch of samples is one Distribution2D batch");
+static_assert(Environment::kMaxBatch <= BlockedDistribution2D::kMaxBatch, "a batch of samples is one distribution batch");
 
 void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) const {
   const Impl& env = *impl_;
@@ -233,8 +234,8 @@ void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) co
       if (want[i]) out[i] = sample(u[i]);
     return;
   }
-  Distribution2D::Sample cells[kMaxBatch];
-  env.distribution.sampleCells(want, u, cells, n);  // the map holds the densities
+  BlockedDistribution2D::Sample cells[kMaxBatch];
+  env.distribution.sample(want, u, cells, n);  // the map holds the densities
   // The wanted lanes, packed, for the grid's batch conversion.
   int lane[kMaxBatch], count = 0;
   LatLongPosition at[kMaxBatch];
