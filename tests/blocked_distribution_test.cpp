@@ -53,14 +53,17 @@ TEST(BlockedDistribution2D, DensityIntegratesToOneAndFollowsTheTable) {
       }
       EXPECT_GT(density, 0.0) << "a cell with weight must keep a density: " << x << ", " << y;
       const double exact = weight / total * double(kWidth * kHeight);
-      // A cell's share of its block is in 65535ths of it, one of them given to every cell with weight
-      // before the rest are shared out: off by at most 2 of them plus the number of cells given one.
-      const double blockMass = [&] {
+      // A share of a block is in 65535ths of it, one of them given to every child with weight before the
+      // rest are shared out: off by at most 2 of them plus the number of children given one. Here a row is
+      // two levels: cells in blocks of 32, and the row's 3 blocks in one.
+      const auto massOf = [&](std::size_t from, std::size_t to) {
         double m = 0.0;
-        for (std::size_t k = x / 32 * 32; k < std::min(kWidth, x / 32 * 32 + 32); ++k) m += t[y * kWidth + k];
+        for (std::size_t k = from; k < std::min(kWidth, to); ++k) m += t[y * kWidth + k];
         return m / total * double(kWidth * kHeight);
-      }();
-      EXPECT_NEAR(density, exact, (2.0 + 32.0) * blockMass / 65535.0 + 1e-12) << x << ", " << y;
+      };
+      const double blockMass = massOf(x / 32 * 32, x / 32 * 32 + 32), rowMass = massOf(0, kWidth);
+      const double cellShare = (2.0 + 32.0) * blockMass / 65535.0, blockShare = (2.0 + 3.0) * rowMass / 65535.0;
+      EXPECT_NEAR(density, exact, cellShare + blockShare * exact / blockMass + 1e-12) << x << ", " << y;
     }
   EXPECT_NEAR(sum, 1.0, 1e-12);
   EXPECT_EQ(d.pdf({0.5, 0.5}), 0.0);  // the zero row
@@ -169,10 +172,11 @@ TEST(BlockedDistribution2D, EndsOfTheSquareAndDegenerateTables) {
       EXPECT_GT(d.cellDensity(s.column, s.row), 0.0) << a << ", " << b;
     }
 
-  // All zero: uniform, to the quantisation of a block's shares.
+  // All zero: uniform, to the quantisation of the shares (a cell's of its block of 32 is 2048 ± 1
+  // 65535ths, 1/2048 of itself, and its block's of the row is off by a few 65535ths more).
   const BlockedDistribution2D zero(std::vector<double>(40 * 3, 0.0), 40, 3);
   for (std::size_t y = 0; y < 3; ++y)
-    for (std::size_t x = 0; x < 40; ++x) EXPECT_NEAR(zero.cellDensity(x, y), 1.0, 32.0 / 65535.0);
+    for (std::size_t x = 0; x < 40; ++x) EXPECT_NEAR(zero.cellDensity(x, y), 1.0, 1.0 / 2048.0 + 4.0 / 65535.0);
   const auto s = zero.sample({0.3, 0.7});
   EXPECT_NEAR(s.point.x, 0.3, 1e-4);
   EXPECT_NEAR(s.point.y, 0.7, 1e-15);
@@ -185,6 +189,50 @@ TEST(BlockedDistribution2D, EndsOfTheSquareAndDegenerateTables) {
   EXPECT_THROW(BlockedDistribution2D(std::vector<double>(5, 1.0), 2, 3), std::invalid_argument);
   EXPECT_THROW(BlockedDistribution2D(std::vector<double>{1.0, -1.0}, 2, 1), std::invalid_argument);
   EXPECT_THROW(BlockedDistribution2D(std::vector<double>{1.0, INFINITY}, 2, 1), std::invalid_argument);
+}
+
+// 2100 columns: a row is three levels deep (66 blocks of cells, 3 blocks of those, one top block).
+TEST(BlockedDistribution2D, WideRowsAreDeeperTreesOfTheSameKind) {
+  constexpr std::size_t width = 2100, height = 3;
+  std::vector<double> t(width * height);
+  for (std::size_t i = 0; i < t.size(); ++i)
+    t[i] = i % 11 == 0 ? 0.0 : 1.0 + std::sin(0.01 * double(i)) + (i % 700 == 5 ? 300.0 : 0.0);
+  const BlockedDistribution2D d(t, width, height);
+  double sum = 0.0;
+  for (std::size_t y = 0; y < height; ++y)
+    for (std::size_t x = 0; x < width; ++x) {
+      sum += d.cellDensity(x, y) / double(width * height);
+      EXPECT_EQ(d.cellDensity(x, y) > 0.0, t[y * width + x] > 0.0) << x << ", " << y;
+    }
+  EXPECT_NEAR(sum, 1.0, 1e-12);
+
+  // Per block of 32 cells, a stratified grid of u lands as the density says (the preimage of a block of
+  // a row is a rectangle in u, so the counting error is bounded by its sides, as above).
+  const int n = 1200;
+  std::vector<double> fraction(height * 66, 0.0);
+  double last = -1.0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const auto s = d.sample({(i + 0.5) / n, (j + 0.5) / n});
+      ASSERT_LT(s.column, width);
+      ASSERT_GT(t[s.row * width + s.column], 0.0);
+      ASSERT_EQ(d.pdf(s.point), d.cellDensity(s.column, s.row));
+      if (i > 0) {
+        ASSERT_GE(s.point.x, last);
+      }
+      last = s.point.x;
+      fraction[s.row * 66 + s.column / 32] += 1.0 / (double(n) * n);
+    }
+  for (std::size_t y = 0; y < height; ++y) {
+    double row = 0.0;
+    for (std::size_t x = 0; x < width; ++x) row += d.cellDensity(x, y) / double(width * height);
+    for (std::size_t b = 0; b < 66; ++b) {
+      double expected = 0.0;
+      for (std::size_t x = b * 32; x < std::min(width, b * 32 + 32); ++x)
+        expected += d.cellDensity(x, y) / double(width * height);
+      EXPECT_NEAR(fraction[y * 66 + b], expected, (row + expected / row) / n + 2.0 / (double(n) * n)) << b << ", " << y;
+    }
+  }
 }
 
 }  // namespace glossy::test

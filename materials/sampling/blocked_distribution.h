@@ -1,18 +1,19 @@
 // A piecewise-constant density on [0,1)² laid out for random access to large tables: the environment
-// light's importance sampling, where every lookup misses the cache.
+// light's importance sampling, where lookups miss the cache.
 //
 // Like Distribution2D it inverts the CDFs, the marginal over rows and then the chosen row's conditional,
 // so the map from u to the point is monotone in each coordinate and a stratified u stays stratified. Its
-// conditionals are stored in two levels: each row's CDF over blocks of kBlock cells (double, small enough
-// to stay cached: 264 bytes a row of 1024 cells), and each block's CDF over its cells in 16 bits, one
-// cache line per block. A sample then reads one line that can miss, where a full CDF and its guide table
-// read two or three in a chain (a guide entry, then the CDF lines it points to), and this table is a
-// tenth of their size (1.2 MB against 10 MB for a 1024 × 512 map).
+// conditionals are stored as trees of blocks: a block is one cache line, the 16-bit CDF of 32 children
+// (cells, or blocks of the level below), and a row of W cells is a tree ⌈log₃₂ W⌉ blocks deep (2 for
+// 1024 columns, 3 for 2048 to 32 768). A sample reads one block per level, the top ones small enough to
+// stay cached, where a full CDF and its guide table read two or three lines in a chain that all miss; and
+// the table is a tenth of their size (1.1 MB against 10.5 MB for a 1024 × 512 map, 17 against 168 for
+// 4096 × 2048).
 //
-// Quantising a block's CDF changes the density a little (a cell's share of its block is a multiple of
-// 1/65535; a cell with any weight keeps at least one), never its consistency: cellDensity is the density
-// the sampler draws from, exactly, so estimators that divide by it stay unbiased. Zero-weight cells are
-// never drawn and have density 0, zero rows likewise; an all-zero table is uniform.
+// Quantising the CDFs changes the density a little (a child's share of its block is a multiple of
+// 1/65535, and a child with any weight keeps at least one), never its consistency: cellDensity is the
+// density the sampler draws from, exactly, so estimators that divide by it stay unbiased. Zero-weight
+// cells are never drawn and have density 0, zero rows likewise; an all-zero table is uniform.
 #pragma once
 
 #include "materials/core/types.h"
@@ -28,7 +29,7 @@ namespace glossy {
 
 class BlockedDistribution2D {
  public:
-  static constexpr std::size_t kBlock = 32;  // cells per block: 31 16-bit thresholds and a zero, 64 bytes
+  static constexpr std::size_t kBlock = 32;  // children per block: a zero and 31 16-bit thresholds, 64 bytes
 
   // A plain aggregate, always built whole (batch callers keep arrays of them that are not zeroed).
   struct Sample {
@@ -46,8 +47,8 @@ class BlockedDistribution2D {
 
   // u in [0,1)² (clamped). The density at sample(u).point is cellDensity of its cell.
   Sample sample(Vec2 u) const;
-  // out[i] = sample(u[i]) for the lanes with want[i], i < n ≤ kMaxBatch: the lanes' block lines are
-  // fetched together, so that their cache misses overlap.
+  // out[i] = sample(u[i]) for the lanes with want[i], i < n ≤ kMaxBatch: each level's blocks are
+  // fetched for all lanes before the next level is read, so that the lanes' cache misses overlap.
   static constexpr int kMaxBatch = 64;
   void sample(const bool* want, const Vec2* u, Sample* out, int n) const;
 
@@ -56,23 +57,24 @@ class BlockedDistribution2D {
   double pdf(Vec2 point) const;  // cellDensity of the cell holding point; 0 outside [0,1]²
 
  private:
-  static constexpr uint32_t kScale = 65535;  // a block's cells' shares are multiples of 1/kScale
+  static constexpr uint32_t kScale = 65535;  // a block's children's shares are multiples of 1/kScale
   struct alignas(64) Block {
-    uint16_t start[kBlock];  // cell k's share begins at start[k] / kScale; start[0] = 0
+    uint16_t start[kBlock];  // child k's share begins at start[k] / kScale; start[0] = 0
   };
   static_assert(sizeof(Block) == 64, "a block is one cache line");
 
-  // Where u (in [0,1)) falls in row `row`: its block, and u's position within the block's mass in
-  // [0, kScale).
-  std::size_t findBlock(std::size_t row, double u, double& within) const;
-  const Block& block(std::size_t row, std::size_t b) const { return blocks_[row * blocksPerRow_ + b]; }
-  // The column and the x of the sample, given its block and its position within the block's mass.
-  void finish(std::size_t row, std::size_t b, double within, Sample& s) const;
+  const Block& block(std::size_t row, std::size_t level, std::size_t index) const {
+    return blocks_[row * blocksPerRow_ + levelStart_[level] + index];
+  }
+  // One level down: the child of `block` that `within` (a position in the block's mass, in [0, kScale))
+  // falls in, and within's position in that child's mass (or, at the bottom, in the cell, in [0, 1)).
+  static std::size_t descend(const Block& block, double& within, bool bottom);
+  void finish(std::size_t column, double fraction, Sample& s) const;
 
-  std::size_t width_ = 0, blocksPerRow_ = 0, cdfStride_ = 0;
-  Distribution1D marginal_;            // over rows, weighted by each row's sum
-  std::vector<double> blockCdf_;       // row y's CDF over its blocks at [y·cdfStride_, (y + 1)·cdfStride_)
-  HugePageVector<Block> blocks_;       // row y's blocks at [y·blocks, (y + 1)·blocks)
+  std::size_t width_ = 0, blocksPerRow_ = 0;
+  std::vector<std::size_t> levelStart_;  // per level, top first: its first block in a row's blocks
+  Distribution1D marginal_;              // over rows, weighted by each row's sum
+  HugePageVector<Block> blocks_;         // row y's tree at [y·blocksPerRow_, (y + 1)·blocksPerRow_)
 };
 
 }  // namespace glossy
