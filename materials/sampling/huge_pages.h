@@ -3,7 +3,7 @@
 // 10–20 MB of 4 KiB pages miss the TLB on almost every access, and a miss costs a page walk (nested, on
 // a VM) on top of the cache miss; with 2 MiB pages a whole table needs a handful of TLB entries. Where
 // huge pages are unavailable it is an ordinary aligned allocation: contents and results never depend on
-// it.
+// it. Smaller blocks are ordinary allocations with T's alignment (a cache-line-sized T stays on its line).
 #pragma once
 
 #include <cstddef>

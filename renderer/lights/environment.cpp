@@ -102,8 +102,8 @@ struct Environment::Impl {
   double uOffset = 0.0;
   // Over (s, v) with s = u_map − ½/W: its cells are the bilinear patches between adjacent texel centres,
   // W × (H − 1) of them, so each cell's value can bound the interpolated function exactly. Cell (i, j) is
-  // patch (i, j) of the map. Blocked (blocked_distribution.h): a sample reads one line of it that can
-  // miss the cache, where a full CDF and its guide table read two or three in a chain.
+  // patch (i, j) of the map. Blocked (blocked_distribution.h): a tenth of the memory of full CDFs, and a
+  // sample reads one cache line of it per level, the top ones cached.
   BlockedDistribution2D distribution;
 
   // Directions to cells and back (the rotation included).
