@@ -80,10 +80,7 @@ TEST(BlockedDistribution2D, SamplesFollowTheDensityItReports) {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
       const auto s = d.sample({(i + 0.5) / n, (j + 0.5) / n});
-      ASSERT_GE(s.point.x, 0.0);
-      ASSERT_LT(s.point.x, 1.0);
-      ASSERT_GE(s.point.y, 0.0);
-      ASSERT_LT(s.point.y, 1.0);
+      ASSERT_TRUE(s.point.x >= 0.0 && s.point.x < 1.0 && s.point.y >= 0.0 && s.point.y < 1.0);
       ASSERT_EQ(s.column, std::size_t(s.point.x * kWidth));
       ASSERT_EQ(s.row, std::size_t(s.point.y * kHeight));
       ASSERT_GT(t[s.row * kWidth + s.column], 0.0) << "drew a cell without weight";

@@ -81,7 +81,8 @@ BlockedDistribution2D::BlockedDistribution2D(std::span<const double> values, std
 double BlockedDistribution2D::cellDensity(std::size_t column, std::size_t row) const {
   double density = marginal_.pdf((double(row) + 0.5) / double(height())) * double(width_);
   const std::size_t levels = levelStart_.size();
-  std::size_t shift = 5 * levels;  // kBlock = 2⁵
+  static_assert(kBlock == 32, "a level is 5 bits of the column");
+  std::size_t shift = 5 * levels;
   for (std::size_t level = 0; level < levels; ++level) {
     shift -= 5;
     const std::size_t index = column >> shift, b = index / kBlock, k = index % kBlock;
