@@ -1,19 +1,13 @@
 // BlockedDistribution2D: building the rows' trees of 16-bit CDFs, and descending them.
 #include "materials/sampling/blocked_distribution.h"
 
+#include "materials/sampling/unit_interval.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace glossy {
-
-namespace {
-
-constexpr double kOneMinusEpsilon = 1.0 - 0x1p-53;
-
-double clampUnit(double u) { return u >= 0.0 ? std::min(u, kOneMinusEpsilon) : 0.0; }
-
-}  // namespace
 
 BlockedDistribution2D::BlockedDistribution2D(std::span<const double> values, std::size_t width, std::size_t height)
     : width_(width) {
@@ -113,16 +107,6 @@ std::size_t BlockedDistribution2D::descend(const Block& block, double& within, b
   return k;
 }
 
-void BlockedDistribution2D::finish(std::size_t column, double fraction, Sample& s) const {
-  const double cells = double(width_);
-  double x = (double(column) + fraction) / cells;
-  // Rounding in (column + fraction) / n can step into a neighbouring cell; keep x in the one reported.
-  while (x * cells >= double(column + 1)) x = std::nextafter(x, 0.0);
-  while (x * cells < double(column)) x = std::nextafter(x, 1.0);
-  s.point.x = x;
-  s.column = column;
-}
-
 BlockedDistribution2D::Sample BlockedDistribution2D::sample(Vec2 u) const {
   const bool want = true;
   Sample s;
@@ -149,8 +133,12 @@ void BlockedDistribution2D::sample(const bool* want, const Vec2* u, Sample* out,
       if (!bottom) __builtin_prefetch(&block(out[i].row, level + 1, index[i]));
     }
   }
-  for (int i = 0; i < n; ++i)
-    if (want[i]) finish(index[i], within[i], out[i]);
+  // At the bottom, index is the column and within the point's place in its cell.
+  for (int i = 0; i < n; ++i) {
+    if (!want[i]) continue;
+    out[i].column = index[i];
+    out[i].point.x = pointInBin(index[i], within[i], width_);
+  }
 }
 
 }  // namespace glossy

@@ -69,7 +69,6 @@ class BlockedDistribution2D {
   // One level down: the child of `block` that `within` (a position in the block's mass, in [0, kScale))
   // falls in, and within's position in that child's mass (or, at the bottom, in the cell, in [0, 1)).
   static std::size_t descend(const Block& block, double& within, bool bottom);
-  void finish(std::size_t column, double fraction, Sample& s) const;
 
   std::size_t width_ = 0, blocksPerRow_ = 0;
   std::vector<std::size_t> levelStart_;  // per level, top first: its first block in a row's blocks

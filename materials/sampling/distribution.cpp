@@ -1,6 +1,8 @@
 // Piecewise-constant 1D and 2D distributions: CDF construction and inversion.
 #include "materials/sampling/distribution.h"
 
+#include "materials/sampling/unit_interval.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -8,14 +10,6 @@
 namespace glossy {
 
 namespace {
-
-// The largest double below 1: the top of every sampled range, so callers can index with ⌊x·n⌋.
-constexpr double kOneMinusEpsilon = 1.0 - 0x1p-53;
-
-double clampUnit(double u) {
-  // NaN goes to 0 rather than propagating into an index.
-  return u >= 0.0 ? std::min(u, kOneMinusEpsilon) : 0.0;
-}
 
 // First CDF entry above u, minus one: cdf[i] ≤ u < cdf[i+1], which skips zero-width (zero-weight) bins.
 std::size_t searchBin(std::span<const double> cdf, double u) {
@@ -57,14 +51,7 @@ std::size_t findBin(const double* cdf, const uint32_t* guide, std::size_t n, dou
 double invertInBin(const double* cdf, std::size_t n, std::size_t bin, double u) {
   const double width = cdf[bin + 1] - cdf[bin];
   double du = width > 0.0 ? (u - cdf[bin]) / width : 0.0;
-  du = std::clamp(du, 0.0, kOneMinusEpsilon);
-  const double bins = double(n);
-  double x = (double(bin) + du) / bins;
-  // Rounding in (bin + du)/n can step into a neighbouring bin; pull x back so that pdf(x) and the bin
-  // reported here always agree.
-  while (x * bins >= double(bin + 1)) x = std::nextafter(x, 0.0);
-  while (x * bins < double(bin)) x = std::nextafter(x, 1.0);
-  return x;
+  return pointInBin(bin, std::clamp(du, 0.0, kOneMinusEpsilon), n);  // so that pdf(x) agrees with the bin
 }
 
 }  // namespace
