@@ -70,53 +70,107 @@ inline LatLongPosition latLongPosition(Vec2 uv, int width, int height) {
 }
 
 // A LatLongImage's texels for the environment light's random lookups, and their bilinear interpolation at
-// a lookup position. Each texel is stored as 16 bytes, its RGB beside a float the caller gives for the
-// cell (bilinear patch) of which the texel is the top-left corner: the light's sampling density, which a
-// lookup then reads from the line it loads anyway. A lookup's two texels of a row share one cache line
-// three times in four (the table is 64-byte aligned from 2 MiB on), so it touches 2.5 lines on average,
-// where separate 12-byte texels and a density table took 3.75. In huge pages (huge_pages.h).
+// a lookup position, with a float per cell (bilinear patch) that the caller gives: the light's sampling
+// density, which a lookup then reads from the lines it loads anyway. Two layouts, the same values:
+// - Cells: each patch's four corners (RGB) and its value in one 64-byte line, so a lookup reads exactly one
+//   line, at 4× the memory of the map (each texel is a corner of four patches). These lookups miss the
+//   cache (light samples land all over the map), and the misses are what they cost: on the speed
+//   benchmark this layout renders in 0.82–0.89× the time of the texel layout (docs/performance.md).
+// - Texels: 16 bytes a texel, its RGB beside the value of the patch of which it is the top-left corner. A
+//   lookup's two texels of a row share a line three times in four, so it reads 2.5 lines on average.
+// Maps whose cells would take more than kMaxCellBytes (512 MiB: up to 4096 × 2048) get cells, larger ones
+// texels. Both in huge pages (huge_pages.h).
 class LatLongMap {
  public:
+  enum class Layout { Cells, Texels };
+  static constexpr std::size_t kMaxCellBytes = std::size_t(512) << 20;
+
   LatLongMap() = default;
   // cellValues: W × (H − 1), row-major (cell (i, j) is the patch between texels (i, j) and (i + 1, j + 1)).
   LatLongMap(const LatLongImage& image, const std::vector<float>& cellValues)
-      : width_(image.width), height_(image.height),
-        texels_(std::size_t(image.width) * image.height * 4, 0.0f) {
-    for (std::size_t t = 0; t < std::size_t(width_) * height_; ++t) {
-      for (int c = 0; c < 3; ++c) texels_[4 * t + c] = image.rgb[3 * t + c];
-      if (t < cellValues.size()) texels_[4 * t + 3] = cellValues[t];
+      : LatLongMap(image, cellValues, cellBytes(image) <= kMaxCellBytes ? Layout::Cells : Layout::Texels) {}
+  LatLongMap(const LatLongImage& image, const std::vector<float>& cellValues, Layout layout)
+      : width_(image.width), height_(image.height) {
+    const std::size_t w = std::size_t(width_), cellCount = w * std::size_t(height_ - 1);
+    const auto value = [&](std::size_t cell) { return cell < cellValues.size() ? cellValues[cell] : 0.0f; };
+    if (layout == Layout::Cells) {
+      cells_.resize(cellCount);
+      for (std::size_t cell = 0; cell < cellCount; ++cell) {
+        const std::size_t row = cell / w, column = cell % w, next = column + 1 == w ? 0 : column + 1;
+        const std::size_t corners[4] = {row * w + column, row * w + next, (row + 1) * w + column, (row + 1) * w + next};
+        for (int k = 0; k < 4; ++k)
+          for (int c = 0; c < 3; ++c) cells_[cell].rgb[3 * k + c] = image.rgb[corners[k] * 3 + std::size_t(c)];
+        cells_[cell].value = value(cell);
+      }
+    } else {
+      texels_.assign(w * std::size_t(height_) * 4, 0.0f);
+      for (std::size_t t = 0; t < w * std::size_t(height_); ++t) {
+        for (int c = 0; c < 3; ++c) texels_[4 * t + std::size_t(c)] = image.rgb[3 * t + std::size_t(c)];
+        texels_[4 * t + 3] = value(t);
+      }
     }
   }
 
+  static std::size_t cellBytes(const LatLongImage& image) {
+    return std::size_t(image.width) * std::size_t(image.height - 1) * sizeof(Cell);
+  }
+  Layout layout() const { return cells_.empty() && !texels_.empty() ? Layout::Texels : Layout::Cells; }
   int width() const { return width_; }
   int height() const { return height_; }
 
   Rgb interpolate(const LatLongPosition& p) const {
-    const auto rgb = [&](int column, int row) {
-      const float* t = at(column, row);
-      return Rgb(t[0], t[1], t[2]);
-    };
-    const Rgb top = rgb(p.c0, p.r0) * (1.0 - p.fx) + rgb(p.c1, p.r0) * p.fx;
-    const Rgb bottom = rgb(p.c0, p.r0 + 1) * (1.0 - p.fx) + rgb(p.c1, p.r0 + 1) * p.fx;
+    const float* corner[4];
+    corners(p, corner);
+    const auto rgb = [&](int k) { return Rgb(corner[k][0], corner[k][1], corner[k][2]); };
+    const Rgb top = rgb(0) * (1.0 - p.fx) + rgb(1) * p.fx;
+    const Rgb bottom = rgb(2) * (1.0 - p.fx) + rgb(3) * p.fx;
     return top * (1.0 - p.fy) + bottom * p.fy;
   }
   // The value given for the cell the lookup falls in.
-  float cellValue(const LatLongPosition& p) const { return at(p.c0, p.r0)[3]; }
-  // The texels interpolate(p) and cellValue(p) will read: a row's two may straddle a cache line (and
-  // wrap), so both are fetched.
+  float cellValue(const LatLongPosition& p) const {
+    return cells_.empty() ? texel(p.c0, p.r0)[3] : cell(p).value;
+  }
+  // The lines interpolate(p) and cellValue(p) will read: one cell, or four texels (a row's two may
+  // straddle a line, and wrap).
   void prefetch(const LatLongPosition& p) const {
-    __builtin_prefetch(at(p.c0, p.r0));
-    __builtin_prefetch(at(p.c1, p.r0));
-    __builtin_prefetch(at(p.c0, p.r0 + 1));
-    __builtin_prefetch(at(p.c1, p.r0 + 1));
+    if (!cells_.empty()) {
+      __builtin_prefetch(&cell(p));
+      return;
+    }
+    const float* corner[4];
+    corners(p, corner);
+    for (const float* c : corner) __builtin_prefetch(c);
   }
 
  private:
-  const float* at(int column, int row) const {
+  struct alignas(64) Cell {
+    float rgb[12];  // corners (c0, r0), (c1, r0), (c0, r0 + 1), (c1, r0 + 1)
+    float value;
+  };
+  static_assert(sizeof(Cell) == 64, "a cell is one cache line");
+
+  const Cell& cell(const LatLongPosition& p) const {
+    return cells_[std::size_t(p.r0) * std::size_t(width_) + std::size_t(p.c0)];
+  }
+  const float* texel(int column, int row) const {
     return &texels_[(std::size_t(row) * std::size_t(width_) + std::size_t(column)) * 4];
   }
+  // The RGB of the lookup's corners, in the order of Cell::rgb.
+  void corners(const LatLongPosition& p, const float* (&out)[4]) const {
+    if (!cells_.empty()) {
+      const float* rgb = cell(p).rgb;
+      for (int k = 0; k < 4; ++k) out[k] = rgb + 3 * k;
+      return;
+    }
+    out[0] = texel(p.c0, p.r0);
+    out[1] = texel(p.c1, p.r0);
+    out[2] = texel(p.c0, p.r0 + 1);
+    out[3] = texel(p.c1, p.r0 + 1);
+  }
+
   int width_ = 0, height_ = 0;
-  HugePageVector<float> texels_;  // r, g, b, cell value; 16-byte aligned
+  HugePageVector<Cell> cells_;    // Layout::Cells
+  HugePageVector<float> texels_;  // Layout::Texels: r, g, b, cell value; 16-byte aligned
 };
 
 // Directions and lookup positions on a W × H lat-long map turned by uOffset (looked up at
