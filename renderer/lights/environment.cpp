@@ -242,9 +242,9 @@ void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) co
   for (int i = 0; i < n; ++i) {
     if (!want[i]) continue;
     at[count] = cellPosition(cells[i], env.map.width(), env.map.height());
-    env.map.prefetch(at[count]);
     lane[count++] = i;
   }
+  env.map.prefetch(at, count);
   Vec3 dirs[kMaxBatch];
   double sinTheta[kMaxBatch];
   env.grid.directions(at, dirs, sinTheta, count);
@@ -265,7 +265,7 @@ void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radian
     if (want[i]) lane[count++] = i;
   LatLongPosition at[kMaxBatch];
   env.grid.positions(dirs, lane, count, at);
-  for (int k = 0; k < count; ++k) env.map.prefetch(at[k]);
+  env.map.prefetch(at, count);
   for (int k = 0; k < count; ++k) {
     pdf[lane[k]] = env.pdfAt(dirs[lane[k]], at[k]);
     radiance[lane[k]] = env.map.interpolate(at[k]);
