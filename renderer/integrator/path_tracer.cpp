@@ -71,8 +71,13 @@ class PathTracer {
     ShadingPoint points[kWaveSize];
     Vec2 uLight[kWaveSize];
     Environment::Sample lightSamples[kWaveSize];
+    Vec3 escapedDirs[kWaveSize];
+    Environment::RadianceBatch skyLookups;
+    Environment::SampleBatch lightLookups;
+    double uTriangle[kWaveSize];
     Rgb skyRadiance[kWaveSize];
     double skyPdf[kWaveSize];
+    Rgb vertexThroughput[kWaveSize];  // the throughput at the vertex, for its light sample
     Ray shadows[kWaveSize];
     bool shadowed[kWaveSize], occluded[kWaveSize];
     Rgb unoccluded[kWaveSize];  // what each shadow ray brings if it reaches its light
@@ -96,13 +101,17 @@ class PathTracer {
       for (int p = 0; p < kWaveSize; p += kPacketSize)
         scene_.bvh->intersect(alive + p, rays + p, w.hits + p, w.found + p);
 
+      // Each environment lookup is begun (its cells found and prefetched) well before it is ended (read),
+      // with other lanes' work in between, so that its cache misses overlap that work. Each lane still
+      // draws its dimensions in the order a lone path would.
       // Rays that left the scene see the environment, MIS-weighted unless they are camera rays.
-      for (int i = 0; i < kWaveSize; ++i) w.escaped[i] = alive[i] && !w.found[i] && scene_.environment;
-      environmentRadiance(w.escaped, rays, w.skyRadiance, w.skyPdf);
+      const Environment* env = scene_.environment;
       for (int i = 0; i < kWaveSize; ++i) {
-        if (w.escaped[i])
-          radiance[i] += w.throughput[i] * w.skyRadiance[i] *
-                         (w.bsdfPdf[i] > 0.0 ? powerHeuristic(w.bsdfPdf[i], pEnvironment_ * w.skyPdf[i]) : 1.0);
+        w.escaped[i] = alive[i] && !w.found[i] && env;
+        if (w.escaped[i]) w.escapedDirs[i] = rays[i].dir;
+      }
+      if (env) env->beginRadianceAndPdf(w.escaped, w.escapedDirs, kWaveSize, w.skyLookups);
+      for (int i = 0; i < kWaveSize; ++i) {
         w.shading[i] = alive[i] && w.found[i] &&
                        surface(depth, rays[i], w.hits[i], w.throughput[i], w.bsdfPdf[i], radiance[i], w.points[i]);
         alive[i] = w.shading[i];
@@ -112,16 +121,30 @@ class PathTracer {
         const double uChoice = pEnvironment_ > 0.0 && pEnvironment_ < 1.0 ? samplers[i].get1D() : 0.5;
         w.uLight[i] = samplers[i].get2D();
         w.toEnvironment[i] = uChoice < pEnvironment_;
+        if (!w.toEnvironment[i]) w.uTriangle[i] = samplers[i].get1D();
       }
-      if (scene_.environment) scene_.environment->sample(w.toEnvironment, w.uLight, w.lightSamples, kWaveSize);
+      if (env) {
+        env->beginSample(w.toEnvironment, w.uLight, kWaveSize, w.lightLookups);
+        env->endRadianceAndPdf(w.skyLookups, w.skyRadiance, w.skyPdf);
+      }
+      for (int i = 0; i < kWaveSize; ++i)
+        if (w.escaped[i])
+          radiance[i] += w.throughput[i] * w.skyRadiance[i] *
+                         (w.bsdfPdf[i] > 0.0 ? powerHeuristic(w.bsdfPdf[i], pEnvironment_ * w.skyPdf[i]) : 1.0);
+      // The BSDF samples, while the light samples' texels arrive.
+      for (int i = 0; i < kWaveSize; ++i) {
+        if (!w.shading[i]) continue;
+        w.vertexThroughput[i] = w.throughput[i];
+        alive[i] = continuePath(depth, w.points[i], samplers[i], w.throughput[i], w.bsdfPdf[i], rays[i]);
+      }
+      if (env) env->endSample(w.lightLookups, w.lightSamples);
       for (int i = 0; i < kWaveSize; ++i) {
         if (!w.shading[i]) continue;
         const ShadingPoint& sp = w.points[i];
         w.shadowed[i] = w.toEnvironment[i]
                             ? lightFromEnvironment(sp, w.lightSamples[i], w.shadows[i], w.unoccluded[i])
-                            : lightFromArea(sp, samplers[i].get1D(), w.uLight[i], w.shadows[i], w.unoccluded[i]);
-        if (w.shadowed[i]) w.unoccluded[i] *= w.throughput[i];
-        alive[i] = continuePath(depth, sp, samplers[i], w.throughput[i], w.bsdfPdf[i], rays[i]);
+                            : lightFromArea(sp, w.uTriangle[i], w.uLight[i], w.shadows[i], w.unoccluded[i]);
+        if (w.shadowed[i]) w.unoccluded[i] *= w.vertexThroughput[i];
       }
       for (int p = 0; p < kWaveSize; p += kPacketSize)
         scene_.bvh->occluded(w.shadowed + p, w.shadows + p, w.occluded + p);
@@ -131,16 +154,6 @@ class PathTracer {
   }
 
  private:
-  // The radiance and the light-sampling pdf of the environment for the lanes that want them (a camera ray
-  // does not need the pdf; reading it with the rest costs next to nothing).
-  void environmentRadiance(const bool* want, const Ray* rays, Rgb* radiance, double* pdf) const {
-    if (!scene_.environment) return;  // then no lane wants it
-    Vec3 dirs[kWaveSize];
-    for (int i = 0; i < kWaveSize; ++i)
-      if (want[i]) dirs[i] = rays[i].dir;
-    scene_.environment->radianceAndPdf(want, dirs, radiance, pdf, kWaveSize);
-  }
-
   // The ray's hit: its emission if it is a light (ending the path), else the shading point. False ends
   // the path.
   bool surface(int depth, const Ray& ray, const Hit& hit, const Rgb& throughput, double bsdfPdf, Rgb& radiance,

@@ -228,47 +228,72 @@ Environment::Sample Environment::sample(Vec2 u) const {
 static_assert(Environment::kMaxBatch <= BlockedDistribution2D::kMaxBatch, "a batch of samples is one distribution batch");
 
 void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) const {
+  SampleBatch batch;
+  beginSample(want, u, n, batch);
+  endSample(batch, out);
+}
+
+void Environment::beginSample(const bool* want, const Vec2* u, int n, SampleBatch& batch) const {
   const Impl& env = *impl_;
-  if (env.isConstant) {
-    for (int i = 0; i < n; ++i)
-      if (want[i]) out[i] = sample(u[i]);
-    return;
-  }
+  batch.want = want;
+  batch.u = u;
+  batch.n = n;
+  batch.count = 0;
+  if (env.isConstant) return;
   BlockedDistribution2D::Sample cells[kMaxBatch];
   env.distribution.sample(want, u, cells, n);  // the map holds the densities
   // The wanted lanes, packed, for the grid's batch conversion.
-  int lane[kMaxBatch], count = 0;
-  LatLongPosition at[kMaxBatch];
   for (int i = 0; i < n; ++i) {
     if (!want[i]) continue;
-    at[count] = cellPosition(cells[i], env.map.width(), env.map.height());
-    lane[count++] = i;
+    batch.at[batch.count] = cellPosition(cells[i], env.map.width(), env.map.height());
+    batch.lane[batch.count++] = i;
   }
-  env.map.prefetch(at, count);
+  env.map.prefetch(batch.at, batch.count);
+}
+
+void Environment::endSample(const SampleBatch& batch, Sample* out) const {
+  const Impl& env = *impl_;
+  if (env.isConstant) {
+    for (int i = 0; i < batch.n; ++i)
+      if (batch.want[i]) out[i] = sample(batch.u[i]);
+    return;
+  }
   Vec3 dirs[kMaxBatch];
   double sinTheta[kMaxBatch];
-  env.grid.directions(at, dirs, sinTheta, count);
-  for (int k = 0; k < count; ++k) out[lane[k]] = env.sampleAt(at[k], dirs[k], sinTheta[k]);
+  env.grid.directions(batch.at, dirs, sinTheta, batch.count);
+  for (int k = 0; k < batch.count; ++k) out[batch.lane[k]] = env.sampleAt(batch.at[k], dirs[k], sinTheta[k]);
 }
 
 void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const {
+  RadianceBatch batch;
+  beginRadianceAndPdf(want, dirs, n, batch);
+  endRadianceAndPdf(batch, radiance, pdf);
+}
+
+void Environment::beginRadianceAndPdf(const bool* want, const Vec3* dirs, int n, RadianceBatch& batch) const {
+  const Impl& env = *impl_;
+  batch.want = want;
+  batch.dirs = dirs;
+  batch.n = n;
+  batch.count = 0;
+  if (env.isConstant) return;
+  for (int i = 0; i < n; ++i)
+    if (want[i]) batch.lane[batch.count++] = i;
+  env.grid.positions(dirs, batch.lane, batch.count, batch.at);
+  env.map.prefetch(batch.at, batch.count);
+}
+
+void Environment::endRadianceAndPdf(const RadianceBatch& batch, Rgb* radiance, double* pdf) const {
   const Impl& env = *impl_;
   if (env.isConstant) {
-    for (int i = 0; i < n; ++i)
-      if (want[i]) radiance[i] = radianceAndPdf(dirs[i], pdf[i]);
+    for (int i = 0; i < batch.n; ++i)
+      if (batch.want[i]) radiance[i] = radianceAndPdf(batch.dirs[i], pdf[i]);
     return;
   }
-  // The wanted lanes, for the grid's batch conversion (zeroed, 256 bytes, because GCC cannot see that
-  // it reads only the first `count`).
-  int lane[kMaxBatch] = {}, count = 0;
-  for (int i = 0; i < n; ++i)
-    if (want[i]) lane[count++] = i;
-  LatLongPosition at[kMaxBatch];
-  env.grid.positions(dirs, lane, count, at);
-  env.map.prefetch(at, count);
-  for (int k = 0; k < count; ++k) {
-    pdf[lane[k]] = env.pdfAt(dirs[lane[k]], at[k]);
-    radiance[lane[k]] = env.map.interpolate(at[k]);
+  for (int k = 0; k < batch.count; ++k) {
+    const int i = batch.lane[k];
+    pdf[i] = env.pdfAt(batch.dirs[i], batch.at[k]);
+    radiance[i] = env.map.interpolate(batch.at[k]);
   }
 }
 

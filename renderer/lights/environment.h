@@ -6,6 +6,7 @@
 #pragma once
 
 #include "materials/core/types.h"
+#include "renderer/lights/latlong.h"
 
 #include <filesystem>
 #include <memory>
@@ -40,6 +41,27 @@ class Environment {
   static constexpr int kMaxBatch = 64;
   void sample(const bool* want, const Vec2* u, Sample* out, int n) const;
   void radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const;
+  // The same in two halves, for a caller with other work to do while the map's lines arrive from memory
+  // (a lookup mostly misses the cache): begin finds the lanes' cells and prefetches them, end reads them
+  // and writes what the one-call form does. want, u and dirs must stay as they are until end.
+  struct SampleBatch {
+    const bool* want;
+    const Vec2* u;
+    int n, count;
+    int lane[kMaxBatch];
+    LatLongPosition at[kMaxBatch];
+  };
+  struct RadianceBatch {
+    const bool* want;
+    const Vec3* dirs;
+    int n, count;
+    int lane[kMaxBatch];
+    LatLongPosition at[kMaxBatch];
+  };
+  void beginSample(const bool* want, const Vec2* u, int n, SampleBatch& batch) const;
+  void endSample(const SampleBatch& batch, Sample* out) const;
+  void beginRadianceAndPdf(const bool* want, const Vec3* dirs, int n, RadianceBatch& batch) const;
+  void endRadianceAndPdf(const RadianceBatch& batch, Rgb* radiance, double* pdf) const;
   const std::string& description() const;  // for image metadata: file name, "constant r,g,b", "default sky"
 
   Environment(Environment&&) noexcept;
