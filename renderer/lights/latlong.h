@@ -74,8 +74,8 @@ inline LatLongPosition latLongPosition(Vec2 uv, int width, int height) {
 // density, which a lookup then reads from the lines it loads anyway. Two layouts, the same values:
 // - Cells: each patch's four corners (RGB) and its value in one 64-byte line, so a lookup reads exactly one
 //   line, at 4× the memory of the map (each texel is a corner of four patches). These lookups miss the
-//   cache (light samples land all over the map), and the misses are what they cost: on the speed
-//   benchmark this layout renders in 0.82–0.89× the time of the texel layout (docs/performance.md).
+//   cache (light samples land all over the map), and the misses are what they cost: the speed benchmark
+//   renders in about 0.91× the time it takes with the texel layout (docs/performance.md, seventh session).
 // - Texels: 16 bytes a texel, its RGB beside the value of the patch of which it is the top-left corner. A
 //   lookup's two texels of a row share a line three times in four, so it reads 2.5 lines on average.
 // Maps whose cells would take more than kMaxCellBytes (512 MiB: up to 4096 × 2048) get cells, larger ones
