@@ -235,10 +235,7 @@ void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) co
 
 void Environment::beginSample(const bool* want, const Vec2* u, int n, SampleBatch& batch) const {
   const Impl& env = *impl_;
-  batch.want = want;
-  batch.u = u;
-  batch.n = n;
-  batch.count = 0;
+  batch.start(want, u, n);
   if (env.isConstant) return;
   BlockedDistribution2D::Sample cells[kMaxBatch];
   env.distribution.sample(want, u, cells, n);  // the map holds the densities
@@ -255,7 +252,7 @@ void Environment::endSample(const SampleBatch& batch, Sample* out) const {
   const Impl& env = *impl_;
   if (env.isConstant) {
     for (int i = 0; i < batch.n; ++i)
-      if (batch.want[i]) out[i] = sample(batch.u[i]);
+      if (batch.want[i]) out[i] = sample(batch.input[i]);
     return;
   }
   Vec3 dirs[kMaxBatch];
@@ -272,10 +269,7 @@ void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radian
 
 void Environment::beginRadianceAndPdf(const bool* want, const Vec3* dirs, int n, RadianceBatch& batch) const {
   const Impl& env = *impl_;
-  batch.want = want;
-  batch.dirs = dirs;
-  batch.n = n;
-  batch.count = 0;
+  batch.start(want, dirs, n);
   if (env.isConstant) return;
   for (int i = 0; i < n; ++i)
     if (want[i]) batch.lane[batch.count++] = i;
@@ -287,12 +281,12 @@ void Environment::endRadianceAndPdf(const RadianceBatch& batch, Rgb* radiance, d
   const Impl& env = *impl_;
   if (env.isConstant) {
     for (int i = 0; i < batch.n; ++i)
-      if (batch.want[i]) radiance[i] = radianceAndPdf(batch.dirs[i], pdf[i]);
+      if (batch.want[i]) radiance[i] = radianceAndPdf(batch.input[i], pdf[i]);
     return;
   }
   for (int k = 0; k < batch.count; ++k) {
     const int i = batch.lane[k];
-    pdf[i] = env.pdfAt(batch.dirs[i], batch.at[k]);
+    pdf[i] = env.pdfAt(batch.input[i], batch.at[k]);
     radiance[i] = env.map.interpolate(batch.at[k]);
   }
 }

@@ -41,23 +41,27 @@ class Environment {
   static constexpr int kMaxBatch = 64;
   void sample(const bool* want, const Vec2* u, Sample* out, int n) const;
   void radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const;
-  // The same in two halves, for a caller with other work to do while the map's lines arrive from memory
-  // (a lookup mostly misses the cache): begin finds the lanes' cells and prefetches them, end reads them
-  // and writes what the one-call form does. want, u and dirs must stay as they are until end.
-  struct SampleBatch {
-    const bool* want;
-    const Vec2* u;
-    int n, count;
+  // A batch between its two halves: the lanes' inputs (u or directions) and, for a map, the cells of the
+  // wanted lanes, packed.
+  template <class Input>
+  struct LookupBatch {
+    const bool* want = nullptr;
+    const Input* input = nullptr;
+    int n = 0, count = 0;
     int lane[kMaxBatch];
     LatLongPosition at[kMaxBatch];
+    void start(const bool* w, const Input* in, int lanes) {
+      want = w;
+      input = in;
+      n = lanes;
+      count = 0;
+    }
   };
-  struct RadianceBatch {
-    const bool* want;
-    const Vec3* dirs;
-    int n, count;
-    int lane[kMaxBatch];
-    LatLongPosition at[kMaxBatch];
-  };
+  using SampleBatch = LookupBatch<Vec2>;
+  using RadianceBatch = LookupBatch<Vec3>;
+  // The batch forms in two halves, for a caller with other work to do while the map's lines arrive from
+  // memory (a lookup mostly misses the cache): begin finds the lanes' cells and prefetches them, end reads
+  // them and writes what the one-call form does. want, u and dirs must stay as they are until end.
   void beginSample(const bool* want, const Vec2* u, int n, SampleBatch& batch) const;
   void endSample(const SampleBatch& batch, Sample* out) const;
   void beginRadianceAndPdf(const bool* want, const Vec3* dirs, int n, RadianceBatch& batch) const;
