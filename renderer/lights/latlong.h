@@ -90,7 +90,7 @@ class LatLongMap {
   LatLongMap(const LatLongImage& image, const std::vector<float>& cellValues)
       : LatLongMap(image, cellValues, cellBytes(image) <= kMaxCellBytes ? Layout::Cells : Layout::Texels) {}
   LatLongMap(const LatLongImage& image, const std::vector<float>& cellValues, Layout layout)
-      : width_(image.width), height_(image.height) {
+      : width_(image.width), height_(image.height), layout_(layout) {
     const std::size_t w = std::size_t(width_), cellCount = w * std::size_t(height_ - 1);
     const auto value = [&](std::size_t cell) { return cell < cellValues.size() ? cellValues[cell] : 0.0f; };
     if (layout == Layout::Cells) {
@@ -114,7 +114,7 @@ class LatLongMap {
   static std::size_t cellBytes(const LatLongImage& image) {
     return std::size_t(image.width) * std::size_t(image.height - 1) * sizeof(Cell);
   }
-  Layout layout() const { return cells_.empty() && !texels_.empty() ? Layout::Texels : Layout::Cells; }
+  Layout layout() const { return layout_; }
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -128,21 +128,20 @@ class LatLongMap {
   }
   // The value given for the cell the lookup falls in.
   float cellValue(const LatLongPosition& p) const {
-    return cells_.empty() ? texel(p.c0, p.r0)[3] : cell(p).value;
+    return layout_ == Layout::Cells ? cell(p).value : texel(p.c0, p.r0)[3];
   }
   // The lines interpolate(at[k]) and cellValue(at[k]) will read, k < n: one cell, or four texels (a row's
   // two may straddle a line, and wrap). Always inlined: GCC 12 finds a function of nothing but prefetches
   // free of side effects and deletes calls to it before inlining, so a call would prefetch nothing.
   [[gnu::always_inline]] void prefetch(const LatLongPosition* at, int n) const {
-    if (!cells_.empty()) {
+    if (layout_ == Layout::Cells) {
       for (int k = 0; k < n; ++k) __builtin_prefetch(&cell(at[k]));
       return;
     }
     for (int k = 0; k < n; ++k) {
-      __builtin_prefetch(texel(at[k].c0, at[k].r0));
-      __builtin_prefetch(texel(at[k].c1, at[k].r0));
-      __builtin_prefetch(texel(at[k].c0, at[k].r0 + 1));
-      __builtin_prefetch(texel(at[k].c1, at[k].r0 + 1));
+      const float* corner[4];
+      texelCorners(at[k], corner);
+      for (const float* c : corner) __builtin_prefetch(c);
     }
   }
 
@@ -161,11 +160,14 @@ class LatLongMap {
   }
   // The RGB of the lookup's corners, in the order of Cell::rgb.
   void corners(const LatLongPosition& p, const float* (&out)[4]) const {
-    if (!cells_.empty()) {
+    if (layout_ == Layout::Cells) {
       const float* rgb = cell(p).rgb;
       for (int k = 0; k < 4; ++k) out[k] = rgb + 3 * k;
-      return;
+    } else {
+      texelCorners(p, out);
     }
+  }
+  void texelCorners(const LatLongPosition& p, const float* (&out)[4]) const {
     out[0] = texel(p.c0, p.r0);
     out[1] = texel(p.c1, p.r0);
     out[2] = texel(p.c0, p.r0 + 1);
@@ -173,6 +175,7 @@ class LatLongMap {
   }
 
   int width_ = 0, height_ = 0;
+  Layout layout_ = Layout::Cells;
   HugePageVector<Cell> cells_;    // Layout::Cells
   HugePageVector<float> texels_;  // Layout::Texels: r, g, b, cell value; 16-byte aligned
 };
