@@ -66,18 +66,51 @@ TEST_P(LaneMath, MatchesLibmForEveryBatchLength) {
   }
 }
 
+// exp over the arguments the Beckmann term passes (−tan²θ_h / m², down to underflow) and log1p over
+// −u for u in [0, 1) (the Beckmann sampler's), both within a few ulp of libm.
+TEST_P(LaneMath, ExpAndLog1pMatchLibmForEveryBatchLength) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int n = 1; n <= 70; ++n) {
+    std::vector<double> a(n), u(n), e(n), l(n);
+    for (int i = 0; i < n; ++i) {
+      a[i] = i == 0 ? 0.0 : i == 1 ? -800.0 : -std::pow(10.0, 6.0 * unit(rng) - 3.0);
+      u[i] = i == 0 ? -0.0 : i == 1 ? -(1.0 - 0x1p-53) : -unit(rng);
+    }
+    lanes::exp(a.data(), e.data(), n);
+    lanes::log1p(u.data(), l.data(), n);
+    for (int i = 0; i < n; ++i) {
+      const double exactE = std::exp(a[i]), exactL = std::log1p(u[i]);
+      ASSERT_NEAR(e[i], exactE, 4.0 * std::abs(exactE) * 0x1p-52) << "exp(" << a[i] << "), lane " << i << " of " << n;
+      ASSERT_NEAR(l[i], exactL, 4.0 * std::abs(exactL) * 0x1p-52) << "log1p(" << u[i] << "), lane " << i << " of " << n;
+    }
+    EXPECT_EQ(e[0], 1.0);
+    if (n >= 2) {
+      EXPECT_EQ(e[1], 0.0);
+    }
+  }
+}
+
 TEST_P(LaneMath, ALaneGetsTheSameValueInAnyBatch) {
   const Inputs in(37);
   std::vector<double> all(37), sAll(37), cAll(37);
   lanes::atan2(in.y.data(), in.x.data(), all.data(), 37);
   lanes::sinCos(in.angle.data(), sAll.data(), cAll.data(), 37);
+  std::vector<double> minusX(37), eAll(37), lAll(37);
+  for (int i = 0; i < 37; ++i) minusX[i] = -std::abs(in.x[i]);
+  lanes::exp(in.y.data(), eAll.data(), 37);
+  lanes::log1p(minusX.data(), lAll.data(), 37);
   for (int i = 0; i < 37; ++i) {
-    double one = 0.0, s = 0.0, c = 0.0;
+    double one = 0.0, s = 0.0, c = 0.0, e = 0.0, l = 0.0;
     lanes::atan2(&in.y[i], &in.x[i], &one, 1);
     lanes::sinCos(&in.angle[i], &s, &c, 1);
+    lanes::exp(&in.y[i], &e, 1);
+    lanes::log1p(&minusX[i], &l, 1);
     ASSERT_EQ(one, all[i]) << i;
     ASSERT_EQ(s, sAll[i]) << i;
     ASSERT_EQ(c, cAll[i]) << i;
+    ASSERT_EQ(e, eAll[i]) << i;
+    ASSERT_EQ(l, lAll[i]) << i;
   }
 }
 

@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <random>
+#include <variant>
+#include <vector>
 
 namespace glossy::test {
 
@@ -117,6 +119,52 @@ TEST(Sampling, PdfIsTheDensitySampleDrawsAndWeightIsRhoCosOverPdf) {
       }
     }
   }
+}
+
+// The batch forms the path tracer calls (sampleBatch, evalPdfBatch): lane by lane what sample and evalPdf
+// return, for every fit of the library, every batch length up to a wave, both lobes of the mixture, V and
+// L below the horizon, and the ends of the unit square; only the vector math's last bits may differ.
+TEST(Sampling, BatchFormsEqualTheOneLaneForms) {
+  const auto brdfs = libraryBrdfs();
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  const auto close = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); };
+  int batched = 0, validSamples = 0;
+  for (const auto& [name, brdf] : brdfs) {
+    batched += std::holds_alternative<CookTorrance>(brdf);
+    for (int n : {1, 3, 4, 17, kMaxBatchLanes}) {
+      std::vector<Vec3> V(n), L(n);
+      std::vector<double> uLobe(n);
+      std::vector<Vec2> u(n);
+      for (int k = 0; k < n; ++k) {
+        V[k] = k % 11 == 5 ? dir(1.7, 0.4) : dir(1.5 * uni(rng), 2 * kPi * uni(rng));
+        L[k] = k % 13 == 7 ? dir(1.6, 2.0) : dir(1.5 * uni(rng), 2 * kPi * uni(rng));
+        uLobe[k] = uni(rng);
+        u[k] = k % 9 == 2 ? Vec2(0.0, 0.0) : k % 9 == 4 ? Vec2(1.0 - 0x1p-53, 0.5) : Vec2(uni(rng), uni(rng));
+      }
+      std::vector<BrdfSample> s(n);
+      std::vector<BrdfValue> v(n);
+      sampleBatch(brdf, V.data(), uLobe.data(), u.data(), s.data(), n);
+      evalPdfBatch(brdf, L.data(), V.data(), v.data(), n);
+      for (int k = 0; k < n; ++k) {
+        const BrdfSample one = sample(brdf, V[k], uLobe[k], u[k]);
+        ASSERT_EQ(s[k].valid(), one.valid()) << name << " lane " << k << " of " << n;
+        validSamples += one.valid();
+        if (one.valid()) {
+          ASSERT_TRUE(close(s[k].pdf, one.pdf)) << name << ": pdf " << s[k].pdf << " vs " << one.pdf;
+          for (int c = 0; c < 3; ++c) {
+            ASSERT_TRUE(close(s[k].L[c], one.L[c])) << name << ": L " << s[k].L[c] << " vs " << one.L[c];
+            ASSERT_TRUE(close(s[k].weight[c], one.weight[c])) << name << ": weight";
+          }
+        }
+        const BrdfValue value = evalPdf(brdf, L[k], V[k]);
+        ASSERT_TRUE(close(v[k].pdf, value.pdf)) << name << ": evalPdf's pdf " << v[k].pdf << " vs " << value.pdf;
+        for (int c = 0; c < 3; ++c) ASSERT_TRUE(close(v[k].f[c], value.f[c])) << name << ": evalPdf's f";
+      }
+    }
+  }
+  EXPECT_GT(batched, 0) << "no Cook-Torrance fit in the library: the batch forms went untested";
+  EXPECT_GT(validSamples, 1000);
 }
 
 TEST(Sampling, PdfIntegratesToTheSamplersAcceptanceProbability) {

@@ -25,6 +25,14 @@ void sinCos(const double* a, double* s, double* c, int n) {
   }
 }
 
+void exp(const double* a, double* out, int n) {
+  for (int i = 0; i < n; ++i) out[i] = std::exp(a[i]);
+}
+
+void log1p(const double* a, double* out, int n) {
+  for (int i = 0; i < n; ++i) out[i] = std::log1p(a[i]);
+}
+
 }  // namespace glossy::lanes
 
 #else
@@ -38,6 +46,10 @@ __m128d _ZGVbN2v_cos(__m128d a);
 __m256d _ZGVdN4vv_atan2(__m256d y, __m256d x);
 __m256d _ZGVdN4v_sin(__m256d a);
 __m256d _ZGVdN4v_cos(__m256d a);
+__m128d _ZGVbN2v_exp(__m128d a);
+__m128d _ZGVbN2v_log1p(__m128d a);
+__m256d _ZGVdN4v_exp(__m256d a);
+__m256d _ZGVdN4v_log1p(__m256d a);
 }
 
 namespace glossy::lanes {
@@ -63,6 +75,16 @@ __attribute__((target("avx2,fma"))) void sinCosAvx2(const double* a, const doubl
   const __m256d v = _mm256_loadu_pd(a);
   _mm256_storeu_pd(s, _ZGVdN4v_sin(v));
   _mm256_storeu_pd(c, _ZGVdN4v_cos(v));
+}
+__attribute__((target("avx2,fma"))) void expAvx2(const double* a, const double*, double* out, double*) {
+  _mm256_storeu_pd(out, _ZGVdN4v_exp(_mm256_loadu_pd(a)));
+}
+__attribute__((target("avx2,fma"))) void log1pAvx2(const double* a, const double*, double* out, double*) {
+  _mm256_storeu_pd(out, _ZGVdN4v_log1p(_mm256_loadu_pd(a)));
+}
+void expSse2(const double* a, const double*, double* out, double*) { _mm_storeu_pd(out, _ZGVbN2v_exp(_mm_loadu_pd(a))); }
+void log1pSse2(const double* a, const double*, double* out, double*) {
+  _mm_storeu_pd(out, _ZGVbN2v_log1p(_mm_loadu_pd(a)));
 }
 void atan2Sse2(const double* y, const double* x, double* out, double*) {
   _mm_storeu_pd(out, _ZGVbN2vv_atan2(_mm_loadu_pd(y), _mm_loadu_pd(x)));
@@ -110,6 +132,20 @@ void sinCos(const double* a, double* s, double* c, int n) {
     forBlocks(sinCosAvx2, 4, a, nullptr, s, c, n);
   else
     forBlocks(sinCosSse2, 2, a, nullptr, s, c, n);
+}
+
+void exp(const double* a, double* out, int n) {
+  if (useAvx2)
+    forBlocks(expAvx2, 4, a, nullptr, out, nullptr, n);
+  else
+    forBlocks(expSse2, 2, a, nullptr, out, nullptr, n);
+}
+
+void log1p(const double* a, double* out, int n) {
+  if (useAvx2)
+    forBlocks(log1pAvx2, 4, a, nullptr, out, nullptr, n);
+  else
+    forBlocks(log1pSse2, 2, a, nullptr, out, nullptr, n);
 }
 
 }  // namespace glossy::lanes

@@ -13,6 +13,9 @@ namespace glossy::lanes {
 void atan2(const double* y, const double* x, double* out, int n);
 // sinOut[i] = sin(a[i]), cosOut[i] = cos(a[i]) for i < n.
 void sinCos(const double* a, double* sinOut, double* cosOut, int n);
+// out[i] = exp(a[i]), and log1p(a[i]), for i < n.
+void exp(const double* a, double* out, int n);
+void log1p(const double* a, double* out, int n);
 
 // Which of libmvec's variants the calls use: AVX2 where the CPU has it (chosen at start-up), else SSE2;
 // off x86-64, libm one lane at a time (reported as Sse2). Tests switch to SSE2 to check that path too;

@@ -6,6 +6,7 @@
 //   BrdfSample M::sample(V, uLobe, u)       a direction L drawn from M's sampling density given V
 //   double M::pdf(L, V)                     exactly that density, in solid angle
 //   BrdfValue M::evalPdf(L, V)              optional: both at once, where they share work
+//   lobeOneMinusCosBatch, evalPdfBatch      optional: batch forms for the path tracer (brdf_sample.h)
 #pragma once
 
 #include "materials/models/ashikhmin_shirley.h"
@@ -16,6 +17,7 @@
 #include "materials/models/smooth.h"
 
 #include <memory>
+#include <type_traits>
 #include <variant>
 
 namespace glossy {
@@ -34,6 +36,30 @@ inline double pdf(const Brdf& brdf, const Vec3& L, const Vec3& V) {
 // {eval, pdf} at once, for the models that share work between the two (the same values).
 inline BrdfValue evalPdf(const Brdf& brdf, const Vec3& L, const Vec3& V) {
   return std::visit([&](const auto& m) { return evalWithPdf(m, L, V); }, brdf);
+}
+
+// A wave's BSDF samples and BRDF values: out[k] = sample(brdf, V[k], uLobe[k], u[k]), and
+// evalPdf(brdf, L[k], V[k]), for k < n ≤ kMaxBatchLanes. Models with batch forms (brdf_sample.h) compute
+// their transcendental functions for all lanes at once; the others are called lane by lane.
+inline void sampleBatch(const Brdf& brdf, const Vec3* V, const double* uLobe, const Vec2* u, BrdfSample* out, int n) {
+  std::visit(
+      [&](const auto& m) {
+        if constexpr (HasBatchForms<std::decay_t<decltype(m)>>)
+          sampleMixtureBatch(m, V, uLobe, u, out, n);
+        else
+          for (int k = 0; k < n; ++k) out[k] = m.sample(V[k], uLobe[k], u[k]);
+      },
+      brdf);
+}
+inline void evalPdfBatch(const Brdf& brdf, const Vec3* L, const Vec3* V, BrdfValue* out, int n) {
+  std::visit(
+      [&](const auto& m) {
+        if constexpr (HasBatchForms<std::decay_t<decltype(m)>>)
+          m.evalPdfBatch(L, V, out, n);
+        else
+          for (int k = 0; k < n; ++k) out[k] = evalWithPdf(m, L[k], V[k]);
+      },
+      brdf);
 }
 
 // A measured BRDF that also proposes directions from an analytic lobe (its fit), with mixture weight q.

@@ -3,6 +3,7 @@
 // pSpecular, the cosine lobe otherwise.
 #pragma once
 
+#include "materials/core/lane_math.h"
 #include "materials/core/types.h"
 #include "materials/models/warp.h"
 
@@ -92,14 +93,74 @@ BrdfSample sampleMixture(const Model& model, const Vec3& V, double uLobe, Vec2 u
 
 // The half-vector warp every microfacet-style sampler shares: H from (1 − cos θ_h, φ), L = reflect(V, H).
 // False when L would face away from H's side of V.
-inline bool reflectAboutHalfVector(const Vec3& V, double oneMinusCos, double phi, Vec3& L) {
+inline bool reflectAboutHalfVector(const Vec3& V, double oneMinusCos, double cosPhi, double sinPhi, Vec3& L) {
   const double cosTheta = 1.0 - oneMinusCos;
   const double sinTheta = std::sqrt(std::max(0.0, oneMinusCos * (2.0 - oneMinusCos)));
-  const Vec3 H(sinTheta * std::cos(phi), sinTheta * std::sin(phi), cosTheta);
+  const Vec3 H(sinTheta * cosPhi, sinTheta * sinPhi, cosTheta);
   const double vh = V.x * H.x + V.y * H.y + V.z * H.z;
   if (vh <= 0.0) return false;
   L = 2.0 * vh * H - V;
   return true;
+}
+inline bool reflectAboutHalfVector(const Vec3& V, double oneMinusCos, double phi, Vec3& L) {
+  return reflectAboutHalfVector(V, oneMinusCos, std::cos(phi), std::sin(phi), L);
+}
+
+// Batch forms, for the path tracer's waves: a model that computes its lobe's transcendental functions for
+// many lanes at once (lanes::, libmvec) provides
+//   void lobeOneMinusCosBatch(const Vec2* u, const bool* lobe, double* out, int n)
+//       out[k] = 1 − cos θ_h of sampleLobe's half vector for u[k], where lobe[k] (others: anything finite)
+//   void evalPdfBatch(const Vec3* L, const Vec3* V, BrdfValue* out, int n)    out[k] = evalPdf(L[k], V[k])
+// and sampleMixtureBatch then draws what sampleMixture draws, lane by lane (up to the last bits of the
+// vector math). n ≤ kMaxBatchLanes. A lane's result never depends on the other lanes.
+inline constexpr int kMaxBatchLanes = 64;
+
+template <class Model>
+concept HasBatchForms = requires(const Model& m, const Vec2* u, const bool* b, double* d, const Vec3* v, BrdfValue* o) {
+  m.lobeOneMinusCosBatch(u, b, d, 0);
+  m.evalPdfBatch(v, v, o, 0);
+};
+
+// The mixture sampler of sampleMixture, for n lanes at once.
+template <class Model>
+void sampleMixtureBatch(const Model& model, const Vec3* V, const double* uLobe, const Vec2* u, BrdfSample* out,
+                        int n) {
+  const double p = model.specularProbability();
+  bool lobe[kMaxBatchLanes], ok[kMaxBatchLanes];
+  double oneMinusCos[kMaxBatchLanes], r[kMaxBatchLanes], phi[kMaxBatchLanes], s[kMaxBatchLanes], c[kMaxBatchLanes];
+  for (int k = 0; k < n; ++k) lobe[k] = uLobe[k] < p;
+  model.lobeOneMinusCosBatch(u, lobe, oneMinusCos, n);
+  // φ of the half vector, or the concentric disk's polar point for the cosine lobe: one sin/cos pass for both.
+  for (int k = 0; k < n; ++k) {
+    if (lobe[k])
+      phi[k] = 2.0 * kPi * u[k].y;
+    else
+      squareToConcentricDiskPolar(u[k], r[k], phi[k]);
+  }
+  lanes::sinCos(phi, s, c, n);
+  Vec3 L[kMaxBatchLanes];
+  for (int k = 0; k < n; ++k) {
+    if (lobe[k]) {
+      ok[k] = V[k].z > 0.0 && reflectAboutHalfVector(V[k], oneMinusCos[k], c[k], s[k], L[k]);
+    } else {
+      ok[k] = V[k].z > 0.0;
+      L[k] = diskToCosineHemisphere({r[k] * c[k], r[k] * s[k]});
+    }
+    ok[k] = ok[k] && L[k].z > 0.0;
+    if (!ok[k]) L[k] = Vec3(0.0);  // evalPdfBatch answers {} for it
+  }
+  BrdfValue value[kMaxBatchLanes];
+  model.evalPdfBatch(L, V, value, n);
+  for (int k = 0; k < n; ++k) {
+    const double pdf = value[k].pdf;
+    if (!ok[k] || !(pdf > 0.0) || !std::isfinite(pdf)) {
+      out[k] = {};
+      continue;
+    }
+    out[k].L = L[k];
+    out[k].pdf = pdf;
+    out[k].weight = value[k].f * (L[k].z / pdf);
+  }
 }
 
 }  // namespace glossy

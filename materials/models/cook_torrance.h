@@ -74,6 +74,32 @@ struct CookTorrance {
     return lobePdf(h, std::exp(-h.tan2Theta / (m * m)));
   }
   BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
+  // The batch forms (brdf_sample.h): sampleLobe's θ_h and evalPdf, with log1p and exp for all lanes at once.
+  void lobeOneMinusCosBatch(const Vec2* u, const bool* lobe, double* oneMinusCos, int n) const {
+    double x[kMaxBatchLanes];
+    for (int k = 0; k < n; ++k) x[k] = lobe[k] ? -u[k].x : 0.0;
+    lanes::log1p(x, x, n);
+    for (int k = 0; k < n; ++k) {
+      const double tan2 = -m * m * x[k], sec = std::sqrt(1.0 + tan2);
+      oneMinusCos[k] = tan2 / (sec * (sec + 1.0));
+    }
+  }
+  void evalPdfBatch(const Vec3* L, const Vec3* V, BrdfValue* out, int n) const {
+    const double m2 = m * m, p = specularProbability();
+    double beckmann[kMaxBatchLanes];
+    for (int k = 0; k < n; ++k)
+      beckmann[k] = L[k].z > 0.0 && V[k].z > 0.0 ? -HalfVector(L[k], V[k]).tan2Theta / m2 : 0.0;
+    lanes::exp(beckmann, beckmann, n);
+    for (int k = 0; k < n; ++k) {
+      if (!(L[k].z > 0.0 && V[k].z > 0.0)) {
+        out[k] = {};
+        continue;
+      }
+      const LobeGeometry g(L[k], V[k]);
+      out[k] = {kd * kInvPi + ks * lobe(g, m2, beckmann[k], eta),
+                mixtureDensity(p, p > 0.0 ? lobePdf(g.h, beckmann[k]) : 0.0, L[k])};
+    }
+  }
   double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
 
   // eval and pdf with one half vector and one exponential between them; the same values as each alone.

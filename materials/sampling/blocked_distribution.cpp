@@ -94,19 +94,6 @@ double BlockedDistribution2D::pdf(Vec2 point) const {
   return cellDensity(column, row);
 }
 
-std::size_t BlockedDistribution2D::descend(const Block& block, double& within, bool bottom) {
-  const uint16_t* start = block.start;
-  // The last k with start[k] ≤ within (start[0] = 0), by halving 32 without branches: its share then
-  // reaches past within, so a child without a share is never the answer.
-  std::size_t k = 0;
-  for (std::size_t step = kBlock / 2; step > 0; step /= 2) k += start[k + step] <= within ? step : 0;
-  const double lower = start[k], upper = k + 1 < kBlock ? start[k + 1] : kScale;
-  const double fraction = (within - lower) / (upper - lower);
-  within = bottom ? std::clamp(fraction, 0.0, kOneMinusEpsilon)
-                  : std::clamp(fraction * kScale, 0.0, std::nextafter(double(kScale), 0.0));
-  return k;
-}
-
 BlockedDistribution2D::Sample BlockedDistribution2D::sample(Vec2 u) const {
   const bool want = true;
   Sample s;
@@ -120,7 +107,7 @@ void BlockedDistribution2D::sample(const bool* want, const Vec2* u, Sample* out,
   for (int i = 0; i < n; ++i) {
     if (!want[i]) continue;
     out[i].point.y = marginal_.sampleContinuous(u[i].y, nullptr, &out[i].row);
-    within[i] = std::min(clampUnit(u[i].x) * kScale, std::nextafter(double(kScale), 0.0));
+    within[i] = std::min(clampUnit(u[i].x) * kScale, kBelowScale);
     index[i] = 0;
   }
   // Level by level for all lanes: the blocks of the next level are fetched while this one is read.

@@ -19,7 +19,9 @@
 #include "materials/core/types.h"
 #include "materials/sampling/distribution.h"
 #include "materials/sampling/huge_pages.h"
+#include "materials/sampling/unit_interval.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -68,7 +70,19 @@ class BlockedDistribution2D {
   }
   // One level down: the child of `block` that `within` (a position in the block's mass, in [0, kScale))
   // falls in, and within's position in that child's mass (or, at the bottom, in the cell, in [0, 1)).
-  static std::size_t descend(const Block& block, double& within, bool bottom);
+  // Inline (it runs per lane and level) and free of libm calls: kBelowScale is nextafter(kScale, 0).
+  static constexpr double kBelowScale = double(kScale) - 0x1p-37;
+  static std::size_t descend(const Block& block, double& within, bool bottom) {
+    const uint16_t* start = block.start;
+    // The last k with start[k] ≤ within (start[0] = 0), by halving 32 without branches: its share then
+    // reaches past within, so a child without a share is never the answer.
+    std::size_t k = 0;
+    for (std::size_t step = kBlock / 2; step > 0; step /= 2) k += start[k + step] <= within ? step : 0;
+    const double lower = start[k], upper = k + 1 < kBlock ? start[k + 1] : kScale;
+    const double fraction = (within - lower) / (upper - lower);
+    within = bottom ? std::clamp(fraction, 0.0, kOneMinusEpsilon) : std::clamp(fraction * kScale, 0.0, kBelowScale);
+    return k;
+  }
 
   std::size_t width_ = 0, blocksPerRow_ = 0;
   std::vector<std::size_t> levelStart_;  // per level, top first: its first block in a row's blocks

@@ -29,6 +29,7 @@ constexpr int kTile = 16;
 constexpr int kWaveSize = 64;
 static_assert(kWaveSize % kPacketSize == 0, "a wave is whole Embree packets");
 static_assert(kWaveSize <= Environment::kMaxBatch, "a wave's environment lookups are one batch");
+static_assert(kWaveSize <= kMaxBatchLanes, "a wave's BRDF samples are one batch");
 
 double powerHeuristic(double a, double b) {
   const double a2 = a * a, b2 = b * b;
@@ -61,6 +62,13 @@ class PathTracer {
     const Brdf* brdf = nullptr;
   };
 
+  // A light sample seen from a shading point.
+  struct LightSample {
+    Vec3 wiLocal{0.0};  // toward the light, in the shading frame
+    Rgb radiance{0.0};
+    double pdf = 0.0;   // solid angle, the light's choice included
+  };
+
   // What a wave's lanes carry between the stages of a vertex. Built once per task and reused: zeroing
   // it per wave would cost more than some of the stages.
   struct Workspace {
@@ -78,6 +86,12 @@ class PathTracer {
     Rgb skyRadiance[kWaveSize];
     double skyPdf[kWaveSize];
     Rgb vertexThroughput[kWaveSize];  // the throughput at the vertex, for its light sample
+    double uLobe[kWaveSize];
+    Vec2 uBsdf[kWaveSize];
+    BrdfSample bsdfSamples[kWaveSize];
+    LightSample lights[kWaveSize];  // the light sample at the vertex, before its BRDF value
+    bool lit[kWaveSize];            // lights[i] needs its BRDF value
+    BrdfValue lightValues[kWaveSize];
     Ray shadows[kWaveSize];
     bool shadowed[kWaveSize], occluded[kWaveSize];
     Rgb unoccluded[kWaveSize];  // what each shadow ray brings if it reaches its light
@@ -131,19 +145,31 @@ class PathTracer {
         if (w.escaped[i])
           radiance[i] += w.throughput[i] * w.skyRadiance[i] *
                          (w.bsdfPdf[i] > 0.0 ? powerHeuristic(w.bsdfPdf[i], pEnvironment_ * w.skyPdf[i]) : 1.0);
-      // The BSDF samples, while the light samples' texels arrive.
+      // The BSDF samples, while the light samples' texels arrive: each lane draws its dimensions, then the
+      // lanes of each BRDF are sampled as one batch.
       for (int i = 0; i < kWaveSize; ++i) {
         if (!w.shading[i]) continue;
         w.vertexThroughput[i] = w.throughput[i];
-        alive[i] = continuePath(depth, w.points[i], samplers[i], w.throughput[i], w.bsdfPdf[i], rays[i]);
+        w.uLobe[i] = samplers[i].get1D();
+        w.uBsdf[i] = samplers[i].get2D();
       }
-      if (env) env->endSample(w.lightLookups, w.lightSamples);
+      forEachBrdf(w.shading, w.points, [&](const Brdf& brdf, const int* lanes, int n) { sampleBrdfs(brdf, lanes, n, w); });
       for (int i = 0; i < kWaveSize; ++i) {
         if (!w.shading[i]) continue;
+        alive[i] = continuePath(depth, w.points[i], w.bsdfSamples[i], samplers[i], w.throughput[i], w.bsdfPdf[i], rays[i]);
+      }
+      if (env) env->endSample(w.lightLookups, w.lightSamples);
+      // The light samples: their geometry lane by lane, their BRDF values per BRDF as one batch, then MIS.
+      for (int i = 0; i < kWaveSize; ++i) {
+        w.lit[i] = false;
+        if (!w.shading[i]) continue;
         const ShadingPoint& sp = w.points[i];
-        w.shadowed[i] = w.toEnvironment[i]
-                            ? lightFromEnvironment(sp, w.lightSamples[i], w.shadows[i], w.unoccluded[i])
-                            : lightFromArea(sp, w.uTriangle[i], w.uLight[i], w.shadows[i], w.unoccluded[i]);
+        w.lit[i] = w.toEnvironment[i] ? lightFromEnvironment(sp, w.lightSamples[i], w.shadows[i], w.lights[i])
+                                      : lightFromArea(sp, w.uTriangle[i], w.uLight[i], w.shadows[i], w.lights[i]);
+      }
+      forEachBrdf(w.lit, w.points, [&](const Brdf& brdf, const int* lanes, int n) { evalBrdfs(brdf, lanes, n, w); });
+      for (int i = 0; i < kWaveSize; ++i) {
+        w.shadowed[i] = w.lit[i] && lightContribution(w.lights[i], w.lightValues[i], w.unoccluded[i]);
         if (w.shadowed[i]) w.unoccluded[i] *= w.vertexThroughput[i];
       }
       for (int p = 0; p < kWaveSize; p += kPacketSize)
@@ -192,12 +218,65 @@ class PathTracer {
     return true;
   }
 
-  // The BSDF sample that continues the path: the next ray, the throughput and pdf it carries. False ends
+  // The lanes of a wave with want[i], grouped by their shading point's BRDF: f(brdf, lanes, n) for each
+  // group, the lanes in increasing order. A wave almost always has one BRDF, so this is one pass.
+  template <class F>
+  static void forEachBrdf(const bool* want, const ShadingPoint* points, F&& f) {
+    bool pending[kWaveSize];
+    std::copy(want, want + kWaveSize, pending);
+    int lanes[kWaveSize];
+    for (int first = 0; first < kWaveSize; ++first) {
+      if (!pending[first]) continue;
+      const Brdf* brdf = points[first].brdf;
+      int n = 0;
+      for (int i = first; i < kWaveSize; ++i)
+        if (pending[i] && points[i].brdf == brdf) {
+          lanes[n++] = i;
+          pending[i] = false;
+        }
+      f(*brdf, lanes, n);
+    }
+  }
+
+  // w.bsdfSamples of the lanes, from their shading points and draws.
+  void sampleBrdfs(const Brdf& brdf, const int* lanes, int n, Workspace& w) const {
+    Vec3 wo[kWaveSize];
+    double uLobe[kWaveSize];
+    Vec2 u[kWaveSize];
+    BrdfSample samples[kWaveSize];
+    for (int k = 0; k < n; ++k) {
+      wo[k] = w.points[lanes[k]].woLocal;
+      uLobe[k] = w.uLobe[lanes[k]];
+      u[k] = w.uBsdf[lanes[k]];
+    }
+    if (settings_.cosineBrdfSampling) {
+      for (int k = 0; k < n; ++k) samples[k] = sampleCosine(brdf, wo[k], u[k]);
+    } else {
+      sampleBatch(brdf, wo, uLobe, u, samples, n);
+    }
+    for (int k = 0; k < n; ++k) w.bsdfSamples[lanes[k]] = samples[k];
+  }
+
+  // w.lightValues of the lanes: the BRDF and its sampling density toward each light sample.
+  void evalBrdfs(const Brdf& brdf, const int* lanes, int n, Workspace& w) const {
+    Vec3 wi[kWaveSize], wo[kWaveSize];
+    BrdfValue values[kWaveSize];
+    for (int k = 0; k < n; ++k) {
+      wi[k] = w.lights[lanes[k]].wiLocal;
+      wo[k] = w.points[lanes[k]].woLocal;
+    }
+    if (settings_.cosineBrdfSampling) {
+      for (int k = 0; k < n; ++k) values[k] = {eval(brdf, wi[k], wo[k]), cosineHemispherePdf(wi[k])};
+    } else {
+      evalPdfBatch(brdf, wi, wo, values, n);
+    }
+    for (int k = 0; k < n; ++k) w.lightValues[lanes[k]] = values[k];
+  }
+
+  // The BSDF sample s that continues the path: the next ray, the throughput and pdf it carries. False ends
   // the path.
-  bool continuePath(int depth, const ShadingPoint& sp, CmjSampler& sampler, Rgb& throughput, double& bsdfPdf,
-                    Ray& ray) const {
-    const double uLobe = sampler.get1D();
-    const BrdfSample s = sampleBrdf(*sp.brdf, sp.woLocal, uLobe, sampler.get2D());
+  bool continuePath(int depth, const ShadingPoint& sp, const BrdfSample& s, CmjSampler& sampler, Rgb& throughput,
+                    double& bsdfPdf, Ray& ray) const {
     if (!s.valid()) return false;
     const Vec3 wi = sp.frame.toWorld(s.L);
     if (glm::dot(wi, sp.ng) <= 0.0) return false;  // below the geometric surface: no leaking through it
@@ -213,8 +292,7 @@ class PathTracer {
     return true;
   }
 
-  BrdfSample sampleBrdf(const Brdf& brdf, const Vec3& wo, double uLobe, Vec2 u) const {
-    if (!settings_.cosineBrdfSampling) return sample(brdf, wo, uLobe, u);
+  static BrdfSample sampleCosine(const Brdf& brdf, const Vec3& wo, Vec2 u) {
     BrdfSample s;
     s.L = squareToCosineHemisphere(u);
     s.pdf = cosineHemispherePdf(s.L);
@@ -222,25 +300,21 @@ class PathTracer {
     s.weight = eval(brdf, s.L, wo) * kPi;
     return s;
   }
-  BrdfValue evalBrdf(const Brdf& brdf, const Vec3& wi, const Vec3& wo) const {
-    if (settings_.cosineBrdfSampling) return {eval(brdf, wi, wo), cosineHemispherePdf(wi)};
-    return evalPdf(brdf, wi, wo);
-  }
 
   const SceneMaterial* materialOf(uint32_t mesh) const {
     const int m = scene_.description->meshes[mesh].material;
     return m < 0 ? nullptr : &scene_.description->materials[size_t(m)];
   }
 
-  // A light sample, MIS-weighted against the BRDF's own sampling: the shadow ray to trace and what it
-  // brings (before the path's throughput) if nothing blocks it. False when there is nothing to trace.
-  bool lightFromEnvironment(const ShadingPoint& sp, const Environment::Sample& es, Ray& shadow, Rgb& contribution) const {
+  // A light sample: the shadow ray to trace and what the light brings along it, before the BRDF's value
+  // toward it (evalBrdfs) and the MIS weight (lightContribution). False when there is nothing to trace.
+  bool lightFromEnvironment(const ShadingPoint& sp, const Environment::Sample& es, Ray& shadow, LightSample& light) const {
     if (es.pdf <= 0.0) return false;
     shadow = Ray{offsetOrigin(sp.position, sp.ng, es.dir), es.dir, 0.0, 1e30};
-    return lightContribution(sp, es.dir, es.radiance, pEnvironment_ * es.pdf, shadow, contribution);
+    return prepareLight(sp, es.dir, es.radiance, pEnvironment_ * es.pdf, shadow, light);
   }
 
-  bool lightFromArea(const ShadingPoint& sp, double uTriangle, Vec2 u, Ray& shadow, Rgb& contribution) const {
+  bool lightFromArea(const ShadingPoint& sp, double uTriangle, Vec2 u, Ray& shadow, LightSample& light) const {
     const AreaLights::Sample as = scene_.areaLights->sample(uTriangle, u);
     if (as.pdfArea <= 0.0) return false;
     const Vec3 d = as.position - sp.position;
@@ -256,19 +330,26 @@ class PathTracer {
     const Vec3 toLight = as.position - origin;
     const double length = glm::length(toLight);
     shadow = Ray{origin, toLight / length, 0.0, length - glm::length(origin - sp.position)};
-    return lightContribution(sp, wi, as.radiance, pdfLight, shadow, contribution);
+    return prepareLight(sp, wi, as.radiance, pdfLight, shadow, light);
   }
 
-  bool lightContribution(const ShadingPoint& sp, const Vec3& wi, const Rgb& le, double pdfLight, const Ray& shadow,
-                         Rgb& contribution) const {
+  static bool prepareLight(const ShadingPoint& sp, const Vec3& wi, const Rgb& le, double pdfLight, const Ray& shadow,
+                           LightSample& light) {
     if (glm::dot(wi, sp.ng) <= 0.0) return false;
-    const Vec3 wiLocal = sp.frame.toLocal(wi);
-    if (wiLocal.z <= 0.0) return false;
+    light.wiLocal = sp.frame.toLocal(wi);
+    if (light.wiLocal.z <= 0.0) return false;
     if (shadow.tfar <= 0.0) return false;
-    const BrdfValue value = evalBrdf(*sp.brdf, wiLocal, sp.woLocal);
+    light.radiance = le;
+    light.pdf = pdfLight;
+    return true;
+  }
+
+  // What the light sample brings if nothing blocks it, MIS-weighted against the BRDF's own sampling
+  // (before the path's throughput). False when that is nothing.
+  static bool lightContribution(const LightSample& light, const BrdfValue& value, Rgb& contribution) {
     if (maxComponent(value.f) <= 0.0) return false;
-    const double w = powerHeuristic(pdfLight, value.pdf);
-    contribution = value.f * le * (wiLocal.z * w / pdfLight);
+    const double w = powerHeuristic(light.pdf, value.pdf);
+    contribution = value.f * light.radiance * (light.wiLocal.z * w / light.pdf);
     return true;
   }
 
