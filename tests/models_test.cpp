@@ -122,8 +122,8 @@ TEST(Sampling, PdfIsTheDensitySampleDrawsAndWeightIsRhoCosOverPdf) {
 }
 
 // The batch forms the path tracer calls (sampleBatch, evalPdfBatch): lane by lane what sample and evalPdf
-// return, for every fit of the library, every batch length up to a wave, both lobes of the mixture, V and
-// L below the horizon, and the ends of the unit square; only the vector math's last bits may differ.
+// return, for every fit of the library, 1 to 133 lanes (more than two batches), both lobes of the mixture,
+// V and L below the horizon, and the ends of the unit square; only the vector math's last bits may differ.
 TEST(Sampling, BatchFormsEqualTheOneLaneForms) {
   const auto brdfs = libraryBrdfs();
   std::mt19937_64 rng(17);
@@ -132,7 +132,7 @@ TEST(Sampling, BatchFormsEqualTheOneLaneForms) {
   int batched = 0, validSamples = 0;
   for (const auto& [name, brdf] : brdfs) {
     batched += std::holds_alternative<CookTorrance>(brdf);
-    for (int n : {1, 3, 4, 17, kMaxBatchLanes}) {
+    for (int n : {1, 3, 4, 17, kMaxBatchLanes, 2 * kMaxBatchLanes + 5}) {
       std::vector<Vec3> V(n), L(n);
       std::vector<double> uLobe(n);
       std::vector<Vec2> u(n);

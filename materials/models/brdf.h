@@ -16,6 +16,7 @@
 #include "materials/models/microfacet.h"
 #include "materials/models/smooth.h"
 
+#include <algorithm>
 #include <memory>
 #include <type_traits>
 #include <variant>
@@ -39,25 +40,29 @@ inline BrdfValue evalPdf(const Brdf& brdf, const Vec3& L, const Vec3& V) {
 }
 
 // A wave's BSDF samples and BRDF values: out[k] = sample(brdf, V[k], uLobe[k], u[k]), and
-// evalPdf(brdf, L[k], V[k]), for k < n ≤ kMaxBatchLanes. Models with batch forms (brdf_sample.h) compute
-// their transcendental functions for all lanes at once; the others are called lane by lane.
+// evalPdf(brdf, L[k], V[k]), for k < n. Models with batch forms (brdf_sample.h) compute their
+// transcendental functions for kMaxBatchLanes lanes at a time; the others are called lane by lane.
 inline void sampleBatch(const Brdf& brdf, const Vec3* V, const double* uLobe, const Vec2* u, BrdfSample* out, int n) {
   std::visit(
       [&](const auto& m) {
-        if constexpr (HasBatchForms<std::decay_t<decltype(m)>>)
-          sampleMixtureBatch(m, V, uLobe, u, out, n);
-        else
+        if constexpr (HasBatchForms<std::decay_t<decltype(m)>>) {
+          for (int first = 0; first < n; first += kMaxBatchLanes)
+            sampleMixtureBatch(m, V + first, uLobe + first, u + first, out + first, std::min(kMaxBatchLanes, n - first));
+        } else {
           for (int k = 0; k < n; ++k) out[k] = m.sample(V[k], uLobe[k], u[k]);
+        }
       },
       brdf);
 }
 inline void evalPdfBatch(const Brdf& brdf, const Vec3* L, const Vec3* V, BrdfValue* out, int n) {
   std::visit(
       [&](const auto& m) {
-        if constexpr (HasBatchForms<std::decay_t<decltype(m)>>)
-          m.evalPdfBatch(L, V, out, n);
-        else
+        if constexpr (HasBatchForms<std::decay_t<decltype(m)>>) {
+          for (int first = 0; first < n; first += kMaxBatchLanes)
+            m.evalPdfBatch(L + first, V + first, out + first, std::min(kMaxBatchLanes, n - first));
+        } else {
           for (int k = 0; k < n; ++k) out[k] = evalWithPdf(m, L[k], V[k]);
+        }
       },
       brdf);
 }

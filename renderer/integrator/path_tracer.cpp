@@ -29,7 +29,6 @@ constexpr int kTile = 16;
 constexpr int kWaveSize = 64;
 static_assert(kWaveSize % kPacketSize == 0, "a wave is whole Embree packets");
 static_assert(kWaveSize <= Environment::kMaxBatch, "a wave's environment lookups are one batch");
-static_assert(kWaveSize <= kMaxBatchLanes, "a wave's BRDF samples are one batch");
 
 double powerHeuristic(double a, double b) {
   const double a2 = a * a, b2 = b * b;
