@@ -6,6 +6,7 @@
 #include "tests/support/test_support.h"
 
 #include <cmath>
+#include <random>
 #include <set>
 #include <vector>
 
@@ -154,6 +155,46 @@ TEST(CmjSampler, DeterministicAndDecorrelatedAcrossPixelsPassesAndDimensions) {
   const double n = big.count();
   const double r = (sxy / n - sx / n * sy / n) / std::sqrt((sxx / n - sx * sx / n / n) * (syy / n - sy * sy / n / n));
   EXPECT_LT(std::abs(r), 4.0 / std::sqrt(n)) << "correlation " << r;
+}
+
+// The batch draws the path tracer makes (CmjSampler::get2D/get1D over lanes): for every count, each lane
+// gets exactly what it gets drawing alone, whatever the other lanes are (other pixels, passes, sample
+// indices, dimensions), for lanes in any order and more lanes than one pass holds, and each lane's
+// dimension advances as one draw would advance it.
+TEST(CmjSampler, BatchDrawsEqualOneLaneDraws) {
+  std::mt19937 rng(4);
+  for (uint32_t n : kCounts) {
+    const CmjPattern g(n);
+    const int lanes = 150;
+    std::vector<CmjPixel> pixels;
+    for (uint32_t p = 0; p < 5; ++p) pixels.emplace_back(7 + p % 2, p / 4, p, 2 * p);
+    std::vector<CmjSampler> batch, alone;
+    for (int l = 0; l < lanes; ++l) {
+      const uint32_t index = uint32_t(rng() % n), advance = rng() % 4;
+      batch.emplace_back(g, pixels[size_t(l) % pixels.size()], index);
+      alone.emplace_back(g, pixels[size_t(l) % pixels.size()], index);
+      for (uint32_t d = 0; d < advance; ++d) {
+        batch.back().get1D();
+        alone.back().get1D();
+      }
+    }
+    // Every other lane, backwards from the end, then all of them in order: a lane in two lists draws twice.
+    std::vector<int> some, all(lanes);
+    for (int l = lanes - 1; l >= 0; l -= 2) some.push_back(l);
+    for (int l = 0; l < lanes; ++l) all[size_t(l)] = l;
+    std::vector<Vec2> u2(lanes, Vec2(-1.0));
+    std::vector<double> u1(lanes, -1.0);
+    for (int round = 0; round < 3; ++round) {
+      const std::vector<int>& list = round == 1 ? some : all;
+      CmjSampler::get2D(batch.data(), list.data(), int(list.size()), u2.data());
+      CmjSampler::get1D(batch.data(), list.data(), int(list.size()), u1.data());
+      for (int l : list) {
+        ASSERT_EQ(u2[size_t(l)], alone[size_t(l)].get2D()) << "N " << n << " lane " << l << " round " << round;
+        ASSERT_EQ(u1[size_t(l)], alone[size_t(l)].get1D()) << "N " << n << " lane " << l << " round " << round;
+      }
+    }
+    for (int l = 0; l < lanes; ++l) ASSERT_EQ(batch[size_t(l)].get2D(), alone[size_t(l)].get2D()) << "dimension of lane " << l;
+  }
 }
 
 }  // namespace glossy::test

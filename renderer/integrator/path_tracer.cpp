@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -29,6 +30,12 @@ constexpr int kTile = 16;
 constexpr int kWaveSize = 64;
 static_assert(kWaveSize % kPacketSize == 0, "a wave is whole Embree packets");
 static_assert(kWaveSize <= Environment::kMaxBatch, "a wave's environment lookups are one batch");
+// 0, 1, …, kWaveSize − 1: every lane of a wave, for the batch draws.
+constexpr std::array<int, kWaveSize> kLanes = [] {
+  std::array<int, kWaveSize> lanes{};
+  for (int i = 0; i < kWaveSize; ++i) lanes[i] = i;
+  return lanes;
+}();
 
 double powerHeuristic(double a, double b) {
   const double a2 = a * a, b2 = b * b;
@@ -81,7 +88,8 @@ class PathTracer {
     Vec3 escapedDirs[kWaveSize];
     Environment::RadianceBatch skyLookups;
     Environment::SampleBatch lightLookups;
-    double uTriangle[kWaveSize];
+    int shadingLane[kWaveSize], areaLane[kWaveSize];  // the lanes that shade, and that sample an area light
+    double uChoice[kWaveSize], uTriangle[kWaveSize];
     Rgb skyRadiance[kWaveSize];
     double skyPdf[kWaveSize];
     Rgb vertexThroughput[kWaveSize];  // the throughput at the vertex, for its light sample
@@ -124,18 +132,27 @@ class PathTracer {
         if (w.escaped[i]) w.escapedDirs[i] = rays[i].dir;
       }
       if (env) env->beginRadianceAndPdf(w.escaped, w.escapedDirs, kWaveSize, w.skyLookups);
+      int shadingLanes = 0;
       for (int i = 0; i < kWaveSize; ++i) {
         w.shading[i] = alive[i] && w.found[i] &&
                        surface(depth, rays[i], w.hits[i], w.throughput[i], w.bsdfPdf[i], radiance[i], w.points[i]);
         alive[i] = w.shading[i];
         w.shadowed[i] = w.toEnvironment[i] = false;
-        if (!w.shading[i]) continue;
-        // The area-light choice and triangle are drawn only when there is a choice to make.
-        const double uChoice = pEnvironment_ > 0.0 && pEnvironment_ < 1.0 ? samplers[i].get1D() : 0.5;
-        w.uLight[i] = samplers[i].get2D();
-        w.toEnvironment[i] = uChoice < pEnvironment_;
-        if (!w.toEnvironment[i]) w.uTriangle[i] = samplers[i].get1D();
+        if (w.shading[i]) w.shadingLane[shadingLanes++] = i;
       }
+      // The light samples' draws, for the shading lanes at once (batch draws: the values a lane drawing
+      // alone gets, in the same order). The area-light choice and triangle are drawn only when there is a
+      // choice to make.
+      const bool choice = pEnvironment_ > 0.0 && pEnvironment_ < 1.0;
+      if (choice) CmjSampler::get1D(samplers, w.shadingLane, shadingLanes, w.uChoice);
+      CmjSampler::get2D(samplers, w.shadingLane, shadingLanes, w.uLight);
+      int areaLanes = 0;
+      for (int k = 0; k < shadingLanes; ++k) {
+        const int i = w.shadingLane[k];
+        w.toEnvironment[i] = (choice ? w.uChoice[i] : 0.5) < pEnvironment_;
+        if (!w.toEnvironment[i]) w.areaLane[areaLanes++] = i;
+      }
+      CmjSampler::get1D(samplers, w.areaLane, areaLanes, w.uTriangle);
       if (env) {
         env->beginSample(w.toEnvironment, w.uLight, kWaveSize, w.lightLookups);
         env->endRadianceAndPdf(w.skyLookups, w.skyRadiance, w.skyPdf);
@@ -146,12 +163,9 @@ class PathTracer {
                          (w.bsdfPdf[i] > 0.0 ? powerHeuristic(w.bsdfPdf[i], pEnvironment_ * w.skyPdf[i]) : 1.0);
       // The BSDF samples, while the light samples' texels arrive: each lane draws its dimensions, then the
       // lanes of each BRDF are sampled as one batch.
-      for (int i = 0; i < kWaveSize; ++i) {
-        if (!w.shading[i]) continue;
-        w.vertexThroughput[i] = w.throughput[i];
-        w.uLobe[i] = samplers[i].get1D();
-        w.uBsdf[i] = samplers[i].get2D();
-      }
+      for (int i = 0; i < kWaveSize; ++i) w.vertexThroughput[i] = w.throughput[i];
+      CmjSampler::get1D(samplers, w.shadingLane, shadingLanes, w.uLobe);
+      CmjSampler::get2D(samplers, w.shadingLane, shadingLanes, w.uBsdf);
       forEachBrdf(w.shading, w.points, [&](const Brdf& brdf, const int* lanes, int n) { sampleBrdfs(brdf, lanes, n, w); });
       for (int i = 0; i < kWaveSize; ++i) {
         if (!w.shading[i]) continue;
@@ -377,6 +391,7 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
     bool alive[kWaveSize];
     Rgb radiance[kWaveSize];
     int lanePixel[kWaveSize];  // which of the tile's pixels each lane samples
+    Vec2 film[kWaveSize];
     auto workspace = std::make_unique<PathTracer::Workspace>();
     std::vector<CmjPixel> pixels;
     std::vector<Rgb> sums;
@@ -401,11 +416,15 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
             lanePixel[lanes] = pixel;
             alive[lanes] = true;
             samplers[lanes] = CmjSampler(pattern, pixels[size_t(pixel)], uint32_t(sampleIndex));
-            rays[lanes] = cameraRays(Vec2(x0 + pixel % tileWidth, y0 + pixel / tileWidth) + samplers[lanes].get2D());
             if (++sampleIndex == settings.spp) {
               sampleIndex = 0;
               ++pixel;
             }
+          }
+          CmjSampler::get2D(samplers, kLanes.data(), lanes, film);
+          for (int i = 0; i < lanes; ++i) {
+            const int p = lanePixel[i];
+            rays[i] = cameraRays(Vec2(x0 + p % tileWidth, y0 + p / tileWidth) + film[i]);
           }
           std::fill(alive + lanes, alive + kWaveSize, false);
           tracer.traceWave(rays, samplers, alive, radiance, *workspace);

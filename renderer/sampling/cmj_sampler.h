@@ -193,6 +193,13 @@ class CmjSampler {
             belowOne((i * band.columns + thinRow + toUnit(uint32_t(jitter))) * band.perThinRow)};
   }
 
+  // The same draws for many samplers at once: out[lanes[k]] = samplers[lanes[k]].get2D() (get1D), for
+  // k < n, the same values. The lanes' hashes and permutations are computed stage by stage for all of them
+  // (cmj_sampler.cpp), so their long dependency chains overlap where one draw at a time waits on each
+  // step. The samplers must share one pattern.
+  static void get2D(CmjSampler* samplers, const int* lanes, int n, Vec2* out);
+  static void get1D(CmjSampler* samplers, const int* lanes, int n, double* out);
+
   // One point in each of the N intervals [k/N, (k+1)/N).
   double get1D() {
     using namespace cmj_detail;

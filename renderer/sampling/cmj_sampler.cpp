@@ -1,0 +1,136 @@
+// CmjSampler's batch draws: get2D and get1D for many lanes, stage by stage over arrays of lanes, with the
+// same arithmetic as the one-lane forms in cmj_sampler.h (so the same values, bit for bit).
+#include "renderer/sampling/cmj_sampler.h"
+
+#include <algorithm>
+
+namespace glossy {
+
+namespace {
+
+constexpr int kChunk = 64;  // lanes per pass, on the stack
+
+// permute() for n lanes, each with its own range (size, mask, half width) and key (its low half seeds the
+// bijection, its high half the rotation). The cycle walking becomes rounds over every lane until none is
+// out of range; a lane in range keeps its value, so each lane takes exactly the rounds permute() takes.
+// Plain loops over arrays of 32-bit lanes, which the compiler vectorises: an AVX2 clone (8 lanes an
+// instruction, with per-lane shifts) is chosen at run time where the CPU has it, the baseline elsewhere.
+// Integer arithmetic, so every clone gives the same values.
+#if defined(__x86_64__)
+__attribute__((target_clones("avx2", "default")))
+#endif
+void permuteLanes(const uint32_t* in, const uint32_t* size, const uint32_t* mask, const uint32_t* half,
+                  const uint32_t* seed, const uint32_t* rotation, uint32_t* out, int n) {
+  const auto round = [](uint32_t i, uint32_t mask, uint32_t half, uint32_t seed) {
+    i ^= seed;
+    i = (i * 0x9e3779b1u) & mask;
+    i ^= i >> half;
+    i += seed >> 10;
+    i = (i * (((seed >> 20) << 1) | 1u)) & mask;
+    i ^= i >> half;
+    i ^= seed >> 21;
+    i = (i * 0x85ebca6bu) & mask;
+    i ^= i >> half;
+    return i;
+  };
+  uint32_t outside = 0;
+  for (int k = 0; k < n; ++k) {
+    out[k] = round(in[k], mask[k], half[k], seed[k]);
+    outside |= out[k] >= size[k];
+  }
+  while (outside) {
+    outside = 0;
+    for (int k = 0; k < n; ++k) {
+      const uint32_t next = round(out[k], mask[k], half[k], seed[k]);
+      out[k] = out[k] >= size[k] ? next : out[k];
+      outside |= out[k] >= size[k];
+    }
+  }
+  for (int k = 0; k < n; ++k) {
+    // A range of one has mask 0, and every round gives 0: permute()'s early return.
+    const uint32_t i = out[k] + uint32_t(uint64_t(rotation[k]) * size[k] >> 32);
+    out[k] = i >= size[k] ? i - size[k] : i;
+  }
+}
+
+}  // namespace
+
+void CmjSampler::get2D(CmjSampler* samplers, const int* lanes, int n, Vec2* out) {
+  using namespace cmj_detail;
+  for (int first = 0; first < n; first += kChunk) {
+    const int count = std::min(kChunk, n - first);
+    const int* lane = lanes + first;
+    const CmjPattern& g = *samplers[lane[0]].pattern_;
+    uint32_t index[kChunk], cell[kChunk], size[kChunk], mask[kChunk], half[kChunk], i[kChunk], c[kChunk];
+    uint32_t thinColumn[kChunk], thinRow[kChunk];
+    int band[kChunk];
+    // The three keys' halves: key[0][k] low, key[1][k] high for the cell; then the column's, the row's.
+    uint32_t key[6][kChunk];
+    for (int k = 0; k < count; ++k) {
+      CmjSampler& s = samplers[lane[k]];
+      const CmjPixel::Seeds p = s.pixel_->seeds(s.dimension_++);
+      index[k] = s.index_;
+      key[0][k] = uint32_t(p.cell);
+      key[1][k] = uint32_t(p.cell >> 32);
+      key[2][k] = uint32_t(p.column);
+      key[3][k] = uint32_t(p.column >> 32);
+      key[4][k] = uint32_t(p.row);
+      key[5][k] = uint32_t(p.row >> 32);
+      size[k] = g.countRange_.size;
+      mask[k] = g.countRange_.mask;
+      half[k] = uint32_t(g.countRange_.halfWidth);
+    }
+    permuteLanes(index, size, mask, half, key[0], key[1], cell, count);
+    // The cell's column of its band, and its place in it; then the thin column (a permutation of i over
+    // the band's height) and the thin row (of c over its columns).
+    for (int k = 0; k < count; ++k) {
+      band[k] = cell[k] >= g.bands_[1].start;
+      const CmjPattern::Band& b = g.bands_[band[k]];
+      const uint32_t j = cell[k] - b.start;
+      i[k] = j / b.columns;
+      c[k] = j - i[k] * b.columns;
+      size[k] = b.heightRange.size;
+      mask[k] = b.heightRange.mask;
+      half[k] = uint32_t(b.heightRange.halfWidth);
+    }
+    permuteLanes(i, size, mask, half, key[2], key[3], thinColumn, count);
+    for (int k = 0; k < count; ++k) {
+      const CmjPattern::Band& b = g.bands_[band[k]];
+      size[k] = b.columnRange.size;
+      mask[k] = b.columnRange.mask;
+      half[k] = uint32_t(b.columnRange.halfWidth);
+    }
+    permuteLanes(c, size, mask, half, key[4], key[5], thinRow, count);
+    for (int k = 0; k < count; ++k) {
+      const CmjPattern::Band& b = g.bands_[band[k]];
+      const uint64_t jitter = mix(cell[k], key[1][k]);
+      out[lane[k]] = {belowOne((b.start + c[k] * b.height + thinColumn[k] + toUnit(uint32_t(jitter >> 32))) * g.perCount_),
+                      belowOne((i[k] * b.columns + thinRow[k] + toUnit(uint32_t(jitter))) * b.perThinRow)};
+    }
+  }
+}
+
+void CmjSampler::get1D(CmjSampler* samplers, const int* lanes, int n, double* out) {
+  using namespace cmj_detail;
+  for (int first = 0; first < n; first += kChunk) {
+    const int count = std::min(kChunk, n - first);
+    const int* lane = lanes + first;
+    const CmjPattern& g = *samplers[lane[0]].pattern_;
+    uint32_t index[kChunk], interval[kChunk], size[kChunk], mask[kChunk], half[kChunk], low[kChunk], high[kChunk];
+    for (int k = 0; k < count; ++k) {
+      CmjSampler& s = samplers[lane[k]];
+      const uint64_t key = s.pixel_->seeds(s.dimension_++).cell;
+      index[k] = s.index_;
+      low[k] = uint32_t(key);
+      high[k] = uint32_t(key >> 32);
+      size[k] = g.countRange_.size;
+      mask[k] = g.countRange_.mask;
+      half[k] = uint32_t(g.countRange_.halfWidth);
+    }
+    permuteLanes(index, size, mask, half, low, high, interval, count);
+    for (int k = 0; k < count; ++k)
+      out[lane[k]] = belowOne((interval[k] + toUnit(hash(interval[k], high[k]))) * g.perCount_);
+  }
+}
+
+}  // namespace glossy
