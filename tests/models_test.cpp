@@ -122,7 +122,7 @@ TEST(Sampling, PdfIsTheDensitySampleDrawsAndWeightIsRhoCosOverPdf) {
 }
 
 // The batch forms the path tracer calls (sampleBatch, evalPdfBatch): lane by lane what sample and evalPdf
-// return, for every fit of the library, 1 to 133 lanes (more than two batches), both lobes of the mixture,
+// return, for every fit of the library, 1 lane to more than two batches of them, both lobes of the mixture,
 // V and L below the horizon, and the ends of the unit square; only the vector math's last bits may differ.
 TEST(Sampling, BatchFormsEqualTheOneLaneForms) {
   const auto brdfs = libraryBrdfs();

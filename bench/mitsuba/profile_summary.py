@@ -17,7 +17,7 @@ import sys
 
 CATEGORIES = [  # (category, regex on the file the instructions come from, or on the object)
     ("Embree traversal (libembree3)", r"libembree3"),
-    ("sampler (cmj_sampler.h)", r"cmj_sampler\.h"),
+    ("sampler (cmj_sampler.*)", r"cmj_sampler\.(h|cpp)"),
     ("environment: lookup, pdf, sampling (latlong.*, environment.cpp, distribution.*, libmvec)",
      r"latlong\.(h|cpp)|environment\.cpp|distribution\.(cpp|h)|lane_math\.cpp|libmvec"),
     ("BRDF eval / sample / pdf (materials/models)",

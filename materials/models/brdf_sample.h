@@ -113,7 +113,7 @@ inline bool reflectAboutHalfVector(const Vec3& V, double oneMinusCos, double phi
 //   void evalPdfBatch(const Vec3* L, const Vec3* V, BrdfValue* out, int n)    out[k] = evalPdf(L[k], V[k])
 // and sampleMixtureBatch then draws what sampleMixture draws, lane by lane (up to the last bits of the
 // vector math). n ≤ kMaxBatchLanes. A lane's result never depends on the other lanes.
-inline constexpr int kMaxBatchLanes = 64;
+inline constexpr int kMaxBatchLanes = 128;
 
 template <class Model>
 concept HasBatchForms = requires(const Model& m, const Vec2* u, const bool* b, double* d, const Vec3* v, BrdfValue* o) {

@@ -51,7 +51,7 @@ class BlockedDistribution2D {
   Sample sample(Vec2 u) const;
   // out[i] = sample(u[i]) for the lanes with want[i], i < n ≤ kMaxBatch: each level's blocks are
   // fetched for all lanes before the next level is read, so that the lanes' cache misses overlap.
-  static constexpr int kMaxBatch = 64;
+  static constexpr int kMaxBatch = 128;
   void sample(const bool* want, const Vec2* u, Sample* out, int n) const;
 
   // The density the sampler draws from, on cell (column, row), with respect to area on the unit square.

@@ -27,7 +27,7 @@ namespace {
 constexpr int kTile = 16;
 // Paths traced together (kWaveSize / kPacketSize Embree packets): long enough for the environment's cache
 // misses to overlap, short enough for a wave's state to stay in L1/L2.
-constexpr int kWaveSize = 64;
+constexpr int kWaveSize = 128;
 static_assert(kWaveSize % kPacketSize == 0, "a wave is whole Embree packets");
 static_assert(kWaveSize <= Environment::kMaxBatch, "a wave's environment lookups are one batch");
 // 0, 1, …, kWaveSize − 1: every lane of a wave, for the batch draws.

@@ -38,7 +38,7 @@ class Environment {
   // Batch forms for the path tracer's waves: for the lanes with want[i] (i < n ≤ kMaxBatch), exactly
   // what sample(u[i]) and radianceAndPdf(dirs[i], pdf[i]) return. The lanes' map and table reads are
   // issued step by step for all of them, so that their cache misses overlap instead of queueing.
-  static constexpr int kMaxBatch = 64;
+  static constexpr int kMaxBatch = 128;
   void sample(const bool* want, const Vec2* u, Sample* out, int n) const;
   void radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const;
   // A batch between its two halves: the lanes' inputs (u or directions) and, for a map, the cells of the

@@ -6,7 +6,7 @@
 namespace glossy {
 
 namespace {
-constexpr int kChunk = 64;  // lanes converted per pass, on the stack
+constexpr int kChunk = 128;  // lanes converted per pass, on the stack
 }
 
 void LatLongGrid::positions(const Vec3* d, const int* lanes, int n, LatLongPosition* out) const {

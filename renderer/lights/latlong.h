@@ -62,8 +62,8 @@ struct LatLongPosition {
 inline LatLongPosition latLongPosition(Vec2 uv, int width, int height) {
   const double x = uv.x * width - 0.5;
   const double x0 = std::floor(x);
-  int c0 = int(x0) % width;
-  if (c0 < 0) c0 += width;
+  // x0 is −1 … W − 1 for u in [0, 1) (wrapUnit's range): −1 wraps to the last column, with no division.
+  const int c0 = x0 < 0.0 ? width - 1 : std::min(int(x0), width - 1);
   const double y = std::clamp(uv.y, 0.0, 1.0) * (height - 1);
   const int r0 = std::min(int(y), height - 2);
   return {c0, c0 + 1 == width ? 0 : c0 + 1, r0, x - x0, y - r0};

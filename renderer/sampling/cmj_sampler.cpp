@@ -8,7 +8,7 @@ namespace glossy {
 
 namespace {
 
-constexpr int kChunk = 64;  // lanes per pass, on the stack
+constexpr int kChunk = 128;  // lanes per pass, on the stack
 
 // permute() for n lanes, each with its own range (size, mask, half width) and key (its low half seeds the
 // bijection, its high half the rotation). The cycle walking becomes rounds over every lane until none is
