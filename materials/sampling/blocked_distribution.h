@@ -75,9 +75,11 @@ class BlockedDistribution2D {
   static std::size_t descend(const Block& block, double& within, bool bottom) {
     const uint16_t* start = block.start;
     // The last k with start[k] ≤ within (start[0] = 0), by halving 32 without branches: its share then
-    // reaches past within, so a child without a share is never the answer.
+    // reaches past within, so a child without a share is never the answer. The thresholds are integers, so
+    // comparing them with ⌊within⌋ is the same test, without a conversion to double in each step's chain.
+    const uint32_t floorWithin = uint32_t(within);
     std::size_t k = 0;
-    for (std::size_t step = kBlock / 2; step > 0; step /= 2) k += start[k + step] <= within ? step : 0;
+    for (std::size_t step = kBlock / 2; step > 0; step /= 2) k += start[k + step] <= floorWithin ? step : 0;
     const double lower = start[k], upper = k + 1 < kBlock ? start[k + 1] : kScale;
     const double fraction = (within - lower) / (upper - lower);
     within = bottom ? std::clamp(fraction, 0.0, kOneMinusEpsilon) : std::clamp(fraction * kScale, 0.0, kBelowScale);
