@@ -21,36 +21,22 @@ __attribute__((target_clones("avx2", "default")))
 #endif
 void permuteLanes(const uint32_t* in, const uint32_t* size, const uint32_t* mask, const uint32_t* half,
                   const uint32_t* seed, const uint32_t* rotation, uint32_t* out, int n) {
-  const auto round = [](uint32_t i, uint32_t mask, uint32_t half, uint32_t seed) {
-    i ^= seed;
-    i = (i * 0x9e3779b1u) & mask;
-    i ^= i >> half;
-    i += seed >> 10;
-    i = (i * (((seed >> 20) << 1) | 1u)) & mask;
-    i ^= i >> half;
-    i ^= seed >> 21;
-    i = (i * 0x85ebca6bu) & mask;
-    i ^= i >> half;
-    return i;
-  };
+  using namespace cmj_detail;
   uint32_t outside = 0;
   for (int k = 0; k < n; ++k) {
-    out[k] = round(in[k], mask[k], half[k], seed[k]);
+    out[k] = permuteRound(in[k], mask[k], half[k], seed[k]);
     outside |= out[k] >= size[k];
   }
   while (outside) {
     outside = 0;
     for (int k = 0; k < n; ++k) {
-      const uint32_t next = round(out[k], mask[k], half[k], seed[k]);
+      const uint32_t next = permuteRound(out[k], mask[k], half[k], seed[k]);
       out[k] = out[k] >= size[k] ? next : out[k];
       outside |= out[k] >= size[k];
     }
   }
-  for (int k = 0; k < n; ++k) {
-    // A range of one has mask 0, and every round gives 0: permute()'s early return.
-    const uint32_t i = out[k] + uint32_t(uint64_t(rotation[k]) * size[k] >> 32);
-    out[k] = i >= size[k] ? i - size[k] : i;
-  }
+  // A range of one has mask 0, and every round gives 0: permute()'s early return.
+  for (int k = 0; k < n; ++k) out[k] = permuteRotate(out[k], size[k], rotation[k]);
 }
 
 }  // namespace

@@ -49,24 +49,29 @@ struct PermutationRange {
 // samples placed by it would be biased. So the result is then rotated by an offset drawn uniformly from
 // [0, size) with the key's other half: whatever the bijection, every i then goes to every value with the
 // same probability, which is all an unbiased sampler needs.
-inline uint32_t permute(uint32_t i, const PermutationRange& range, uint64_t key) {
-  const uint32_t size = range.size, mask = range.mask;
-  if (mask == 0) return 0;
-  const uint32_t seed = uint32_t(key);
-  const int half = range.halfWidth;
-  do {
-    i ^= seed;
-    i = (i * 0x9e3779b1u) & mask;
-    i ^= i >> half;
-    i += seed >> 10;
-    i = (i * (((seed >> 20) << 1) | 1u)) & mask;
-    i ^= i >> half;
-    i ^= seed >> 21;
-    i = (i * 0x85ebca6bu) & mask;
-    i ^= i >> half;
-  } while (i >= size);
-  i += uint32_t((key >> 32) * size >> 32);
+// One round of the bijection, and the rotation after the walk (key's high half, `rotation`).
+inline uint32_t permuteRound(uint32_t i, uint32_t mask, uint32_t half, uint32_t seed) {
+  i ^= seed;
+  i = (i * 0x9e3779b1u) & mask;
+  i ^= i >> half;
+  i += seed >> 10;
+  i = (i * (((seed >> 20) << 1) | 1u)) & mask;
+  i ^= i >> half;
+  i ^= seed >> 21;
+  i = (i * 0x85ebca6bu) & mask;
+  i ^= i >> half;
+  return i;
+}
+inline uint32_t permuteRotate(uint32_t i, uint32_t size, uint32_t rotation) {
+  i += uint32_t(uint64_t(rotation) * size >> 32);
   return i >= size ? i - size : i;
+}
+inline uint32_t permute(uint32_t i, const PermutationRange& range, uint64_t key) {
+  if (range.mask == 0) return 0;
+  do {
+    i = permuteRound(i, range.mask, uint32_t(range.halfWidth), uint32_t(key));
+  } while (i >= range.size);
+  return permuteRotate(i, range.size, uint32_t(key >> 32));
 }
 
 inline double toUnit(uint32_t x) { return x * 0x1p-32; }  // in [0, 1): never 1
