@@ -66,40 +66,18 @@ struct CookTorrance {
   }
   // pdf_L = pdf_h / (4⟨V,H⟩), given beckmann = exp(−tan²θ_h / m²).
   double lobePdf(const HalfVector& h, double beckmann) const {
-    if (h.cosVH <= 0.0) return 0.0;
-    return beckmann / (kPi * (m * m) * h.cosTheta * h.cosTheta * h.cosTheta * 4.0 * h.cosVH);
+    const double pdf = beckmann / (kPi * (m * m) * h.cosTheta * h.cosTheta * h.cosTheta * 4.0 * h.cosVH);
+    return h.cosVH <= 0.0 ? 0.0 : pdf;  // a select, not a branch: evalPdfBatch's loop vectorises
   }
   double lobePdf(const Vec3& L, const Vec3& V) const {
     const HalfVector h(L, V);
     return lobePdf(h, std::exp(-h.tan2Theta / (m * m)));
   }
   BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
-  // The batch forms (brdf_sample.h): sampleLobe's θ_h and evalPdf, with log1p and exp for all lanes at once.
-  void lobeOneMinusCosBatch(const Vec2* u, const bool* lobe, double* oneMinusCos, int n) const {
-    double x[kMaxBatchLanes];
-    for (int k = 0; k < n; ++k) x[k] = lobe[k] ? -u[k].x : 0.0;
-    lanes::log1p(x, x, n);
-    for (int k = 0; k < n; ++k) {
-      const double tan2 = -m * m * x[k], sec = std::sqrt(1.0 + tan2);
-      oneMinusCos[k] = tan2 / (sec * (sec + 1.0));
-    }
-  }
-  void evalPdfBatch(const Vec3* L, const Vec3* V, BrdfValue* out, int n) const {
-    const double m2 = m * m, p = specularProbability();
-    double beckmann[kMaxBatchLanes];
-    for (int k = 0; k < n; ++k)
-      beckmann[k] = L[k].z > 0.0 && V[k].z > 0.0 ? -HalfVector(L[k], V[k]).tan2Theta / m2 : 0.0;
-    lanes::exp(beckmann, beckmann, n);
-    for (int k = 0; k < n; ++k) {
-      if (!(L[k].z > 0.0 && V[k].z > 0.0)) {
-        out[k] = {};
-        continue;
-      }
-      const LobeGeometry g(L[k], V[k]);
-      out[k] = {kd * kInvPi + ks * lobe(g, m2, beckmann[k], eta),
-                mixtureDensity(p, p > 0.0 ? lobePdf(g.h, beckmann[k]) : 0.0, L[k])};
-    }
-  }
+  // The batch forms (brdf_sample.h): sampleLobe's θ_h, and evalPdf for many lanes, with their log1p and
+  // exp computed for all lanes at once; cook_torrance.cpp, whose loops the compiler vectorises.
+  void lobeOneMinusCosBatch(const Vec2* u, const bool* lobe, double* oneMinusCos, int n) const;
+  void evalPdfBatch(const Vec3* L, const Vec3* V, BrdfValue* out, int n) const;
   double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
 
   // eval and pdf with one half vector and one exponential between them; the same values as each alone.

@@ -14,10 +14,10 @@ namespace glossy {
 template <class T>
 T fresnelCookTorrance(double c, const T& eta) {
   using std::sqrt;
-  c = std::clamp(c, 0.0, 1.0);
-  T radicand = eta * eta + (c * c - 1.0);
-  if (radicand < 0.0) radicand = T(0.0);
-  const T g = sqrt(radicand);
+  // Selects rather than branches, so that loops over many lanes vectorise.
+  c = c < 0.0 ? 0.0 : c > 1.0 ? 1.0 : c;
+  const T radicand = eta * eta + (c * c - 1.0);
+  const T g = sqrt(radicand < 0.0 ? T(0.0) : radicand);
   const T a = (g - c) / (g + c);
   const T b = (c * (g + c) - 1.0) / (c * (g - c) + 1.0);
   return 0.5 * a * a * (1.0 + b * b);
