@@ -107,9 +107,11 @@ class PathTracer {
   // The paths of up to kWaveSize samples, traced together in stages. Each segment's rays go to Embree as
   // packet queries of kPacketSize lanes, each vertex's shadow rays likewise, and the environment is looked
   // up and sampled for all lanes at once: a lookup is a chain of dependent loads that mostly miss the
-  // cache, and across a whole wave each step's misses overlap instead of queueing. Every lane has its own
-  // sampler and draws exactly what a lone path would (the same dimensions in the same order), so the image
-  // does not depend on how samples are grouped.
+  // cache, and across a whole wave each step's misses overlap instead of queueing. The sampler's draws and
+  // the BRDFs' samples and values are batches too, whose long chains of arithmetic overlap across lanes
+  // (and vectorise, where a model has batch forms). Every lane has its own sampler and draws exactly what a
+  // lone path would (the same dimensions in the same order), so the image does not depend on how samples
+  // are grouped.
   void traceWave(Ray* rays, CmjSampler* samplers, bool* alive, Rgb* radiance, Workspace& w) const {
     for (int i = 0; i < kWaveSize; ++i) {
       radiance[i] = Rgb(0.0);
