@@ -71,6 +71,13 @@ BrdfValue evalWithPdf(const Model& model, const Vec3& L, const Vec3& V) {
     return {model.eval(L, V), model.pdf(L, V)};
 }
 
+// The sample at direction L (L_z > 0) with the BRDF's value and density there: invalid where the density
+// is not a positive finite number.
+inline BrdfSample mixtureSample(const Vec3& L, const BrdfValue& value) {
+  if (!(value.pdf > 0.0) || !std::isfinite(value.pdf)) return {};
+  return {L, value.pdf, value.f * (L.z / value.pdf)};
+}
+
 // The mixture sampler. Model provides eval(L, V), specularProbability(), sampleLobe(V, u, L) (false when
 // the lobe gives no direction) and lobePdf(L, V) (solid angle, exactly what sampleLobe draws from).
 // A direction below the horizon is an invalid sample; the pdf is not renormalised for it.
@@ -84,11 +91,7 @@ BrdfSample sampleMixture(const Model& model, const Vec3& V, double uLobe, Vec2 u
     s.L = squareToCosineHemisphere(u);
   }
   if (s.L.z <= 0.0) return {};
-  const BrdfValue value = evalWithPdf(model, s.L, V);
-  s.pdf = value.pdf;
-  if (!(s.pdf > 0.0) || !std::isfinite(s.pdf)) return {};
-  s.weight = value.f * (s.L.z / s.pdf);
-  return s;
+  return mixtureSample(s.L, evalWithPdf(model, s.L, V));
 }
 
 // The half-vector warp every microfacet-style sampler shares: H from (1 − cos θ_h, φ), L = reflect(V, H).
@@ -151,16 +154,7 @@ void sampleMixtureBatch(const Model& model, const Vec3* V, const double* uLobe, 
   }
   BrdfValue value[kMaxBatchLanes];
   model.evalPdfBatch(L, V, value, n);
-  for (int k = 0; k < n; ++k) {
-    const double pdf = value[k].pdf;
-    if (!ok[k] || !(pdf > 0.0) || !std::isfinite(pdf)) {
-      out[k] = {};
-      continue;
-    }
-    out[k].L = L[k];
-    out[k].pdf = pdf;
-    out[k].weight = value[k].f * (L[k].z / pdf);
-  }
+  for (int k = 0; k < n; ++k) out[k] = ok[k] ? mixtureSample(L[k], value[k]) : BrdfSample{};
 }
 
 }  // namespace glossy

@@ -22,10 +22,7 @@ void oneMinusCosLanes(double m, const Vec2* u, const bool* lobe, double* oneMinu
   double x[kMaxBatchLanes] = {};  // initialised for GCC, which cannot see that lanes::log1p reads only n
   for (int k = 0; k < n; ++k) x[k] = lobe[k] ? -u[k].x : 0.0;
   lanes::log1p(x, x, n);
-  for (int k = 0; k < n; ++k) {
-    const double tan2 = -m * m * x[k], sec = std::sqrt(1.0 + tan2);
-    oneMinusCos[k] = tan2 / (sec * (sec + 1.0));
-  }
+  for (int k = 0; k < n; ++k) oneMinusCos[k] = CookTorrance::oneMinusCosOfTan2(-m * m * x[k]);
 }
 
 GLOSSY_LANE_CLONES

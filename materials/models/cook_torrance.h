@@ -60,9 +60,12 @@ struct CookTorrance {
     return lobeProbability(4.0 * meanOf(ks) * fresnelAtNormalIncidence(eta), kd);
   }
   bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const {
-    const double tan2 = -m * m * std::log1p(-u.x);
-    const double sec = std::sqrt(1.0 + tan2);  // 1 − cos θ = tan² / (sec (sec + 1)), no cancellation
-    return reflectAboutHalfVector(V, tan2 / (sec * (sec + 1.0)), 2.0 * kPi * u.y, L);
+    return reflectAboutHalfVector(V, oneMinusCosOfTan2(-m * m * std::log1p(-u.x)), 2.0 * kPi * u.y, L);
+  }
+  // 1 − cos θ = tan²θ / (sec θ (sec θ + 1)), without cancellation.
+  static double oneMinusCosOfTan2(double tan2) {
+    const double sec = std::sqrt(1.0 + tan2);
+    return tan2 / (sec * (sec + 1.0));
   }
   // pdf_L = pdf_h / (4⟨V,H⟩), given beckmann = exp(−tan²θ_h / m²).
   double lobePdf(const HalfVector& h, double beckmann) const {

@@ -10,6 +10,16 @@ namespace {
 
 constexpr int kChunk = 128;  // lanes per pass, on the stack
 
+// Each lane's permutation range, as arrays (the form the vectorised rounds read).
+struct RangeLanes {
+  uint32_t size[kChunk], mask[kChunk], half[kChunk];
+  void set(int k, const cmj_detail::PermutationRange& range) {
+    size[k] = range.size;
+    mask[k] = range.mask;
+    half[k] = uint32_t(range.halfWidth);
+  }
+};
+
 // permute() for n lanes, each with its own range (size, mask, half width) and key (its low half seeds the
 // bijection, its high half the rotation). The cycle walking becomes rounds over every lane until none is
 // out of range; a lane in range keeps its value, so each lane takes exactly the rounds permute() takes.
@@ -19,9 +29,10 @@ constexpr int kChunk = 128;  // lanes per pass, on the stack
 #if defined(__x86_64__)
 __attribute__((target_clones("avx2", "default")))
 #endif
-void permuteLanes(const uint32_t* in, const uint32_t* size, const uint32_t* mask, const uint32_t* half,
-                  const uint32_t* seed, const uint32_t* rotation, uint32_t* out, int n) {
+void permuteLanes(const uint32_t* in, const RangeLanes& range, const uint32_t* seed, const uint32_t* rotation,
+                  uint32_t* out, int n) {
   using namespace cmj_detail;
+  const uint32_t *size = range.size, *mask = range.mask, *half = range.half;
   uint32_t outside = 0;
   for (int k = 0; k < n; ++k) {
     out[k] = permuteRound(in[k], mask[k], half[k], seed[k]);
@@ -47,9 +58,10 @@ void CmjSampler::get2D(CmjSampler* samplers, const int* lanes, int n, Vec2* out)
     const int count = std::min(kChunk, n - first);
     const int* lane = lanes + first;
     const CmjPattern& g = *samplers[lane[0]].pattern_;
-    uint32_t index[kChunk], cell[kChunk], size[kChunk], mask[kChunk], half[kChunk], i[kChunk], c[kChunk];
+    uint32_t index[kChunk], cell[kChunk], i[kChunk], c[kChunk];
     uint32_t thinColumn[kChunk], thinRow[kChunk];
     int band[kChunk];
+    RangeLanes range;
     // The three keys' halves: key[0][k] low, key[1][k] high for the cell; then the column's, the row's.
     uint32_t key[6][kChunk];
     for (int k = 0; k < count; ++k) {
@@ -62,11 +74,9 @@ void CmjSampler::get2D(CmjSampler* samplers, const int* lanes, int n, Vec2* out)
       key[3][k] = uint32_t(p.column >> 32);
       key[4][k] = uint32_t(p.row);
       key[5][k] = uint32_t(p.row >> 32);
-      size[k] = g.countRange_.size;
-      mask[k] = g.countRange_.mask;
-      half[k] = uint32_t(g.countRange_.halfWidth);
+      range.set(k, g.countRange_);
     }
-    permuteLanes(index, size, mask, half, key[0], key[1], cell, count);
+    permuteLanes(index, range, key[0], key[1], cell, count);
     // The cell's column of its band, and its place in it; then the thin column (a permutation of i over
     // the band's height) and the thin row (of c over its columns).
     for (int k = 0; k < count; ++k) {
@@ -75,18 +85,11 @@ void CmjSampler::get2D(CmjSampler* samplers, const int* lanes, int n, Vec2* out)
       const uint32_t j = cell[k] - b.start;
       i[k] = j / b.columns;
       c[k] = j - i[k] * b.columns;
-      size[k] = b.heightRange.size;
-      mask[k] = b.heightRange.mask;
-      half[k] = uint32_t(b.heightRange.halfWidth);
+      range.set(k, b.heightRange);
     }
-    permuteLanes(i, size, mask, half, key[2], key[3], thinColumn, count);
-    for (int k = 0; k < count; ++k) {
-      const CmjPattern::Band& b = g.bands_[band[k]];
-      size[k] = b.columnRange.size;
-      mask[k] = b.columnRange.mask;
-      half[k] = uint32_t(b.columnRange.halfWidth);
-    }
-    permuteLanes(c, size, mask, half, key[4], key[5], thinRow, count);
+    permuteLanes(i, range, key[2], key[3], thinColumn, count);
+    for (int k = 0; k < count; ++k) range.set(k, g.bands_[band[k]].columnRange);
+    permuteLanes(c, range, key[4], key[5], thinRow, count);
     for (int k = 0; k < count; ++k) {
       const CmjPattern::Band& b = g.bands_[band[k]];
       const uint64_t jitter = mix(cell[k], key[1][k]);
@@ -102,18 +105,17 @@ void CmjSampler::get1D(CmjSampler* samplers, const int* lanes, int n, double* ou
     const int count = std::min(kChunk, n - first);
     const int* lane = lanes + first;
     const CmjPattern& g = *samplers[lane[0]].pattern_;
-    uint32_t index[kChunk], interval[kChunk], size[kChunk], mask[kChunk], half[kChunk], low[kChunk], high[kChunk];
+    uint32_t index[kChunk], interval[kChunk], low[kChunk], high[kChunk];
+    RangeLanes range;
     for (int k = 0; k < count; ++k) {
       CmjSampler& s = samplers[lane[k]];
       const uint64_t key = s.pixel_->seeds(s.dimension_++).cell;
       index[k] = s.index_;
       low[k] = uint32_t(key);
       high[k] = uint32_t(key >> 32);
-      size[k] = g.countRange_.size;
-      mask[k] = g.countRange_.mask;
-      half[k] = uint32_t(g.countRange_.halfWidth);
+      range.set(k, g.countRange_);
     }
-    permuteLanes(index, size, mask, half, low, high, interval, count);
+    permuteLanes(index, range, low, high, interval, count);
     for (int k = 0; k < count; ++k)
       out[lane[k]] = belowOne((interval[k] + toUnit(hash(interval[k], high[k]))) * g.perCount_);
   }
