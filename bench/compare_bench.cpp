@@ -90,8 +90,7 @@ int main(int argc, char** argv) {
     MaterialBinding binding = bindMaterials(description, std::nullopt);
     const Environment environment = Environment::load(envPath);
     EmbreeScene bvh(description);
-    const AreaLights lights(description);
-    const RenderScene scene{&description, &bvh, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, &environment, &lights};
+    const RenderScene scene{&description, &bvh, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, &environment};
     const Camera& camera = description.cameras.at(0);
     std::string bound;
     for (const auto& b : binding.bindings) bound += (bound.empty() ? "" : "; ") + b;

@@ -32,8 +32,7 @@ int main(int argc, char** argv) {
     MaterialBinding binding = bindMaterials(description, std::nullopt);
     const Environment environment = Environment::makeDefault();
     EmbreeScene bvh(description);
-    const AreaLights lights(description);
-    const RenderScene scene{&description, &bvh, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, &environment, &lights};
+    const RenderScene scene{&description, &bvh, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, &environment};
     RenderSettings settings;
     settings.width = settings.height = size;
     settings.spp = spp;

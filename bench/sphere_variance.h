@@ -15,14 +15,12 @@ namespace glossy::bench {
 struct Setup {
   SceneDescription description;
   std::unique_ptr<EmbreeScene> bvh;
-  std::unique_ptr<AreaLights> lights;
   Environment environment = Environment::makeDefault();
   std::vector<char> mask;  // pixels whose centre sees the object
 
   explicit Setup(int size, Environment env = Environment::makeDefault()) : environment(std::move(env)) {
     description = loadGltf(std::filesystem::path(GLOSSY_SOURCE_DIR) / "scenes/sphere.gltf");
     bvh = std::make_unique<EmbreeScene>(description);
-    lights = std::make_unique<AreaLights>(description);
     for (int y = 0; y < size; ++y)
       for (int x = 0; x < size; ++x) {
         Hit hit;
@@ -32,7 +30,7 @@ struct Setup {
 
   RgbImage render(const Brdf& brdf, int size, int spp, bool cosine, uint32_t seed) const {
     std::vector<Brdf> brdfs(description.materials.size(), brdf);
-    const RenderScene scene{&description, bvh.get(), brdfs, brdf, &environment, lights.get()};
+    const RenderScene scene{&description, bvh.get(), brdfs, brdf, &environment};
     RenderSettings s;
     s.width = s.height = size;
     s.spp = spp;

@@ -160,7 +160,6 @@ TEST(MeasuredRender, ATableOfAnAnalyticFitRendersLikeTheFitWithinItsBinningError
   description.materials.push_back(object);
   description.meshes.push_back(uvSphere(1.0, 256, 128, 0));
   const EmbreeScene bvh(description);
-  const AreaLights lights(description);
   const Environment environment = Environment::constant(Rgb(1.0));
   RenderSettings settings;
   settings.width = settings.height = 1;
@@ -169,7 +168,7 @@ TEST(MeasuredRender, ATableOfAnAnalyticFitRendersLikeTheFitWithinItsBinningError
   settings.maxDepth = 2;  // one reflection off a convex object under radiance 1: the directional albedo
   const auto renderPixel = [&](const Brdf& brdf, double thetaDeg) {
     const std::vector<Brdf> brdfs = {brdf};
-    const RenderScene scene{&description, &bvh, brdfs, brdf, &environment, &lights};
+    const RenderScene scene{&description, &bvh, brdfs, brdf, &environment};
     const double r = std::sin(thetaDeg * kPi / 180.0);
     const Camera c = orthographicDown(1e-3, {r, 0, 5}, {r, 0, 0}, {0, 1, 0});
     RenderStats stats;

@@ -41,9 +41,7 @@ struct Fixture {
 
   RgbImage renderWith(const Camera& camera, const RenderSettings& settings, RenderStats* statsOut = nullptr) {
     const EmbreeScene bvh(description);
-    const AreaLights lights(description);
-    const RenderScene scene{&description, &bvh, brdfs, Lambertian{Rgb(0.5)}, withEnvironment ? &environment : nullptr,
-                            &lights};
+    const RenderScene scene{&description, &bvh, brdfs, Lambertian{Rgb(0.5)}, withEnvironment ? &environment : nullptr};
     RenderStats stats;
     RgbImage image = render(scene, camera, settings, stats);
     if (statsOut) *statsOut = stats;

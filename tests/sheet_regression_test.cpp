@@ -23,9 +23,8 @@ double alpha() { return sidakAlpha(0.01, int(kMaterials.size() * sheetPanels().s
 struct Stage {
   SceneDescription description = loadGltf(sourceDir() / "scenes/preview.gltf");
   EmbreeScene bvh{description};
-  AreaLights lights{description};
   Environment environment = Environment::makeDefault();
-  SheetScene scene = makeSheetScene(description, bvh, lights, environment, description.cameras.front());
+  SheetScene scene = makeSheetScene(description, bvh, environment, description.cameras.front());
 };
 const Stage& stage() {
   static const Stage s;

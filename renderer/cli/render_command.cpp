@@ -45,15 +45,13 @@ int runRender(RenderOptions o) {
   }
 
   MaterialBinding binding = bindMaterials(description, override);
-  RenderScene scene{&description, nullptr, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, nullptr, nullptr};
+  RenderScene scene{&description, nullptr, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, nullptr};
   if (override) scene.defaultBrdf = override->brdf;
 
   const Environment environment = environmentFromOptions(o.env, o.envConstant, o.envRotate);
   const EmbreeScene bvh(description);
-  const AreaLights areaLights(description);
   scene.bvh = &bvh;
   scene.environment = &environment;
-  scene.areaLights = &areaLights;
 
   const Camera* camera = &cameraFromOptions(description, o.camera, scenePath);
 
@@ -120,6 +118,8 @@ Command addRenderCommand(CLI::App& parent) {
   app->add_option("--brdf-sampling", o->brdfSampling,
                   "lobe: each model samples its own lobe (default); cosine: the cosine lobe, to see what lobe sampling is worth")
       ->check(CLI::IsMember({"lobe", "cosine"}))->capture_default_str();
+  app->add_flag("--reference", o->settings.reference,
+                "Trace one path at a time (the reference path tracer): the same image, more slowly");
   app->add_option("-o,--output", o->output, "Output EXR")->capture_default_str();
   material->needs(fit);
   fit->needs(material);

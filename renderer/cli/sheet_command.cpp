@@ -30,11 +30,10 @@ struct SheetOptions {
   std::string outDir = "out/sheets", shard;
 };
 
-// What every sheet of one run shares: the scene, its BVH and lights, the environment, the camera.
+// What every sheet of one run shares: the scene, its BVH, the environment, the camera.
 struct Stage {
   SceneDescription description;
   std::unique_ptr<EmbreeScene> bvh;
-  std::unique_ptr<AreaLights> lights;
   std::unique_ptr<Environment> environment;
   const Camera* camera = nullptr;
   std::string scenePath;
@@ -45,7 +44,6 @@ struct Stage {
     description = loadGltf(scenePath);
     camera = &cameraFromOptions(description, o.camera, scenePath);
     bvh = std::make_unique<EmbreeScene>(description);
-    lights = std::make_unique<AreaLights>(description);
     environment = std::make_unique<Environment>(environmentFromOptions(o.env, o.envConstant, o.envRotate));
   }
 };
@@ -106,7 +104,7 @@ void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, co
   std::string note;
   const auto measured = findMeasured(m, o, explicitMeasured, note);
   const auto start = std::chrono::steady_clock::now();
-  const SheetScene scene = makeSheetScene(stage.description, *stage.bvh, *stage.lights, *stage.environment, *stage.camera);
+  const SheetScene scene = makeSheetScene(stage.description, *stage.bvh, *stage.environment, *stage.camera);
   const Sheet sheet = renderSheet(scene, m, measured, note, o.settings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (exr.has_parent_path()) std::filesystem::create_directories(exr.parent_path());

@@ -1,13 +1,10 @@
-// Unidirectional path tracing with next-event estimation to the environment and to area lights, combined
-// with BSDF sampling by multiple importance sampling (power heuristic), and Russian roulette.
-//
-// Depth follows Mitsuba 3: maxDepth counts path segments, so 1 shows only directly visible emitters,
-// 2 adds direct lighting, 3 one indirect bounce (the speed benchmark's setting), and so on.
+// Rendering an image by path tracing (path_reference.cpp says what a path does; path_wave.cpp does the
+// same for many paths at once, the default). Depth follows Mitsuba 3: maxDepth counts path segments, so 1
+// shows only directly visible emitters, 2 adds direct lighting, 3 one indirect bounce, and so on.
 #pragma once
 
 #include "materials/models/brdf.h"
 #include "renderer/image/exr_image.h"
-#include "renderer/lights/area_lights.h"
 #include "renderer/lights/environment.h"
 #include "renderer/scene/embree_scene.h"
 
@@ -28,16 +25,18 @@ struct RenderSettings {
   // Sample every BRDF's cosine lobe instead of its own (exact pdf either way): only to measure what lobe
   // sampling is worth.
   bool cosineBrdfSampling = false;
+  // One path at a time (path_reference.cpp) instead of waves: the same image, bit for bit, more slowly.
+  bool reference = false;
 };
 
-// What the integrator needs of a scene, built once: the BVH, the BRDF of each scene material, the lights.
+// What the integrator needs of a scene, built once: the BVH, the BRDF of each scene material, the
+// environment (may be null). Its other lights are the scene's emissive triangles.
 struct RenderScene {
   const SceneDescription* description;
   const EmbreeScene* bvh;
   std::vector<Brdf> brdfs;  // per SceneDescription::materials entry
   Brdf defaultBrdf = Lambertian{Rgb(0.5)};
   const Environment* environment;
-  const AreaLights* areaLights;
 
   const Brdf& brdfOf(uint32_t mesh) const {
     const int m = description->meshes[mesh].material;

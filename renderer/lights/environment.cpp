@@ -95,6 +95,7 @@ struct Environment::Impl {
   std::string description;
   bool isConstant = false;
   Rgb constantRadiance{0.0};
+  double meanLuminance = 0.0;
 
   LatLongMap map;
   // Rotation about +Y by α shifts every feature's u by −α/(2π) (φ ↦ φ − α for a right-handed turn):
@@ -153,6 +154,10 @@ struct Environment::Impl {
         weights[std::size_t(cell) * width + column] = meanLuminance * meanSinTheta;
       }
     }
+    // Σ weights × (the cells' area, 2π²/(W·cells)), over 4π.
+    double sum = 0.0;
+    for (double w : weights) sum += w;
+    meanLuminance = sum * kPi / (2.0 * width * cells);
     distribution = BlockedDistribution2D(weights, std::size_t(width), std::size_t(cells));
     std::vector<float> densities(weights.size());
     for (int cell = 0; cell < cells; ++cell)
@@ -194,6 +199,7 @@ Environment Environment::constant(const Rgb& radiance) {
   auto impl = std::make_unique<Impl>();
   impl->isConstant = true;
   impl->constantRadiance = radiance;
+  impl->meanLuminance = luminance(radiance);
   impl->description = "constant " + formatNumber(radiance.r) + "," + formatNumber(radiance.g) + "," +
                       formatNumber(radiance.b);
   return Environment(std::move(impl));
@@ -307,6 +313,8 @@ Rgb Environment::radianceAndPdf(const Vec3& dir, double& pdf) const {
   pdf = env.pdfAt(dir, at);
   return env.map.interpolate(at);
 }
+
+double Environment::meanLuminance() const { return impl_->meanLuminance; }
 
 const std::string& Environment::description() const { return impl_->description; }
 

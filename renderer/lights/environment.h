@@ -66,6 +66,7 @@ class Environment {
   void endSample(const SampleBatch& batch, Sample* out) const;
   void beginRadianceAndPdf(const bool* want, const Vec3* dirs, int n, RadianceBatch& batch) const;
   void endRadianceAndPdf(const RadianceBatch& batch, Rgb* radiance, double* pdf) const;
+  double meanLuminance() const;  // over the sphere of directions
   const std::string& description() const;  // for image metadata: file name, "constant r,g,b", "default sky"
 
   Environment(Environment&&) noexcept;

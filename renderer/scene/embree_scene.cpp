@@ -145,11 +145,23 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
 }
 
 void EmbreeScene::completeHit(const Ray& ray, Hit& hit) const {
-  hit.position = ray.origin + hit.t * ray.dir;
   const Mesh& mesh = scene_.meshes[hit.mesh];
   const uint32_t* corner = &mesh.indices[3 * size_t(hit.triangle)];
   const Vec3 p0(mesh.positions[corner[0]]), p1(mesh.positions[corner[1]]), p2(mesh.positions[corner[2]]);
-  hit.geometricNormal = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+  // The ray against the triangle again, in double (Möller–Trumbore): Embree's float t, u, v depend on
+  // which of its kernels answered, these only on the ray and the triangle. The point is formed from the
+  // barycentrics, so it lies on the triangle's plane to double precision.
+  const Vec3 e1 = p1 - p0, e2 = p2 - p0, pv = glm::cross(ray.dir, e2);
+  const double det = glm::dot(e1, pv);
+  if (det != 0.0) {
+    const Vec3 tv = ray.origin - p0, qv = glm::cross(tv, e1);
+    hit.u = glm::dot(tv, pv) / det;
+    hit.v = glm::dot(ray.dir, qv) / det;
+    hit.t = glm::dot(e2, qv) / det;
+  }
+  hit.position = (1.0 - hit.u - hit.v) * p0 + hit.u * p1 + hit.v * p2;
+  hit.margin = surfaceMargin(std::max({maxAbsComponent(p0), maxAbsComponent(p1), maxAbsComponent(p2)}));
+  hit.geometricNormal = glm::normalize(glm::cross(e1, e2));
   hit.shadingNormal = hit.geometricNormal;
   if (!mesh.normals.empty()) {
     const Vec3 n = (1.0 - hit.u - hit.v) * Vec3(mesh.normals[corner[0]]) + hit.u * Vec3(mesh.normals[corner[1]]) +

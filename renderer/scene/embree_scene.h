@@ -4,6 +4,10 @@
 #include "renderer/scene/scene.h"
 
 #include <embree3/rtcore.h>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
 
 namespace glossy {
 
@@ -22,7 +26,22 @@ struct Hit {
   Vec3 position{0.0};
   Vec3 geometricNormal{0.0};  // unit, as wound (not flipped toward the ray)
   Vec3 shadingNormal{0.0};    // unit, interpolated vertex normals, or the geometric normal
+  // How far a ray leaving this point must start off the surface (spawnRay) so that Embree, which tests
+  // in float, cannot find this triangle again: a bound on float rounding at the triangle's magnitude.
+  double margin = 0.0;
 };
+
+// The margin of a surface whose coordinates reach maxAbs: 32 float ulps of it. The origin's rounding to
+// float (½ ulp a coordinate) and Embree's float plane test (a few ulps of the vertices' magnitude) stay
+// below it, and it scales with the scene, so a scene and its copy scaled by 1e3 render alike.
+inline double surfaceMargin(double maxAbs) { return 0x1p-19 * maxAbs; }
+inline double maxAbsComponent(const Vec3& p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
+
+// A ray leaving a surface point with margin m and geometric normal ng, in unit direction dir: it starts m
+// off the surface on dir's side.
+inline Ray spawnRay(const Vec3& p, const Vec3& ng, double margin, const Vec3& dir) {
+  return Ray{p + ng * (glm::dot(dir, ng) > 0.0 ? margin : -margin), dir, 0.0, 1e30};
+}
 
 // The Embree form of a ray (float; tfar beyond float range becomes +∞).
 RTCRay toRtcRay(const Ray& ray);
@@ -78,7 +97,8 @@ class EmbreeScene {
   // The same for kPacketSize rays at once; lanes with valid[i] false are neither traced nor written.
   void intersect(const bool* valid, const Ray* rays, Hit* hits, bool* found) const;
   void occluded(const bool* valid, const Ray* rays, bool* occluded) const;
-  // Bounding sphere of all geometry (for placing the environment's sampling and default cameras).
+  // A sphere around all geometry, centred on its bounding box (not the smallest one): for the environment
+  // light's power and default cameras.
   Vec3 boundsCenter() const { return center_; }
   double boundsRadius() const { return radius_; }
 
@@ -87,7 +107,8 @@ class EmbreeScene {
 
  private:
   void throwIfEmbreeFailed(const char* doing) const;
-  // Hit geometry in double from the mesh, given Embree's t, primitive and barycentrics.
+  // Hit geometry in double from the mesh and the primitive Embree found: the same hit whether Embree
+  // answered a one-ray or a packet query.
   void completeHit(const Ray& ray, Hit& hit) const;
   void release();
 

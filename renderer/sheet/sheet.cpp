@@ -34,7 +34,7 @@ PanelRender renderPanel(const SheetScene& scene, const SheetPanel& panel, const 
   std::vector<Brdf> brdfs = scene.baseBrdfs;
   for (size_t m = 0; m < brdfs.size(); ++m)
     if (scene.isObject[m]) brdfs[m] = brdf;
-  const RenderScene rs{scene.description, scene.bvh, std::move(brdfs), brdf, scene.environment, scene.areaLights};
+  const RenderScene rs{scene.description, scene.bvh, std::move(brdfs), brdf, scene.environment};
   RenderSettings r;
   r.width = s.width;
   r.height = s.height;
@@ -106,9 +106,9 @@ std::span<const SheetPanel> sheetPanels() {
   return panels;
 }
 
-SheetScene makeSheetScene(const SceneDescription& description, const EmbreeScene& bvh, const AreaLights& areaLights,
+SheetScene makeSheetScene(const SceneDescription& description, const EmbreeScene& bvh,
                           const Environment& environment, const Camera& camera) {
-  SheetScene s{&description, &bvh, &areaLights, &environment, &camera, bindMaterials(description, std::nullopt).brdfs, {}};
+  SheetScene s{&description, &bvh, &environment, &camera, bindMaterials(description, std::nullopt).brdfs, {}};
   bool anyBound = false;
   for (const SceneMaterial& m : description.materials) anyBound = anyBound || !m.glossyMaterial.empty();
   for (const SceneMaterial& m : description.materials)

@@ -40,14 +40,13 @@ struct SheetSettings {
 struct SheetScene {
   const SceneDescription* description;
   const EmbreeScene* bvh;
-  const AreaLights* areaLights;
   const Environment* environment;
   const Camera* camera;
   std::vector<Brdf> baseBrdfs;      // per scene material, as the scene binds them
   std::vector<bool> isObject;       // per scene material: replaced by each panel's BRDF
 };
 // The object: materials with an extras.glossy binding, else every non-emissive one.
-SheetScene makeSheetScene(const SceneDescription& description, const EmbreeScene& bvh, const AreaLights& areaLights,
+SheetScene makeSheetScene(const SceneDescription& description, const EmbreeScene& bvh,
                           const Environment& environment, const Camera& camera);
 
 struct PanelRender {

@@ -1,0 +1,227 @@
+// The steps of a path's vertex, shared by the reference path tracer (path_reference.cpp), which takes them
+// one path at a time, and the wave (path_wave.cpp), which takes each for many paths at once. Both call
+// these functions, so a path gets the same numbers either way.
+#pragma once
+
+#include "materials/core/frame.h"
+#include "renderer/integrator/path_tracer.h"
+#include "renderer/lights/light_set.h"
+#include "renderer/sampling/cmj_sampler.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace glossy {
+
+// What a path tracer works from.
+struct PathContext {
+  const RenderScene& scene;
+  const RenderSettings& settings;
+  const LightSet& lights;
+};
+
+// The sampler dimensions of a path: the camera's film position (one 2D draw), then at every vertex that
+// reflects, all five of these in this order, whether or not the vertex uses them. So the k-th vertex
+// always reads the same dimensions, and each stays stratified across the pixel's samples.
+struct VertexDraws {
+  double lightChoice = 0.0;  // which light (LightSet::choose)
+  Vec2 light{0.0};           // where on it (Light::sample)
+  double lobe = 0.0;         // which of the BRDF's lobes
+  Vec2 bsdf{0.0};            // the direction in that lobe
+  double roulette = 0.0;     // whether the path survives Russian roulette
+};
+
+inline VertexDraws drawVertex(CmjSampler& sampler) {
+  VertexDraws d;
+  d.lightChoice = sampler.get1D();
+  d.light = sampler.get2D();
+  d.lobe = sampler.get1D();
+  d.bsdf = sampler.get2D();
+  d.roulette = sampler.get1D();
+  return d;
+}
+
+// Paths traced together by the wave.
+constexpr int kWaveSize = 128;
+
+// drawVertex for samplers[lanes[k]], k < n, into out[lanes[k]] (lanes < kWaveSize): the batch draws
+// (cmj_sampler.h), the same values in the same order.
+inline void drawVertices(CmjSampler* samplers, const int* lanes, int n, VertexDraws* out) {
+  double choice[kWaveSize], lobe[kWaveSize], roulette[kWaveSize];
+  Vec2 light[kWaveSize], bsdf[kWaveSize];
+  CmjSampler::get1D(samplers, lanes, n, choice);
+  CmjSampler::get2D(samplers, lanes, n, light);
+  CmjSampler::get1D(samplers, lanes, n, lobe);
+  CmjSampler::get2D(samplers, lanes, n, bsdf);
+  CmjSampler::get1D(samplers, lanes, n, roulette);
+  for (int k = 0; k < n; ++k) {
+    const int i = lanes[k];
+    out[i] = {choice[i], light[i], lobe[i], bsdf[i], roulette[i]};
+  }
+}
+
+inline double powerHeuristic(double a, double b) {
+  const double a2 = a * a, b2 = b * b;
+  return a2 + b2 > 0.0 ? a2 / (a2 + b2) : 0.0;
+}
+
+inline double maxComponent(const Rgb& c) { return std::max({c.r, c.g, c.b}); }
+
+// A path's state between vertices.
+struct PathState {
+  Rgb throughput{1.0};
+  double bsdfPdf = 0.0;  // solid-angle pdf of the BSDF sample that made the ray; 0 for the camera ray
+  Vec3 from{0.0};        // the vertex the ray left (the light densities of MIS are seen from it)
+};
+
+// Emission found by the path's ray (from a light it hit or a distant light it escaped to), weighted
+// against the light sample that could have found it: lightPdf is that density, its light's choice
+// included. A camera ray's is unweighted.
+inline Rgb weightedEmission(const PathState& path, const Rgb& emitted, double lightPdf) {
+  return path.bsdfPdf > 0.0 ? emitted * powerHeuristic(path.bsdfPdf, lightPdf) : emitted;
+}
+
+// Where a path meets a reflecting surface.
+struct ShadingPoint {
+  Vec3 position{0.0}, ng{0.0};  // ng faces the viewer
+  double margin = 0.0;          // Hit::margin
+  Frame frame{Vec3(0.0, 0.0, 1.0)};
+  Vec3 woLocal{0.0};
+  const Brdf* brdf = nullptr;
+};
+
+// The shading point of a hit that is not a light; false where the path cannot reflect there.
+inline bool shade(const RenderScene& scene, const Ray& ray, const Hit& hit, ShadingPoint& sp) {
+  const Vec3 wo = -ray.dir;
+  // Two-sided shading: face the normals toward the viewer. A shading normal that still faces away
+  // would let light through the surface, so fall back to the geometric one there.
+  Vec3 ng = hit.geometricNormal, ns = hit.shadingNormal;
+  if (glm::dot(wo, ng) < 0.0) {
+    ng = -ng;
+    ns = -ns;
+  }
+  if (glm::dot(wo, ns) <= 0.0) ns = ng;
+  sp.position = hit.position;
+  sp.ng = ng;
+  sp.margin = hit.margin;
+  sp.frame = Frame(ns);
+  sp.woLocal = sp.frame.toLocal(wo);
+  sp.brdf = &scene.brdfOf(hit.mesh);
+  return sp.woLocal.z > 0.0;
+}
+
+// A light sample as the shading point sees it: the shadow ray to trace and what the light brings along it,
+// before the BRDF's value there.
+struct LightPath {
+  Vec3 wiLocal{0.0};
+  Rgb radiance{0.0};
+  double pdf = 0.0;  // solid angle, the light's choice included
+  Ray shadow;        // tfar < 0: nothing can lie between (the light touches the point)
+};
+
+// False when the sample brings nothing.
+inline bool toLight(const ShadingPoint& sp, const ChosenLight& chosen, const LightSample& s, LightPath& out) {
+  if (!(s.pdf > 0.0) || glm::dot(s.wi, sp.ng) <= 0.0) return false;
+  out.wiLocal = sp.frame.toLocal(s.wi);
+  if (out.wiLocal.z <= 0.0) return false;
+  out.radiance = s.radiance;
+  out.pdf = chosen.probability * s.pdf;
+  out.shadow = spawnRay(sp.position, sp.ng, sp.margin, s.wi);
+  if (!s.distant) {
+    // To the light's point, itself moved off the light by its margin. Where the two margins overlap
+    // there is no room for an occluder: the light is seen.
+    const Vec3 d = s.target - out.shadow.origin;
+    const double length = glm::length(d);
+    const bool room = glm::dot(d, s.wi) > 0.0 && length > 0.0;
+    out.shadow.dir = room ? d / length : s.wi;
+    out.shadow.tfar = room ? length : -1.0;
+  }
+  return true;
+}
+
+// What the light sample brings if nothing blocks it, MIS-weighted against the BRDF's own sampling, before
+// the path's throughput. False when that is nothing.
+inline bool lightContribution(const LightPath& light, const BrdfValue& value, Rgb& contribution) {
+  if (maxComponent(value.f) <= 0.0) return false;
+  const double w = powerHeuristic(light.pdf, value.pdf);
+  contribution = value.f * light.radiance * (light.wiLocal.z * w / light.pdf);
+  return true;
+}
+
+// The BRDF's value toward a light sample and the density of its own sampling there; and its sample of
+// the path's next direction. RenderSettings::cosineBrdfSampling samples the cosine lobe instead (to
+// measure what a model's own sampling is worth).
+inline BrdfValue valueToward(const RenderSettings& settings, const ShadingPoint& sp, const Vec3& wiLocal) {
+  if (settings.cosineBrdfSampling) return {eval(*sp.brdf, wiLocal, sp.woLocal), cosineHemispherePdf(wiLocal)};
+  return evalPdf(*sp.brdf, wiLocal, sp.woLocal);
+}
+inline BrdfSample sampleCosine(const Brdf& brdf, const Vec3& wo, Vec2 u) {
+  BrdfSample s;
+  s.L = squareToCosineHemisphere(u);
+  s.pdf = cosineHemispherePdf(s.L);
+  if (s.pdf <= 0.0) return {};
+  s.weight = eval(brdf, s.L, wo) * kPi;
+  return s;
+}
+inline BrdfSample sampleBsdf(const RenderSettings& settings, const ShadingPoint& sp, const VertexDraws& u) {
+  if (settings.cosineBrdfSampling) return sampleCosine(*sp.brdf, sp.woLocal, u.bsdf);
+  return sample(*sp.brdf, sp.woLocal, u.lobe, u.bsdf);
+}
+
+// The BSDF sample s continues the path: the next ray, the throughput and pdf it carries. False ends it.
+inline bool continuePath(int depth, const RenderSettings& settings, const ShadingPoint& sp, const BrdfSample& s,
+                         double uRoulette, PathState& path, Ray& ray) {
+  if (!s.valid()) return false;
+  const Vec3 wi = sp.frame.toWorld(s.L);
+  if (glm::dot(wi, sp.ng) <= 0.0) return false;  // below the geometric surface: no leaking through it
+  path.throughput *= s.weight;
+  path.bsdfPdf = s.pdf;
+  path.from = sp.position;
+  if (depth >= settings.rouletteDepth) {
+    const double survive = std::min(0.95, maxComponent(path.throughput));
+    if (uRoulette >= survive) return false;
+    path.throughput /= survive;
+  }
+  ray = spawnRay(sp.position, sp.ng, sp.margin, wi);
+  return true;
+}
+
+// The reference path tracer: the radiance arriving along a camera ray, whose sampler has drawn the film
+// position.
+Rgb tracePath(const PathContext& context, Ray ray, CmjSampler& sampler);
+
+// The same for up to kWaveSize camera rays at once: radiance[i] for the lanes with start[i]. Its lanes'
+// state lives in the tracer, made once per thread and reused, as it is too large to clear per wave.
+class WaveTracer {
+ public:
+  explicit WaveTracer(const PathContext& context) : context_(context) {}
+  void trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* radiance);
+
+ private:
+  void sampleBrdf(const Brdf& brdf, const int* lanes, int n);
+  void evalBrdf(const Brdf& brdf, const int* lanes, int n);
+
+  const PathContext& context_;
+  PathState path_[kWaveSize];
+  Hit hit_[kWaveSize];
+  bool found_[kWaveSize];
+  Vec3 direction_[kWaveSize];  // of the rays that left the scene
+  Rgb arriving_[kWaveSize];
+  double pdf_[kWaveSize];
+  ShadingPoint point_[kWaveSize];
+  VertexDraws draws_[kWaveSize];
+  ChosenLight chosen_[kWaveSize];
+  Vec3 position_[kWaveSize];
+  Vec2 uLight_[kWaveSize];
+  LightSample lightSample_[kWaveSize];
+  BrdfSample bsdfSample_[kWaveSize];
+  LightPath lightPath_[kWaveSize];
+  BrdfValue value_[kWaveSize];
+  Rgb contribution_[kWaveSize];
+  Ray shadow_[kWaveSize];
+  bool shadowed_[kWaveSize], occluded_[kWaveSize];
+};
+
+}  // namespace glossy

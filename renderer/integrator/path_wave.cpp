@@ -1,0 +1,162 @@
+// The reference path tracer (path_reference.cpp), batched: the paths of up to kWaveSize samples advance
+// together, one vertex at a time, each of its steps (path_vertex.h) taken for all lanes before the next.
+// Rays go to Embree as packets of kPacketSize lanes; the sampler's draws, the lights' samples and the
+// BRDFs' samples and values are batch calls, whose long chains of arithmetic and cache misses overlap
+// across lanes. Every lane takes the steps the reference takes, in its order, with the same draws, so
+// each lane's radiance is the reference's bit for bit.
+#include "renderer/integrator/path_vertex.h"
+
+#include <algorithm>
+
+namespace glossy {
+
+namespace {
+
+static_assert(kWaveSize % kPacketSize == 0, "a wave is whole Embree packets");
+
+// A list of a wave's lanes.
+struct Lanes {
+  int lane[kWaveSize];
+  int n = 0;
+  void add(int i) { lane[n++] = i; }
+};
+
+// f(key, lanes, count) for each distinct key(i) among the lanes, its lanes in increasing order. A wave
+// mostly has one BRDF and one or two lights, so this is one or two passes.
+template <class Key, class F>
+void forEachGroup(const Lanes& lanes, Key key, F&& f) {
+  bool done[kWaveSize] = {};
+  int group[kWaveSize];
+  for (int first = 0; first < lanes.n; ++first) {
+    if (done[first]) continue;
+    const auto k0 = key(lanes.lane[first]);
+    int count = 0;
+    for (int j = first; j < lanes.n; ++j)
+      if (!done[j] && key(lanes.lane[j]) == k0) {
+        group[count++] = lanes.lane[j];
+        done[j] = true;
+      }
+    f(k0, group, count);
+  }
+}
+
+}  // namespace
+
+void WaveTracer::trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* radiance) {
+  const RenderScene& scene = context_.scene;
+  const RenderSettings& settings = context_.settings;
+  const LightSet& lights = context_.lights;
+  bool alive[kWaveSize];
+  for (int i = 0; i < kWaveSize; ++i) {
+    alive[i] = start[i];
+    radiance[i] = Rgb(0.0);
+    path_[i] = PathState{};
+    path_[i].from = rays[i].origin;
+  }
+
+  for (int depth = 1;; ++depth) {
+    if (std::none_of(alive, alive + kWaveSize, [](bool a) { return a; })) return;
+    for (int p = 0; p < kWaveSize; p += kPacketSize) scene.bvh->intersect(alive + p, rays + p, hit_ + p, found_ + p);
+
+    // Rays that left the scene see the distant lights; rays that hit a light see it; the others shade.
+    Lanes escaped, shading;
+    for (int i = 0; i < kWaveSize; ++i) {
+      if (!alive[i]) continue;
+      alive[i] = false;
+      if (!found_[i]) {
+        escaped.add(i);
+        direction_[i] = rays[i].dir;
+      } else if (const ChosenLight light = lights.at(hit_[i])) {
+        double pdf = 0.0;
+        const Rgb emitted = light.light->emitted(hit_[i], path_[i].from, pdf);
+        radiance[i] += path_[i].throughput * weightedEmission(path_[i], emitted, light.probability * pdf);
+      } else if (depth < settings.maxDepth && shade(scene, rays[i], hit_[i], point_[i])) {
+        shading.add(i);
+      }
+    }
+    for (const ChosenLight& distant : lights.distant()) {
+      distant.light->arriving(direction_, escaped.lane, escaped.n, arriving_, pdf_);
+      for (int k = 0; k < escaped.n; ++k) {
+        const int i = escaped.lane[k];
+        radiance[i] += path_[i].throughput * weightedEmission(path_[i], arriving_[i], distant.probability * pdf_[i]);
+      }
+    }
+    drawVertices(samplers, shading.lane, shading.n, draws_);
+
+    // The light samples, a batch per light.
+    Lanes sampled;
+    for (int k = 0; k < shading.n; ++k) {
+      const int i = shading.lane[k];
+      chosen_[i] = lights.choose(draws_[i].lightChoice);
+      if (!chosen_[i]) continue;
+      sampled.add(i);
+      position_[i] = point_[i].position;
+      uLight_[i] = draws_[i].light;
+    }
+    forEachGroup(sampled, [&](int i) { return chosen_[i].light; },
+                 [&](const Light* light, const int* lanes, int n) { light->sample(position_, uLight_, lanes, n, lightSample_); });
+
+    // The BSDF samples and the BRDF's values toward the light samples, a batch per BRDF.
+    forEachGroup(shading, [&](int i) { return point_[i].brdf; },
+                 [&](const Brdf* brdf, const int* lanes, int n) { sampleBrdf(*brdf, lanes, n); });
+    Lanes lit;
+    for (int k = 0; k < sampled.n; ++k) {
+      const int i = sampled.lane[k];
+      if (toLight(point_[i], chosen_[i], lightSample_[i], lightPath_[i])) lit.add(i);
+    }
+    forEachGroup(lit, [&](int i) { return point_[i].brdf; },
+                 [&](const Brdf* brdf, const int* lanes, int n) { evalBrdf(*brdf, lanes, n); });
+
+    // The shadow rays, as packets; then the paths go on.
+    std::fill(shadowed_, shadowed_ + kWaveSize, false);
+    for (int k = 0; k < lit.n; ++k) {
+      const int i = lit.lane[k];
+      shadowed_[i] = lightContribution(lightPath_[i], value_[i], contribution_[i]);
+      shadow_[i] = lightPath_[i].shadow;
+    }
+    for (int p = 0; p < kWaveSize; p += kPacketSize) scene.bvh->occluded(shadowed_ + p, shadow_ + p, occluded_ + p);
+    for (int k = 0; k < lit.n; ++k) {
+      const int i = lit.lane[k];
+      if (shadowed_[i] && !occluded_[i]) radiance[i] += path_[i].throughput * contribution_[i];
+    }
+    for (int k = 0; k < shading.n; ++k) {
+      const int i = shading.lane[k];
+      alive[i] = continuePath(depth, settings, point_[i], bsdfSample_[i], draws_[i].roulette, path_[i], rays[i]);
+    }
+  }
+}
+
+// bsdfSample_ of the lanes: sampleBsdf, as one batch.
+void WaveTracer::sampleBrdf(const Brdf& brdf, const int* lanes, int n) {
+  Vec3 wo[kWaveSize];
+  double uLobe[kWaveSize];
+  Vec2 u[kWaveSize];
+  BrdfSample samples[kWaveSize];
+  for (int k = 0; k < n; ++k) {
+    const int i = lanes[k];
+    if (context_.settings.cosineBrdfSampling) bsdfSample_[i] = sampleBsdf(context_.settings, point_[i], draws_[i]);
+    wo[k] = point_[i].woLocal;
+    uLobe[k] = draws_[i].lobe;
+    u[k] = draws_[i].bsdf;
+  }
+  if (context_.settings.cosineBrdfSampling) return;
+  sampleBatch(brdf, wo, uLobe, u, samples, n);
+  for (int k = 0; k < n; ++k) bsdfSample_[lanes[k]] = samples[k];
+}
+
+// value_ of the lanes: valueToward their light samples, as one batch.
+void WaveTracer::evalBrdf(const Brdf& brdf, const int* lanes, int n) {
+  Vec3 wi[kWaveSize], wo[kWaveSize];
+  BrdfValue values[kWaveSize];
+  for (int k = 0; k < n; ++k) {
+    const int i = lanes[k];
+    if (context_.settings.cosineBrdfSampling) value_[i] = valueToward(context_.settings, point_[i], lightPath_[i].wiLocal);
+    wi[k] = lightPath_[i].wiLocal;
+    wo[k] = point_[i].woLocal;
+  }
+  if (context_.settings.cosineBrdfSampling) return;
+  evalPdfBatch(brdf, wi, wo, values, n);
+  for (int k = 0; k < n; ++k) value_[lanes[k]] = values[k];
+}
+
+}  // namespace glossy

@@ -1,0 +1,78 @@
+// What the path tracer asks of a light, whatever its kind: a sample toward a shading point, the density
+// of that sample, and the radiance a ray that reaches the light brings. Distant lights (the environment)
+// are reached by rays that leave the scene; surface lights (emissive triangles) by rays that hit them.
+//
+// Adding a light type: one file that defines a Light and a LightFactory for it, and its factory's name in
+// the registration line of light_set.cpp (docs/rendering.md).
+#pragma once
+
+#include "materials/core/types.h"
+#include "renderer/scene/embree_scene.h"
+
+#include <memory>
+#include <vector>
+
+namespace glossy {
+
+class Environment;
+
+// A light sample seen from a point.
+struct LightSample {
+  Vec3 wi{0.0};        // unit, from the point toward the light
+  Rgb radiance{0.0};   // arriving at the point along −wi if nothing blocks it
+  double pdf = 0.0;    // solid angle at the point; 0: no sample
+  bool distant = true;
+  Vec3 target{0.0};    // a surface light's point, moved off its surface toward the point by its margin
+};
+
+class Light {
+ public:
+  virtual ~Light() = default;
+
+  // Emitted power (luminance), what the light chooser weighs lights by.
+  virtual double power() const = 0;
+  virtual bool distant() const { return false; }
+
+  virtual LightSample sample(const Vec3& point, Vec2 u) const = 0;
+  // out[lanes[k]] = sample(points[lanes[k]], u[lanes[k]]) for k < n: a kind whose samples read memory at
+  // random overrides it to issue the lanes' reads together.
+  virtual void sample(const Vec3* points, const Vec2* u, const int* lanes, int n, LightSample* out) const {
+    for (int k = 0; k < n; ++k) out[lanes[k]] = sample(points[lanes[k]], u[lanes[k]]);
+  }
+
+  // Distant lights: the radiance from direction dir, and the density sample() draws dir with.
+  virtual Rgb arriving(const Vec3& /*dir*/, double& pdf) const {
+    pdf = 0.0;
+    return Rgb(0.0);
+  }
+  virtual void arriving(const Vec3* dirs, const int* lanes, int n, Rgb* radiance, double* pdf) const {
+    for (int k = 0; k < n; ++k) radiance[lanes[k]] = arriving(dirs[lanes[k]], pdf[lanes[k]]);
+  }
+
+  // Surface lights: the radiance leaving the hit point toward the ray's origin `from`, and the density
+  // (solid angle at `from`) with which sample(from, ·) would have drawn it.
+  virtual Rgb emitted(const Hit& /*hit*/, const Vec3& /*from*/, double& pdf) const {
+    pdf = 0.0;
+    return Rgb(0.0);
+  }
+};
+
+// What a light type may find its lights in.
+struct LightSources {
+  const SceneDescription& scene;
+  const Environment* environment;  // may be null
+  double sceneRadius;              // of a sphere around all geometry
+};
+
+// The lights a type finds in a scene. A surface light names the triangle it covers, so that a ray that
+// hits that triangle finds it.
+struct FoundLight {
+  std::unique_ptr<Light> light;
+  int mesh = -1;  // surface lights: the triangle (mesh, triangle) it covers
+  uint32_t triangle = 0;
+};
+using LightFactory = void(const LightSources&, std::vector<FoundLight>&);
+
+inline double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+}  // namespace glossy

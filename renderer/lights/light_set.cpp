@@ -1,0 +1,45 @@
+#include "renderer/lights/light_set.h"
+
+#include <cmath>
+
+namespace glossy {
+
+// The light types, each defined in its own file under renderer/lights/. Adding a type adds its factory's
+// name to this line.
+LightFactory environmentLight, emissiveTriangles;
+static LightFactory* const kLightTypes[] = {environmentLight, emissiveTriangles};
+
+LightSet::LightSet(const LightSources& sources) {
+  std::vector<FoundLight> found;
+  for (LightFactory* type : kLightTypes) type(sources, found);
+  surface_.resize(sources.scene.meshes.size());
+  std::vector<double> powers;
+  for (FoundLight& f : found) {
+    if (f.mesh >= 0) {
+      std::vector<int>& triangles = surface_[size_t(f.mesh)];
+      if (triangles.size() <= f.triangle) triangles.resize(size_t(f.triangle) + 1, -1);
+      triangles[f.triangle] = int(lights_.size());
+    }
+    const double power = f.light->power();
+    powers.push_back(std::isfinite(power) && power > 0.0 ? power : 0.0);
+    anyPower_ = anyPower_ || powers.back() > 0.0;
+    lights_.push_back(std::move(f.light));
+  }
+  if (lights_.empty()) return;
+  power_ = Distribution1D(powers);
+  for (size_t i = 0; i < lights_.size(); ++i)
+    if (lights_[i]->distant()) distant_.push_back(chosen(i));
+}
+
+ChosenLight LightSet::choose(double u) const {
+  if (!anyPower_) return {};
+  return chosen(power_.sampleDiscrete(u));
+}
+
+ChosenLight LightSet::at(const Hit& hit) const {
+  const std::vector<int>& triangles = surface_[hit.mesh];
+  if (hit.triangle >= triangles.size() || triangles[hit.triangle] < 0) return {};
+  return chosen(size_t(triangles[hit.triangle]));
+}
+
+}  // namespace glossy

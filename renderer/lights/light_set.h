@@ -1,0 +1,47 @@
+// A scene's lights, and the choice of one per light sample: in proportion to power (light.h), so that a
+// bright window is sampled more often than a dim lamp, and the environment against the emitters by what
+// it sends through the scene's bounds.
+#pragma once
+
+#include "materials/sampling/distribution.h"
+#include "renderer/lights/light.h"
+
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace glossy {
+
+struct ChosenLight {
+  const Light* light = nullptr;
+  double probability = 0.0;  // of choosing it
+  explicit operator bool() const { return light != nullptr; }
+};
+
+class LightSet {
+ public:
+  // Every registered light type's lights in the scene (light_set.cpp).
+  explicit LightSet(const LightSources& sources);
+
+  bool empty() const { return lights_.empty(); }
+  // A light drawn by power with u in [0, 1); none if the scene has no light with power.
+  ChosenLight choose(double u) const;
+  // The surface light covering a hit's triangle, with its probability of being chosen; none if the
+  // triangle emits nothing.
+  ChosenLight at(const Hit& hit) const;
+  // The lights a ray that leaves the scene sees, with their probabilities.
+  std::span<const ChosenLight> distant() const { return distant_; }
+
+ private:
+  ChosenLight chosen(size_t index) const {
+    return {lights_[index].get(), anyPower_ ? power_.discreteProbability(index) : 0.0};
+  }
+
+  std::vector<std::unique_ptr<Light>> lights_;
+  Distribution1D power_;
+  bool anyPower_ = false;
+  std::vector<ChosenLight> distant_;
+  std::vector<std::vector<int>> surface_;  // [mesh][triangle]: index into lights_, or −1
+};
+
+}  // namespace glossy

@@ -1,0 +1,273 @@
+// The path tracer's two forms and its lights: the wave gives the reference's image bit for bit; an
+// environment and emitters together match their analytic irradiance (both sides of MIS); the light
+// chooser draws by power; a scene renders alike at 1e-3 and 1e3 of its size; a light 1e-5 above a surface
+// lights it.
+#include "renderer/integrator/path_tracer.h"
+#include "renderer/lights/light_set.h"
+#include "tests/support/image_regression.h"
+#include "tests/support/render_fixtures.h"
+#include "tests/support/test_support.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+
+#include <cmath>
+#include <cstring>
+
+namespace glossy::test {
+
+namespace {
+
+SceneMaterial material(const char* name, Rgb emission = Rgb(0.0)) {
+  SceneMaterial m;
+  m.name = name;
+  m.emission = emission;
+  return m;
+}
+
+// Two triangles, counter-clockwise (facing edgeU × edgeV).
+Mesh quad(glm::vec3 corner, glm::vec3 edgeU, glm::vec3 edgeV, int material) {
+  Mesh m;
+  m.name = "test quad";
+  m.material = material;
+  m.positions = {corner, corner + edgeU, corner + edgeU + edgeV, corner + edgeV};
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+RgbImage renderScene(const SceneDescription& description, const std::vector<Brdf>& brdfs, const Environment* environment,
+                     const Camera& camera, const RenderSettings& settings) {
+  const EmbreeScene bvh(description);
+  const RenderScene scene{&description, &bvh, brdfs, Lambertian{Rgb(0.5)}, environment};
+  RenderStats stats;
+  return render(scene, camera, settings, stats);
+}
+
+RenderSettings quiet(int width, int height, int spp, uint32_t seed = 1) {
+  RenderSettings s;
+  s.width = width;
+  s.height = height;
+  s.spp = spp;
+  s.seed = seed;
+  s.threads = 2;
+  s.progress = false;
+  return s;
+}
+
+// A glossy sphere on a floor, under a lamp (two emissive triangles, facing down onto the sphere).
+struct Stage {
+  SceneDescription description;
+  std::vector<Brdf> brdfs;
+  explicit Stage(const Brdf& sphere, bool lamp) {
+    description.materials = {material("sphere"), material("floor"), material("lamp", Rgb(4.0, 3.0, 2.0))};
+    description.meshes.push_back(uvSphere(1.0, 64, 32, 0));
+    description.meshes.push_back(quad({-4, -1, 4}, {8, 0, 0}, {0, 0, -8}, 1));
+    if (lamp) description.meshes.push_back(quad({-1, 2.5f, -1}, {2, 0, 0}, {0, 0, 2}, 2));
+    brdfs = {sphere, Lambertian{Rgb(0.6, 0.5, 0.4)}, Lambertian{Rgb(0.0)}};
+  }
+};
+
+Camera perspective(glm::dvec3 eye, glm::dvec3 target, double yfov) {
+  Camera c;
+  c.cameraToWorld = glm::inverse(glm::lookAt(eye, target, glm::dvec3(0, 1, 0)));
+  c.yfov = yfov;
+  return c;
+}
+
+void expectIdentical(const RgbImage& wave, const RgbImage& reference, const std::string& what) {
+  ASSERT_EQ(wave.pixels.size(), reference.pixels.size());
+  size_t differ = 0;
+  for (size_t i = 0; i < wave.pixels.size(); ++i) differ += std::memcmp(&wave.pixels[i], &reference.pixels[i], sizeof(float)) != 0;
+  EXPECT_EQ(differ, 0u) << what << ": " << differ << " of " << wave.pixels.size() << " values differ";
+  double sum = 0.0;
+  for (float v : reference.pixels) sum += v;
+  EXPECT_GT(sum, 0.0) << what << ": a black image proves nothing";
+}
+
+}  // namespace
+
+// Every configuration the wave batches differently: the environment alone (its batch lookups), with
+// emitters (lights chosen by power, per-light batches), a measured table (no batch forms), Russian
+// roulette, and depths 1 (emitters only) and 8. A dimension drawn out of order in either fails this.
+TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
+  const Environment sky = Environment::makeDefault();
+  const Brdf cookTorrance = CookTorrance{Rgb(0.1, 0.08, 0.05), Rgb(0.8, 0.6, 0.4), 0.12, 1.6};
+  const Brdf measured = Measured(tabulateMerl(cookTorrance));
+  struct Case {
+    const char* name;
+    Brdf brdf;
+    bool lamp;
+    const Environment* environment;
+    int maxDepth, rouletteDepth;
+  };
+  const Case cases[] = {
+      {"environment only", cookTorrance, false, &sky, 8, 100},
+      {"environment and emitters", cookTorrance, true, &sky, 8, 100},
+      {"emitters only", Brdf(Lambertian{Rgb(0.7)}), true, nullptr, 8, 100},
+      {"measured table", measured, true, &sky, 4, 100},
+      {"Russian roulette", cookTorrance, true, &sky, 8, 2},
+      {"max depth 1", cookTorrance, true, &sky, 1, 100},
+  };
+  const Camera camera = perspective({0, 1.5, 5}, {0, 0, 0}, 0.7);
+  for (const Case& c : cases) {
+    const Stage stage(c.brdf, c.lamp);
+    RenderSettings settings = quiet(40, 32, 9);
+    settings.maxDepth = c.maxDepth;
+    settings.rouletteDepth = c.rouletteDepth;
+    const RgbImage wave = renderScene(stage.description, stage.brdfs, c.environment, camera, settings);
+    settings.reference = true;
+    const RgbImage reference = renderScene(stage.description, stage.brdfs, c.environment, camera, settings);
+    expectIdentical(wave, reference, c.name);
+  }
+}
+
+// A Lambertian floor under a constant environment and a square lamp whose back hides part of the sky:
+// E = Le·Ω⊥(lamp) + L_env·(π − Ω⊥(lamp)), Ω⊥ the lamp's projected solid angle (Lambert's polygon formula).
+// Light samples of either light and BSDF samples that find either are weighted by MIS against each other.
+TEST(Integrator, AnEnvironmentAndAnEmitterTogetherGiveTheirAnalyticIrradiance) {
+  SceneDescription description;
+  description.materials = {material("floor"), material("lamp", Rgb(10.0, 5.0, 2.0))};
+  description.meshes.push_back(quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0));
+  description.meshes.push_back(quad({-0.2f, 1, -0.2f}, {0.4f, 0, 0}, {0, 0, 0.4f}, 1));  // facing down
+  const std::vector<Brdf> brdfs = {Lambertian{Rgb(0.5)}, Lambertian{Rgb(0.0)}};
+  const Rgb sky(0.3, 0.6, 0.9);
+  const Environment environment = Environment::constant(sky);
+  // Two independent halves: their difference measures each pixel's noise, which here is mostly the
+  // lamp's (the sky's power, over the scene's bounds, is chosen far more often).
+  RenderSettings settings = quiet(40, 40, 2048, 1);
+  settings.maxDepth = 2;
+  const Camera camera = orthographicDown(2.0, {0, 5, 0}, {0, 0, 0}, {0, 0, -1});
+  const RgbImage a = renderScene(description, brdfs, &environment, camera, settings);
+  settings.seed = 2;
+  const RgbImage b = renderScene(description, brdfs, &environment, camera, settings);
+  auto projectedSolidAngle = [](const Vec3& p) {
+    const Vec3 corners[4] = {{-0.2, 1, -0.2}, {0.2, 1, -0.2}, {0.2, 1, 0.2}, {-0.2, 1, 0.2}};
+    double e = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 u = glm::normalize(corners[i] - p), v = glm::normalize(corners[(i + 1) % 4] - p);
+      e += std::acos(glm::dot(u, v)) * glm::normalize(glm::cross(u, v)).y;
+    }
+    return 0.5 * std::abs(e);
+  };
+  auto floorX = [](double px) { return (2.0 * px / 40 - 1.0) * 2.0; };
+  auto floorZ = [](double py) { return -(1.0 - 2.0 * py / 40) * 2.0; };
+  for (int c = 0; c < 3; ++c) {
+    // Over the checked pixels: the summed error against the summed variance (a uniform bias), and the
+    // squared errors against the variances (a bias in some pixels), with the variance of each pixel's
+    // mean estimated from the halves, ((a − b)/2)².
+    double error = 0.0, squared = 0.0, variance = 0.0;
+    int checked = 0;
+    for (int x = 1; x < 40; x += 2)
+      for (int y = 1; y < 40; y += 2) {
+        if (std::abs(floorX(x + 0.5)) < 0.5 && std::abs(floorZ(y + 0.5)) < 0.5) continue;  // the lamp's back hides it
+        double omega = 0.0;
+        for (int i = 0; i < 8; ++i)
+          for (int j = 0; j < 8; ++j) omega += projectedSolidAngle(Vec3(floorX(x + (i + 0.5) / 8), 0, floorZ(y + (j + 0.5) / 8))) / 64;
+        const double want = (Rgb(10.0, 5.0, 2.0)[c] * omega + sky[c] * (kPi - omega)) * (0.5 / kPi);
+        const double mean = 0.5 * (a.at(x, y)[c] + b.at(x, y)[c]), half = 0.5 * (a.at(x, y)[c] - b.at(x, y)[c]);
+        error += mean - want;
+        squared += (mean - want) * (mean - want);
+        variance += half * half;
+        ++checked;
+      }
+    ASSERT_GT(checked, 300);
+    EXPECT_LT(std::abs(error) / std::sqrt(variance), 4.0) << "channel " << c << ": mean error " << error / checked;
+    // E[squared] = E[variance]; their ratio over ~370 pixels is 1 ± 0.1 (both are sums of χ²-like terms).
+    EXPECT_LT(squared / variance, 1.5) << "channel " << c;
+    RecordProperty(std::string("relativeBias") + "RGB"[c], std::to_string(error / checked));
+  }
+}
+
+TEST(Integrator, TheLightChooserDrawsByPower) {
+  SceneDescription description;
+  description.materials = {material("dim", Rgb(1.0)), material("bright", Rgb(3.0))};
+  description.meshes.push_back(quad({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, 0));
+  description.meshes.push_back(quad({0, 2, 0}, {2, 0, 0}, {0, 0, 1}, 1));  // twice the area, thrice the radiance
+  const Environment environment = Environment::constant(Rgb(0.5));
+  const double radius = 2.0;
+  const LightSet lights(LightSources{description, &environment, radius});
+  // Powers: π·A·L per triangle (4 of area ½, ½, 1, 1), and π r² · 4π · L for the environment.
+  const double dim = kPi * 0.5, bright = kPi * 1.0 * 3.0, env = kPi * radius * radius * 4.0 * kPi * 0.5;
+  const double total = 2 * dim + 2 * bright + env;
+  ASSERT_EQ(lights.distant().size(), 1u);
+  EXPECT_NEAR(lights.distant()[0].probability, env / total, 1e-12);
+  Hit hit;
+  hit.mesh = 1;
+  hit.triangle = 1;
+  EXPECT_NEAR(lights.at(hit).probability, bright / total, 1e-12);
+  hit.mesh = 0;
+  EXPECT_NEAR(lights.at(hit).probability, dim / total, 1e-12);
+  int chosenEnvironment = 0;
+  const int n = 100000;
+  for (int i = 0; i < n; ++i) chosenEnvironment += lights.choose((i + 0.5) / n).light->distant();
+  EXPECT_NEAR(double(chosenEnvironment) / n, env / total, 1e-4);
+}
+
+// The preview scene and a lamp, scaled with its camera by 1e-3 and 1e3: the same image within noise (the
+// regression tests' mean and block z-tests against the unscaled render). Ray offsets that do not scale
+// with the scene show here as acne, light leaks or lost contact shadows.
+TEST(Integrator, AScaledSceneRendersTheSameImage) {
+  const std::filesystem::path scenePath = std::filesystem::path(GLOSSY_SOURCE_DIR) / "scenes/preview.gltf";
+  const SceneDescription original = loadGltf(scenePath);
+  const Environment sky = Environment::makeDefault();
+  auto scaled = [&](double s, Camera& camera) {
+    SceneDescription d = original;
+    d.materials.push_back(material("lamp", Rgb(6.0)));
+    d.meshes.push_back(quad({-0.6f, 1.6f, -0.6f}, {1.2f, 0, 0}, {0, 0, 1.2f}, int(d.materials.size()) - 1));
+    for (Mesh& m : d.meshes)
+      for (glm::vec3& p : m.positions) p = glm::vec3(glm::dvec3(p) * s);
+    camera = d.cameras.front();
+    camera.cameraToWorld[3] = glm::dvec4(glm::dvec3(camera.cameraToWorld[3]) * s, 1.0);
+    return d;
+  };
+  const auto brdfs = [](const SceneDescription& d) {
+    std::vector<Brdf> b(d.materials.size(), Brdf(CookTorrance{Rgb(0.1, 0.08, 0.05), Rgb(0.8, 0.6, 0.4), 0.12, 1.6}));
+    b.back() = Lambertian{Rgb(0.0)};
+    return b;
+  };
+  Camera camera;
+  const SceneDescription unit = scaled(1.0, camera);
+  const int size = 48, referenceSpp = 256, halfSpp = 64;
+  const RgbImage reference = renderScene(unit, brdfs(unit), &sky, camera, quiet(size, size, referenceSpp, 7));
+  const std::vector<char> mask(size_t(size) * size, 1);
+  for (double s : {1e-3, 1e3}) {
+    const SceneDescription d = scaled(s, camera);
+    const RgbImage a = renderScene(d, brdfs(d), &sky, camera, quiet(size, size, halfSpp, 11));
+    const RgbImage b = renderScene(d, brdfs(d), &sky, camera, quiet(size, size, halfSpp, 12));
+    const ImageComparison result = compareWithReference(a, b, halfSpp, reference, referenceSpp, mask, 1e-3);
+    EXPECT_TRUE(result.passed) << "scale " << s << ": " << result.message;
+    RecordProperty("relativeBias" + std::to_string(int(std::log10(s))), std::to_string(result.relativeBias));
+  }
+}
+
+// A lamp 1e-5 above a floor, facing it, at scale 1: a ray slipping under its edge finds the floor lit by
+// nearly the whole hemisphere of it (Lambert's formula for the rectangle). Offsets larger than the gap
+// would start the light's shadow rays and the floor's BSDF rays above the lamp.
+TEST(Integrator, ALightJustAboveASurfaceStillLightsIt) {
+  const float gap = 1e-5f;
+  SceneDescription description;
+  description.materials = {material("floor"), material("lamp", Rgb(2.0))};
+  description.meshes.push_back(quad({-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, 0));
+  description.meshes.push_back(quad({0, gap, -1}, {1, 0, 0}, {0, 0, 2}, 1));  // x in [0, 1], facing down
+  const std::vector<Brdf> brdfs = {Lambertian{Rgb(0.5)}, Lambertian{Rgb(0.0)}};
+  // An orthographic pixel far smaller than the gap, its ray passing under the lamp's edge at x = 0 to
+  // reach the floor at x = 5e-4.
+  const glm::dvec3 eye(-1e-3, 0.5 * gap, 0.0), floorPoint(5e-4, 0.0, 0.0);
+  const Camera camera = orthographicDown(1e-9, eye, floorPoint, {0, 1, 0});
+  RenderSettings settings = quiet(1, 1, 1 << 14);
+  settings.maxDepth = 2;
+  const RgbImage img = renderScene(description, brdfs, nullptr, camera, settings);
+  const Vec3 corners[4] = {{0, gap, -1}, {1, gap, -1}, {1, gap, 1}, {0, gap, 1}};
+  double omega = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3 a = glm::normalize(corners[i] - floorPoint), b = glm::normalize(corners[(i + 1) % 4] - floorPoint);
+    omega += std::acos(glm::dot(a, b)) * glm::normalize(glm::cross(a, b)).y;
+  }
+  omega = 0.5 * std::abs(omega);
+  const double want = 2.0 * omega * 0.5 / kPi;
+  ASSERT_GT(omega, 0.99 * kPi);
+  EXPECT_NEAR(img.at(0, 0)[0], want, 0.01 * want);
+}
+
+}  // namespace glossy::test
