@@ -234,66 +234,46 @@ Environment::Sample Environment::sample(Vec2 u) const {
 static_assert(Environment::kMaxBatch <= BlockedDistribution2D::kMaxBatch, "a batch of samples is one distribution batch");
 
 void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) const {
-  SampleBatch batch;
-  beginSample(want, u, n, batch);
-  endSample(batch, out);
-}
-
-void Environment::beginSample(const bool* want, const Vec2* u, int n, SampleBatch& batch) const {
-  const Impl& env = *impl_;
-  batch.start(want, u, n);
-  if (env.isConstant) return;
-  BlockedDistribution2D::Sample cells[kMaxBatch];
-  env.distribution.sample(want, u, cells, n);  // the map holds the densities
-  // The wanted lanes, packed, for the grid's batch conversion.
-  for (int i = 0; i < n; ++i) {
-    if (!want[i]) continue;
-    batch.at[batch.count] = cellPosition(cells[i], env.map.width(), env.map.height());
-    batch.lane[batch.count++] = i;
-  }
-  env.map.prefetch(batch.at, batch.count);
-}
-
-void Environment::endSample(const SampleBatch& batch, Sample* out) const {
   const Impl& env = *impl_;
   if (env.isConstant) {
-    for (int i = 0; i < batch.n; ++i)
-      if (batch.want[i]) out[i] = sample(batch.input[i]);
+    for (int i = 0; i < n; ++i)
+      if (want[i]) out[i] = sample(u[i]);
     return;
   }
+  BlockedDistribution2D::Sample cells[kMaxBatch];
+  env.distribution.sample(want, u, cells, n);  // the map holds the densities
+  // The wanted lanes, packed.
+  int lane[kMaxBatch], count = 0;
+  LatLongPosition at[kMaxBatch];
+  for (int i = 0; i < n; ++i) {
+    if (!want[i]) continue;
+    at[count] = cellPosition(cells[i], env.map.width(), env.map.height());
+    lane[count++] = i;
+  }
+  env.map.prefetch(at, count);
   Vec3 dirs[kMaxBatch];
   double sinTheta[kMaxBatch];
-  env.grid.directions(batch.at, dirs, sinTheta, batch.count);
-  for (int k = 0; k < batch.count; ++k) out[batch.lane[k]] = env.sampleAt(batch.at[k], dirs[k], sinTheta[k]);
+  env.grid.directions(at, dirs, sinTheta, count);
+  for (int k = 0; k < count; ++k) out[lane[k]] = env.sampleAt(at[k], dirs[k], sinTheta[k]);
 }
 
 void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const {
-  RadianceBatch batch;
-  beginRadianceAndPdf(want, dirs, n, batch);
-  endRadianceAndPdf(batch, radiance, pdf);
-}
-
-void Environment::beginRadianceAndPdf(const bool* want, const Vec3* dirs, int n, RadianceBatch& batch) const {
-  const Impl& env = *impl_;
-  batch.start(want, dirs, n);
-  if (env.isConstant) return;
-  for (int i = 0; i < n; ++i)
-    if (want[i]) batch.lane[batch.count++] = i;
-  env.grid.positions(dirs, batch.lane, batch.count, batch.at);
-  env.map.prefetch(batch.at, batch.count);
-}
-
-void Environment::endRadianceAndPdf(const RadianceBatch& batch, Rgb* radiance, double* pdf) const {
   const Impl& env = *impl_;
   if (env.isConstant) {
-    for (int i = 0; i < batch.n; ++i)
-      if (batch.want[i]) radiance[i] = radianceAndPdf(batch.input[i], pdf[i]);
+    for (int i = 0; i < n; ++i)
+      if (want[i]) radiance[i] = radianceAndPdf(dirs[i], pdf[i]);
     return;
   }
-  for (int k = 0; k < batch.count; ++k) {
-    const int i = batch.lane[k];
-    pdf[i] = env.pdfAt(batch.input[i], batch.at[k]);
-    radiance[i] = env.map.interpolate(batch.at[k]);
+  int lane[kMaxBatch], count = 0;
+  for (int i = 0; i < n; ++i)
+    if (want[i]) lane[count++] = i;
+  LatLongPosition at[kMaxBatch];
+  env.grid.positions(dirs, lane, count, at);
+  env.map.prefetch(at, count);
+  for (int k = 0; k < count; ++k) {
+    const int i = lane[k];
+    pdf[i] = env.pdfAt(dirs[i], at[k]);
+    radiance[i] = env.map.interpolate(at[k]);
   }
 }
 

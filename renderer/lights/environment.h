@@ -36,36 +36,11 @@ class Environment {
   // Both at once, from one direction-to-map conversion (the path tracer's escaping rays need both).
   Rgb radianceAndPdf(const Vec3& dir, double& pdf) const;
   // Batch forms for the path tracer's waves: for the lanes with want[i] (i < n ≤ kMaxBatch), exactly
-  // what sample(u[i]) and radianceAndPdf(dirs[i], pdf[i]) return. The lanes' map and table reads are
-  // issued step by step for all of them, so that their cache misses overlap instead of queueing.
+  // what sample(u[i]) and radianceAndPdf(dirs[i], pdf[i]) return. The lanes' map lines are prefetched
+  // together before any is read, so that their cache misses overlap instead of queueing.
   static constexpr int kMaxBatch = 128;
   void sample(const bool* want, const Vec2* u, Sample* out, int n) const;
   void radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const;
-  // A batch between its two halves: the lanes' inputs (u or directions) and, for a map, the cells of the
-  // wanted lanes, packed.
-  template <class Input>
-  struct LookupBatch {
-    const bool* want = nullptr;
-    const Input* input = nullptr;
-    int n = 0, count = 0;
-    int lane[kMaxBatch];
-    LatLongPosition at[kMaxBatch];
-    void start(const bool* w, const Input* in, int lanes) {
-      want = w;
-      input = in;
-      n = lanes;
-      count = 0;
-    }
-  };
-  using SampleBatch = LookupBatch<Vec2>;
-  using RadianceBatch = LookupBatch<Vec3>;
-  // The batch forms in two halves, for a caller with other work to do while the map's lines arrive from
-  // memory (a lookup mostly misses the cache): begin finds the lanes' cells and prefetches them, end reads
-  // them and writes what the one-call form does. want, u and dirs must stay as they are until end.
-  void beginSample(const bool* want, const Vec2* u, int n, SampleBatch& batch) const;
-  void endSample(const SampleBatch& batch, Sample* out) const;
-  void beginRadianceAndPdf(const bool* want, const Vec3* dirs, int n, RadianceBatch& batch) const;
-  void endRadianceAndPdf(const RadianceBatch& batch, Rgb* radiance, double* pdf) const;
   double meanLuminance() const;  // over the sphere of directions
   const std::string& description() const;  // for image metadata: file name, "constant r,g,b", "default sky"
 
