@@ -367,10 +367,9 @@ TEST(Environment, GridAgreesWithTheFormulas) {
   }
 }
 
-// Both of LatLongMap's layouts against the bilinear formula on the image itself: the same value (bit for
-// bit between the layouts: the same corners in the same order), the cell's own value, across the seam and
-// on the last row of cells; and the size rule that picks the layout.
-TEST(Environment, MapLayoutsLookUpTheSameValues) {
+// LatLongMap against the bilinear formula on the image itself, and the cell's own value, across the seam
+// and on the last row of cells.
+TEST(Environment, MapLooksUpTheBilinearValueAndTheCellsValue) {
   const int w = 37, h = 11;
   std::mt19937_64 rng(29);
   std::uniform_real_distribution<float> texel(0.0f, 4.0f);
@@ -378,11 +377,7 @@ TEST(Environment, MapLayoutsLookUpTheSameValues) {
   for (float& x : image.rgb) x = texel(rng);
   std::vector<float> values(std::size_t(w) * (h - 1));
   for (float& x : values) x = texel(rng);
-  const LatLongMap cells(image, values, LatLongMap::Layout::Cells), texels(image, values, LatLongMap::Layout::Texels);
-  ASSERT_EQ(cells.layout(), LatLongMap::Layout::Cells);
-  ASSERT_EQ(texels.layout(), LatLongMap::Layout::Texels);
-  EXPECT_EQ(LatLongMap(image, values).layout(), LatLongMap::Layout::Cells);
-
+  const LatLongMap map(image, values);
   std::uniform_real_distribution<double> uniform;
   for (int row = 0; row + 1 < h; ++row)
     for (int column = 0; column < w; ++column)
@@ -391,19 +386,10 @@ TEST(Environment, MapLayoutsLookUpTheSameValues) {
         const LatLongPosition p{column, next, row, k == 0 ? 0.0 : uniform(rng), k == 1 ? 1.0 : uniform(rng)};
         const Rgb expected = (image.texel(column, row) * (1 - p.fx) + image.texel(next, row) * p.fx) * (1 - p.fy) +
                              (image.texel(column, row + 1) * (1 - p.fx) + image.texel(next, row + 1) * p.fx) * p.fy;
-        const Rgb a = cells.interpolate(p), b = texels.interpolate(p);
         const std::string where = "cell " + std::to_string(column) + ", " + std::to_string(row);
-        expectRgbNear(a, expected, 1e-12, where);
-        ASSERT_EQ(a.r, b.r) << where;
-        ASSERT_EQ(a.g, b.g) << where;
-        ASSERT_EQ(a.b, b.b) << where;
-        ASSERT_EQ(cells.cellValue(p), values[std::size_t(row) * w + column]) << where;
-        ASSERT_EQ(texels.cellValue(p), values[std::size_t(row) * w + column]) << where;
+        expectRgbNear(map.interpolate(p), expected, 1e-12, where);
+        ASSERT_EQ(map.cellValue(p), values[std::size_t(row) * w + column]) << where;
       }
-
-  // The size rule: cells up to kMaxCellBytes, texels beyond (judged from the size alone, no pixels needed).
-  EXPECT_LE(LatLongMap::cellBytes(LatLongImage{4096, 2048, {}}), LatLongMap::kMaxCellBytes);
-  EXPECT_GT(LatLongMap::cellBytes(LatLongImage{8192, 4096, {}}), LatLongMap::kMaxCellBytes);
 }
 
 TEST(Environment, ReadsRgbaAndIgnoresAlpha) {

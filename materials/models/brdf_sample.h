@@ -129,7 +129,7 @@ template <class Model>
 void sampleMixtureBatch(const Model& model, const Vec3* V, const double* uLobe, const Vec2* u, BrdfSample* out,
                         int n) {
   const double p = model.specularProbability();
-  bool lobe[kMaxBatchLanes], ok[kMaxBatchLanes];
+  bool lobe[kMaxBatchLanes] = {}, ok[kMaxBatchLanes];
   double oneMinusCos[kMaxBatchLanes], r[kMaxBatchLanes], phi[kMaxBatchLanes], s[kMaxBatchLanes], c[kMaxBatchLanes];
   for (int k = 0; k < n; ++k) lobe[k] = uLobe[k] < p;
   model.lobeOneMinusCosBatch(u, lobe, oneMinusCos, n);

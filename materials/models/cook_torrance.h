@@ -76,22 +76,23 @@ struct CookTorrance {
     const HalfVector h(L, V);
     return lobePdf(h, std::exp(-h.tan2Theta / (m * m)));
   }
-  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
+  // sample and evalPdf are their batch forms' one lane, so that a path gets the same bits from the path
+  // tracer's waves as from its reference.
+  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const {
+    BrdfSample s;
+    sampleMixtureBatch(*this, &V, &uLobe, &u, &s, 1);
+    return s;
+  }
   // The batch forms (brdf_sample.h): sampleLobe's θ_h, and evalPdf for many lanes, with their log1p and
   // exp computed for all lanes at once; cook_torrance.cpp, whose loops the compiler vectorises.
   void lobeOneMinusCosBatch(const Vec2* u, const bool* lobe, double* oneMinusCos, int n) const;
   void evalPdfBatch(const Vec3* L, const Vec3* V, BrdfValue* out, int n) const;
   double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
 
-  // eval and pdf with one half vector and one exponential between them; the same values as each alone.
   BrdfValue evalPdf(const Vec3& L, const Vec3& V) const {
-    if (L.z <= 0.0 || V.z <= 0.0) return {};
-    const LobeGeometry g(L, V);
-    const double m2 = m * m;
-    const double beckmann = std::exp(-g.h.tan2Theta / m2);
-    const double specular = lobe(g, m2, beckmann, eta);
-    const double p = specularProbability();
-    return {kd * kInvPi + ks * specular, mixtureDensity(p, p > 0.0 ? lobePdf(g.h, beckmann) : 0.0, L)};
+    BrdfValue v;
+    evalPdfBatch(&L, &V, &v, 1);
+    return v;
   }
 };
 

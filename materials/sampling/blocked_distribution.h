@@ -18,7 +18,6 @@
 
 #include "materials/core/types.h"
 #include "materials/sampling/distribution.h"
-#include "materials/sampling/huge_pages.h"
 #include "materials/sampling/unit_interval.h"
 
 #include <algorithm>
@@ -89,7 +88,7 @@ class BlockedDistribution2D {
   std::size_t width_ = 0, blocksPerRow_ = 0;
   std::vector<std::size_t> levelStart_;  // per level, top first: its first block in a row's blocks
   Distribution1D marginal_;              // over rows, weighted by each row's sum
-  HugePageVector<Block> blocks_;         // row y's tree at [y·blocksPerRow_, (y + 1)·blocksPerRow_)
+  std::vector<Block> blocks_;         // row y's tree at [y·blocksPerRow_, (y + 1)·blocksPerRow_)
 };
 
 }  // namespace glossy

@@ -11,7 +11,6 @@
 #pragma once
 
 #include "materials/core/types.h"
-#include "materials/sampling/huge_pages.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -83,10 +82,9 @@ class Distribution2D {
  private:
   std::size_t width_ = 0;
   Distribution1D marginal_;       // over rows, weighted by each row's integral
-  // Read at random, hence huge pages (huge_pages.h).
-  HugePageVector<double> cdf_;      // row y's CDF at [y·(width + 1), (y + 1)·(width + 1))
-  HugePageVector<uint32_t> guide_;  // row y's guide table at [y·width, (y + 1)·width)
-  HugePageVector<double> density_;  // p(cell) = marginal density × conditional density, row-major
+  std::vector<double> cdf_;      // row y's CDF at [y·(width + 1), (y + 1)·(width + 1))
+  std::vector<uint32_t> guide_;  // row y's guide table at [y·width, (y + 1)·width)
+  std::vector<double> density_;  // p(cell) = marginal density × conditional density, row-major
 };
 
 }  // namespace glossy

@@ -35,7 +35,7 @@ Rgb tracePath(const PathContext& context, Ray ray, CmjSampler& sampler) {
     }
     ShadingPoint sp;
     if (depth >= context.settings.maxDepth || !shade(scene, ray, hit, sp)) return radiance;
-    const VertexDraws u = drawVertex(sampler);
+    const VertexDraws u = drawVertex(sampler, DrawsUsed(context, depth));
 
     // A light sample, traced to the light unless the BRDF sends nothing toward it.
     if (const ChosenLight chosen = lights.choose(u.lightChoice)) {

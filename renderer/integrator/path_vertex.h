@@ -23,8 +23,10 @@ struct PathContext {
 };
 
 // The sampler dimensions of a path: the camera's film position (one 2D draw), then at every vertex that
-// reflects, all five of these in this order, whether or not the vertex uses them. So the k-th vertex
-// always reads the same dimensions, and each stays stratified across the pixel's samples.
+// reflects, these five in this order. Vertex k always owns the same five dimensions, so each stays
+// stratified across the pixel's samples. A dimension the vertex cannot use (the light choice when one
+// light has all the power, roulette before rouletteDepth) is skipped, not computed: a value depends only on
+// its dimension's index, so skipping gives every other dimension what drawing would.
 struct VertexDraws {
   double lightChoice = 0.0;  // which light (LightSet::choose)
   Vec2 light{0.0};           // where on it (Light::sample)
@@ -33,13 +35,20 @@ struct VertexDraws {
   double roulette = 0.0;     // whether the path survives Russian roulette
 };
 
-inline VertexDraws drawVertex(CmjSampler& sampler) {
+// Which of the skippable draws a vertex at this depth uses.
+struct DrawsUsed {
+  bool lightChoice, roulette;
+  DrawsUsed(const PathContext& context, int depth)
+      : lightChoice(context.lights.hasChoice()), roulette(depth >= context.settings.rouletteDepth) {}
+};
+
+inline VertexDraws drawVertex(CmjSampler& sampler, DrawsUsed used) {
   VertexDraws d;
-  d.lightChoice = sampler.get1D();
+  if (used.lightChoice) d.lightChoice = sampler.get1D(); else sampler.skip(1);
   d.light = sampler.get2D();
   d.lobe = sampler.get1D();
   d.bsdf = sampler.get2D();
-  d.roulette = sampler.get1D();
+  if (used.roulette) d.roulette = sampler.get1D(); else sampler.skip(1);
   return d;
 }
 
@@ -48,17 +57,20 @@ constexpr int kWaveSize = 128;
 
 // drawVertex for samplers[lanes[k]], k < n, into out[lanes[k]] (lanes < kWaveSize): the batch draws
 // (cmj_sampler.h), the same values in the same order.
-inline void drawVertices(CmjSampler* samplers, const int* lanes, int n, VertexDraws* out) {
+inline void drawVertices(CmjSampler* samplers, const int* lanes, int n, DrawsUsed used, VertexDraws* out) {
   double choice[kWaveSize], lobe[kWaveSize], roulette[kWaveSize];
   Vec2 light[kWaveSize], bsdf[kWaveSize];
-  CmjSampler::get1D(samplers, lanes, n, choice);
+  const auto skip = [&] {
+    for (int k = 0; k < n; ++k) samplers[lanes[k]].skip(1);
+  };
+  if (used.lightChoice) CmjSampler::get1D(samplers, lanes, n, choice); else skip();
   CmjSampler::get2D(samplers, lanes, n, light);
   CmjSampler::get1D(samplers, lanes, n, lobe);
   CmjSampler::get2D(samplers, lanes, n, bsdf);
-  CmjSampler::get1D(samplers, lanes, n, roulette);
+  if (used.roulette) CmjSampler::get1D(samplers, lanes, n, roulette); else skip();
   for (int k = 0; k < n; ++k) {
     const int i = lanes[k];
-    out[i] = {choice[i], light[i], lobe[i], bsdf[i], roulette[i]};
+    out[i] = {used.lightChoice ? choice[i] : 0.0, light[i], lobe[i], bsdf[i], used.roulette ? roulette[i] : 0.0};
   }
 }
 

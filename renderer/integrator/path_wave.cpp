@@ -81,7 +81,7 @@ void WaveTracer::trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* 
         radiance[i] += path_[i].throughput * weightedEmission(path_[i], arriving_[i], distant.probability * pdf_[i]);
       }
     }
-    drawVertices(samplers, shading.lane, shading.n, draws_);
+    drawVertices(samplers, shading.lane, shading.n, DrawsUsed(context_, depth), draws_);
 
     // The light samples, a batch per light.
     Lanes sampled;

@@ -243,7 +243,7 @@ void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) co
   BlockedDistribution2D::Sample cells[kMaxBatch];
   env.distribution.sample(want, u, cells, n);  // the map holds the densities
   // The wanted lanes, packed.
-  int lane[kMaxBatch], count = 0;
+  int lane[kMaxBatch] = {}, count = 0;
   LatLongPosition at[kMaxBatch];
   for (int i = 0; i < n; ++i) {
     if (!want[i]) continue;
@@ -264,7 +264,7 @@ void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radian
       if (want[i]) radiance[i] = radianceAndPdf(dirs[i], pdf[i]);
     return;
   }
-  int lane[kMaxBatch], count = 0;
+  int lane[kMaxBatch] = {}, count = 0;
   for (int i = 0; i < n; ++i)
     if (want[i]) lane[count++] = i;
   LatLongPosition at[kMaxBatch];

@@ -5,7 +5,6 @@
 #pragma once
 
 #include "materials/core/types.h"
-#include "materials/sampling/huge_pages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -71,50 +70,23 @@ inline LatLongPosition latLongPosition(Vec2 uv, int width, int height) {
 
 // A LatLongImage's texels for the environment light's random lookups, and their bilinear interpolation at
 // a lookup position, with a float per cell (bilinear patch) that the caller gives: the light's sampling
-// density, which a lookup then reads from the lines it loads anyway. Two layouts, the same values:
-// - Cells: each patch's four corners (RGB) and its value in one 64-byte line, so a lookup reads exactly one
-//   line, at 4× the memory of the map (each texel is a corner of four patches). These lookups miss the
-//   cache (light samples land all over the map), and the misses are what they cost: the speed benchmark
-//   renders in about 0.91× the time it takes with the texel layout (docs/performance.md, seventh session).
-// - Texels: 16 bytes a texel, its RGB beside the value of the patch of which it is the top-left corner. A
-//   lookup's two texels of a row share a line three times in four, so it reads 2.5 lines on average.
-// Maps whose cells would take more than kMaxCellBytes (512 MiB: up to 4096 × 2048) get cells, larger ones
-// texels. Both in huge pages (huge_pages.h).
+// density, which a lookup then reads from the lines it loads anyway. 16 bytes a texel, its RGB beside the
+// value of the patch of which it is the top-left corner; a lookup's two texels of a row share a line
+// three times in four.
 class LatLongMap {
  public:
-  enum class Layout { Cells, Texels };
-  static constexpr std::size_t kMaxCellBytes = std::size_t(512) << 20;
-
   LatLongMap() = default;
   // cellValues: W × (H − 1), row-major (cell (i, j) is the patch between texels (i, j) and (i + 1, j + 1)).
   LatLongMap(const LatLongImage& image, const std::vector<float>& cellValues)
-      : LatLongMap(image, cellValues, cellBytes(image) <= kMaxCellBytes ? Layout::Cells : Layout::Texels) {}
-  LatLongMap(const LatLongImage& image, const std::vector<float>& cellValues, Layout layout)
-      : width_(image.width), height_(image.height), layout_(layout) {
-    const std::size_t w = std::size_t(width_), cellCount = w * std::size_t(height_ - 1);
-    const auto value = [&](std::size_t cell) { return cell < cellValues.size() ? cellValues[cell] : 0.0f; };
-    if (layout == Layout::Cells) {
-      cells_.resize(cellCount);
-      for (std::size_t cell = 0; cell < cellCount; ++cell) {
-        const std::size_t row = cell / w, column = cell % w, next = column + 1 == w ? 0 : column + 1;
-        const std::size_t corners[4] = {row * w + column, row * w + next, (row + 1) * w + column, (row + 1) * w + next};
-        for (int k = 0; k < 4; ++k)
-          for (int c = 0; c < 3; ++c) cells_[cell].rgb[3 * k + c] = image.rgb[corners[k] * 3 + std::size_t(c)];
-        cells_[cell].value = value(cell);
-      }
-    } else {
-      texels_.assign(w * std::size_t(height_) * 4, 0.0f);
-      for (std::size_t t = 0; t < w * std::size_t(height_); ++t) {
-        for (int c = 0; c < 3; ++c) texels_[4 * t + std::size_t(c)] = image.rgb[3 * t + std::size_t(c)];
-        texels_[4 * t + 3] = value(t);
-      }
+      : width_(image.width), height_(image.height) {
+    const std::size_t texels = std::size_t(width_) * std::size_t(height_);
+    texels_.assign(texels * 4, 0.0f);
+    for (std::size_t t = 0; t < texels; ++t) {
+      for (int c = 0; c < 3; ++c) texels_[4 * t + std::size_t(c)] = image.rgb[3 * t + std::size_t(c)];
+      texels_[4 * t + 3] = t < cellValues.size() ? cellValues[t] : 0.0f;
     }
   }
 
-  static std::size_t cellBytes(const LatLongImage& image) {
-    return std::size_t(image.width) * std::size_t(image.height - 1) * sizeof(Cell);
-  }
-  Layout layout() const { return layout_; }
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -127,47 +99,24 @@ class LatLongMap {
     return top * (1.0 - p.fy) + bottom * p.fy;
   }
   // The value given for the cell the lookup falls in.
-  float cellValue(const LatLongPosition& p) const {
-    return layout_ == Layout::Cells ? cell(p).value : texel(p.c0, p.r0)[3];
-  }
-  // The lines interpolate(at[k]) and cellValue(at[k]) will read, k < n: one cell, or four texels (a row's
-  // two may straddle a line, and wrap). Always inlined: GCC 12 finds a function of nothing but prefetches
-  // free of side effects and deletes calls to it before inlining, so a call would prefetch nothing.
+  float cellValue(const LatLongPosition& p) const { return texel(p.c0, p.r0)[3]; }
+  // The lines interpolate(at[k]) and cellValue(at[k]) will read, k < n. Always inlined: GCC 12 finds a
+  // function of nothing but prefetches free of side effects and deletes calls to it before inlining, so a
+  // call would prefetch nothing.
   [[gnu::always_inline]] void prefetch(const LatLongPosition* at, int n) const {
-    if (layout_ == Layout::Cells) {
-      for (int k = 0; k < n; ++k) __builtin_prefetch(&cell(at[k]));
-      return;
-    }
     for (int k = 0; k < n; ++k) {
       const float* corner[4];
-      texelCorners(at[k], corner);
+      corners(at[k], corner);
       for (const float* c : corner) __builtin_prefetch(c);
     }
   }
 
  private:
-  struct alignas(64) Cell {
-    float rgb[12];  // corners (c0, r0), (c1, r0), (c0, r0 + 1), (c1, r0 + 1)
-    float value;
-  };
-  static_assert(sizeof(Cell) == 64, "a cell is one cache line");
-
-  const Cell& cell(const LatLongPosition& p) const {
-    return cells_[std::size_t(p.r0) * std::size_t(width_) + std::size_t(p.c0)];
-  }
   const float* texel(int column, int row) const {
     return &texels_[(std::size_t(row) * std::size_t(width_) + std::size_t(column)) * 4];
   }
-  // The RGB of the lookup's corners, in the order of Cell::rgb.
+  // The corners (c0, r0), (c1, r0), (c0, r0 + 1), (c1, r0 + 1).
   void corners(const LatLongPosition& p, const float* (&out)[4]) const {
-    if (layout_ == Layout::Cells) {
-      const float* rgb = cell(p).rgb;
-      for (int k = 0; k < 4; ++k) out[k] = rgb + 3 * k;
-    } else {
-      texelCorners(p, out);
-    }
-  }
-  void texelCorners(const LatLongPosition& p, const float* (&out)[4]) const {
     out[0] = texel(p.c0, p.r0);
     out[1] = texel(p.c1, p.r0);
     out[2] = texel(p.c0, p.r0 + 1);
@@ -175,9 +124,7 @@ class LatLongMap {
   }
 
   int width_ = 0, height_ = 0;
-  Layout layout_ = Layout::Cells;
-  HugePageVector<Cell> cells_;    // Layout::Cells
-  HugePageVector<float> texels_;  // Layout::Texels: r, g, b, cell value; 16-byte aligned
+  std::vector<float> texels_;  // r, g, b, cell value
 };
 
 // Directions and lookup positions on a W × H lat-long map turned by uOffset (looked up at

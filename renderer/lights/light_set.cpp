@@ -22,24 +22,27 @@ LightSet::LightSet(const LightSources& sources) {
     }
     const double power = f.light->power();
     powers.push_back(std::isfinite(power) && power > 0.0 ? power : 0.0);
-    anyPower_ = anyPower_ || powers.back() > 0.0;
+    lightsWithPower_ += powers.back() > 0.0;
+    anyPower_ = lightsWithPower_ > 0;
     lights_.push_back(std::move(f.light));
   }
   if (lights_.empty()) return;
   power_ = Distribution1D(powers);
-  for (size_t i = 0; i < lights_.size(); ++i)
-    if (lights_[i]->distant()) distant_.push_back(chosen(i));
+  for (size_t i = 0; i < lights_.size(); ++i) {
+    chosen_.push_back({lights_[i].get(), anyPower_ ? power_.discreteProbability(i) : 0.0});
+    if (lights_[i]->distant()) distant_.push_back(chosen_.back());
+  }
 }
 
 ChosenLight LightSet::choose(double u) const {
   if (!anyPower_) return {};
-  return chosen(power_.sampleDiscrete(u));
+  return chosen_[power_.sampleDiscrete(u)];
 }
 
 ChosenLight LightSet::at(const Hit& hit) const {
   const std::vector<int>& triangles = surface_[hit.mesh];
   if (hit.triangle >= triangles.size() || triangles[hit.triangle] < 0) return {};
-  return chosen(size_t(triangles[hit.triangle]));
+  return chosen_[size_t(triangles[hit.triangle])];
 }
 
 }  // namespace glossy

@@ -24,6 +24,8 @@ class LightSet {
   explicit LightSet(const LightSources& sources);
 
   bool empty() const { return lights_.empty(); }
+  // Whether choose(u) depends on u: more than one light has power.
+  bool hasChoice() const { return lightsWithPower_ > 1; }
   // A light drawn by power with u in [0, 1); none if the scene has no light with power.
   ChosenLight choose(double u) const;
   // The surface light covering a hit's triangle, with its probability of being chosen; none if the
@@ -33,13 +35,11 @@ class LightSet {
   std::span<const ChosenLight> distant() const { return distant_; }
 
  private:
-  ChosenLight chosen(size_t index) const {
-    return {lights_[index].get(), anyPower_ ? power_.discreteProbability(index) : 0.0};
-  }
-
   std::vector<std::unique_ptr<Light>> lights_;
+  std::vector<ChosenLight> chosen_;  // each light with its probability
   Distribution1D power_;
   bool anyPower_ = false;
+  int lightsWithPower_ = 0;
   std::vector<ChosenLight> distant_;
   std::vector<std::vector<int>> surface_;  // [mesh][triangle]: index into lights_, or −1
 };

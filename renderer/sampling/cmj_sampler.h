@@ -205,6 +205,10 @@ class CmjSampler {
   static void get2D(CmjSampler* samplers, const int* lanes, int n, Vec2* out);
   static void get1D(CmjSampler* samplers, const int* lanes, int n, double* out);
 
+  // Passes over dimensions without computing them: a value depends on its dimension's index alone, so the
+  // dimensions after them get what they would have had.
+  void skip(uint32_t dimensions) { dimension_ += dimensions; }
+
   // One point in each of the N intervals [k/N, (k+1)/N).
   double get1D() {
     using namespace cmj_detail;
