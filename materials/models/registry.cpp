@@ -10,10 +10,12 @@ template <class M>
 constexpr ModelInfo infoOf() {
   return {M::kName, M::kLabel, M::kParams, [](const ParamSet& p) -> Brdf { return M::fromParams(p); }};
 }
+template <class... M>
+constexpr std::array<ModelInfo, sizeof...(M)> infoOf(ModelList<M...>) {
+  return {infoOf<M>()...};
+}
 
-constexpr std::array kModels = {
-    infoOf<Microfacet>(), infoOf<Smooth>(), infoOf<AshikhminShirley>(), infoOf<CookTorrance>(), infoOf<Lambertian>(),
-};
+constexpr auto kModels = infoOf(BuiltinModels{});
 
 }  // namespace
 

@@ -1,6 +1,6 @@
 // The analytic models a parameter file may name, with their parameter declarations. Adding a model:
-// write its header (eval/sample/pdf + kName/kLabel/kParams/fromParams), add it to Brdf in brdf.h and to
-// the list in registry.cpp.
+// write its header (eval/sample/pdf + kName/kLabel/kParams/fromParams) and add it to BuiltinModels in
+// builtin_models.h.
 #pragma once
 
 #include "materials/models/brdf.h"
