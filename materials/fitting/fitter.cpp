@@ -284,7 +284,7 @@ FitReport fitWith(const MetricData& data, const FitSettings& settings) {
   return report;
 }
 
-// Fitting by name: the built-in models with a fittable lobe.
+// The built-in models the fitter can fit (a model registered at run time has no static type to fit).
 template <class M>
 bool fitIfNamed(std::string_view name, const MetricData& data, const FitSettings& s, FitReport& out) {
   if constexpr (Fittable<M>) {
@@ -319,16 +319,21 @@ std::vector<std::string_view> fittableModels() {
   return names;
 }
 
+std::string fittableModelNames() {
+  std::string names;
+  for (std::string_view n : fittableModels()) names.append(names.empty() ? "" : ", ").append(n);
+  return names;
+}
+
+void requireFittable(std::string_view model) {
+  if (!canFit(BuiltinModels{}, model))
+    throw InputError("--model: cannot fit '" + std::string(model) + "' (fittable: " + fittableModelNames() + ")");
+}
+
 FitReport fitModel(const MetricData& data, std::string_view model, const FitSettings& settings) {
+  requireFittable(model);
   FitReport report;
-  if (!dispatch(BuiltinModels{}, model, data, settings, report)) {
-    std::string known;
-    for (std::string_view n : fittableModels()) {
-      if (!known.empty()) known += ", ";
-      known += n;
-    }
-    throw InputError("--model: cannot fit '" + std::string(model) + "' (fittable: " + known + ")");
-  }
+  dispatch(BuiltinModels{}, model, data, settings, report);
   return report;
 }
 

@@ -28,7 +28,7 @@ std::string quoteList(std::span<const std::string_view> items) {
 }
 
 size_t modelRank(const std::string& model) {
-  auto models = analyticModels();
+  const auto& models = analyticModels();
   for (size_t i = 0; i < models.size(); ++i)
     if (models[i].name == model) return i;
   return models.size();

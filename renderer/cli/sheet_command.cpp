@@ -1,6 +1,7 @@
 // glossy sheet / glossy sheets: the supplement's comparison grid for one material, or for many
 // (shared/spec/interfaces.md; renderer/sheet/sheet.h has the layout and the error figures).
 #include "materials/core/input_error.h"
+#include "materials/models/registry.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
@@ -88,8 +89,7 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       {"glossy:scene", stage.scenePath},
       {"glossy:env", stage.environment->description()},
       {"glossy:smoothFresnel", std::string("projected")},
-      {"glossy:conventions", std::string("microfacet, cook-torrance: 1/pi in the specular denominator; Fresnel at <V,H>; "
-                                         "smooth: Fresnel at the projected cos theta_d unless smoothFresnel = vh")},
+      {"glossy:conventions", modelConventions()},
       {"glossy:pngExposure", float(o.exposure)},
       {"glossy:droppedSamples", int(std::min<uint64_t>(dropped, INT32_MAX))},
       {"glossy:renderSeconds", float(seconds)},
