@@ -80,7 +80,7 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
   return {
       {"glossy:material", m.path.string()},
       {"glossy:fit", std::string("sheet")},
-      {"glossy:measured", sheet.panels.front().note},
+      {"glossy:measured", sheet.measured()->note},
       {"glossy:spp", o.settings.secondsPerPanel > 0.0 ? std::string("progressive") : std::to_string(o.settings.spp)},
       {"glossy:secondsPerPanel", float(o.settings.secondsPerPanel)},
       o.settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(o.settings.seed)}
@@ -210,10 +210,11 @@ int runSheets(const SheetOptions& o) {
 
 Command addSheetCommand(CLI::App& parent) {
   auto o = std::make_shared<SheetOptions>();
+  std::string grid;
+  for (const SheetPanel& p : sheetPanels()) grid.append(grid.empty() ? "" : " | ").append(p.label);
   CLI::App* app = parent.add_subcommand(
-      "sheet",
-      "Render a material's comparison sheet: Measured | Microfacet E2 | Smooth E2 | AS E1 | AS E2 | CT E1 | CT E2, "
-      "into one layered EXR and a labelled PNG beside it, and print each model's error against the measured panel.");
+      "sheet", "Render a material's comparison sheet: " + grid +
+                   ", into one layered EXR and a labelled PNG beside it, and print each model's error against the measured panel.");
   app->add_option("--material", o->material, "Material parameter file (TOML)")->required();
   app->add_option("--measured", o->measured, "MERL .binary (or .binary.xz) for the measured panel; default: the file's own, "
                                              "looked up in --merl-dir or $GLOSSY_MERL_DIR");
