@@ -6,6 +6,7 @@
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
 #include "renderer/cli/scene_options.h"
+#include "renderer/scene/material_binding.h"
 #include "renderer/sheet/sheet.h"
 
 #include <algorithm>
@@ -76,7 +77,13 @@ std::shared_ptr<const MerlTable> findMeasured(const MaterialFile& m, const Sheet
 std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& stage, const SheetOptions& o, const Sheet& sheet,
                                           double seconds) {
   uint64_t dropped = 0;
-  for (const PanelRender& p : sheet.panels) dropped += p.droppedSamples;
+  std::string smoothFresnel;  // as the file's smooth fits say, like render's for its binding
+  for (const PanelRender& p : sheet.panels) {
+    dropped += p.droppedSamples;
+    const Fit* fit = p.empty || p.panel.fit.empty() ? nullptr : m.find(FitId::parse(p.panel.fit, m.path.string()));
+    const std::string f = fit ? smoothFresnelOf(*fit) : "";
+    if (!f.empty() && smoothFresnel.find(f) == std::string::npos) smoothFresnel.append(smoothFresnel.empty() ? "" : ", ").append(f);
+  }
   return {
       {"glossy:material", m.path.string()},
       {"glossy:fit", std::string("sheet")},
@@ -88,7 +95,7 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       {"glossy:maxDepth", o.settings.maxDepth},
       {"glossy:scene", stage.scenePath},
       {"glossy:env", stage.environment->description()},
-      {"glossy:smoothFresnel", std::string("projected")},
+      {"glossy:smoothFresnel", smoothFresnel.empty() ? std::string("projected") : smoothFresnel},
       {"glossy:conventions", modelConventions()},
       {"glossy:pngExposure", float(o.exposure)},
       {"glossy:droppedSamples", int(std::min<uint64_t>(dropped, INT32_MAX))},
