@@ -1,5 +1,7 @@
 #include "materials/models/registry.h"
 
+#include "materials/core/input_error.h"
+
 #include <stdexcept>
 
 namespace glossy {
@@ -36,6 +38,11 @@ const ModelInfo* findModel(std::string_view name) {
   for (const ModelInfo& m : models())
     if (m.name == name) return &m;
   return nullptr;
+}
+
+const ModelInfo& requireModel(std::string_view name, const std::string& context) {
+  if (const ModelInfo* m = findModel(name)) return *m;
+  throw InputError(context + ": unknown model '" + std::string(name) + "' (known: " + knownModelNames() + ")");
 }
 
 std::string knownModelNames() {

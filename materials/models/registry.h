@@ -20,7 +20,7 @@ struct ModelInfo {
   std::string_view name;        // as written in parameter files: "cook-torrance"
   std::string_view label;       // for people: "Cook-Torrance"
   std::string_view shortLabel;  // for a sheet panel's label: "CT"
-  std::string_view conventions; // how this implementation reads the published formula, for image metadata; may be empty
+  std::string_view conventions; // how the published formula is read, for image metadata; may be empty
   std::span<const ParamSpec> params;
   Brdf (*make)(const ParamSet&);
 };
@@ -42,6 +42,8 @@ void registerModel(const ModelInfo& model);
 // registered, in the order they were.
 const std::deque<ModelInfo>& analyticModels();
 const ModelInfo* findModel(std::string_view name);  // nullptr if unknown
+// The model, or InputError "<context>: unknown model 'name' (known: ...)".
+const ModelInfo& requireModel(std::string_view name, const std::string& context);
 std::string knownModelNames();                      // "microfacet, smooth, ..." for error messages
 // Every model's conventions, "model: ...; model: ...", as the images' glossy:conventions records them.
 std::string modelConventions();

@@ -19,13 +19,7 @@ struct ListOptions {
   std::string merlDir;
 };
 
-// The fits of the sheets' comparison grid, in its order.
-std::vector<SheetPanel> columns() {
-  std::vector<SheetPanel> fits;
-  for (const SheetPanel& p : sheetPanels())
-    if (!p.fit.empty()) fits.push_back(p);
-  return fits;
-}
+// A column per fit of the sheets' comparison grid.
 int width(const SheetPanel& column) { return std::max(9, int(column.label.size())); }
 
 std::vector<std::filesystem::path> collect(const std::vector<std::string>& paths) {
@@ -52,7 +46,8 @@ int runList(const ListOptions& o) {
   std::printf("Head-on directional albedo a(N) = ∫ρ(L,N) cos θ_L dω_L of each fit (mean of R, G, B);\n"
               "'measured' says whether the material's MERL table was found (--merl-dir, $GLOSSY_MERL_DIR).\n\n");
   std::printf("%-26s %-9s", "material", "measured");
-  for (const SheetPanel& c : columns()) std::printf(" %*s", width(c), c.label.c_str());
+  for (const SheetPanel& c : sheetPanels())
+    if (!c.fit.empty()) std::printf(" %*s", width(c), c.label.c_str());
   std::printf("\n");
   int bad = 0, fits = 0;
   for (const auto& file : files) {
@@ -65,7 +60,8 @@ int runList(const ListOptions& o) {
       continue;
     }
     std::printf("%-26s %-9s", m.name.c_str(), m.measured.empty() ? "-" : resolveMeasured(m, o.merlDir) ? "found" : "missing");
-    for (const SheetPanel& c : columns()) {
+    for (const SheetPanel& c : sheetPanels()) {
+      if (c.fit.empty()) continue;
       const Fit* f = m.find(FitId::parse(c.fit, c.label));
       if (!f) {
         std::printf(" %*s", width(c), "-");

@@ -103,15 +103,12 @@ SheetPanel SheetPanel::ofFit(const FitId& fit) {
 }
 
 std::span<const SheetPanel> sheetPanels() {
-  static const std::vector<SheetPanel> panels = {
-      SheetPanel::measured(),
-      SheetPanel::ofFit({"microfacet", "E2"}),
-      SheetPanel::ofFit({"smooth", "E2"}),
-      SheetPanel::ofFit({"ashikhmin-shirley", "E1"}),
-      SheetPanel::ofFit({"ashikhmin-shirley", "E2"}),
-      SheetPanel::ofFit({"cook-torrance", "E1"}),
-      SheetPanel::ofFit({"cook-torrance", "E2"}),
-  };
+  static const std::vector<SheetPanel> panels = [] {
+    std::vector<SheetPanel> grid = {SheetPanel::measured()};
+    for (const char* fit : {"microfacet:E2", "smooth:E2", "ashikhmin-shirley:E1", "ashikhmin-shirley:E2", "cook-torrance:E1", "cook-torrance:E2"})
+      grid.push_back(SheetPanel::ofFit(FitId::parse(fit, "the sheet grid")));
+    return grid;
+  }();
   return panels;
 }
 
