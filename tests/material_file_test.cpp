@@ -60,7 +60,8 @@ TEST(MaterialFile, GoodFileLoadsAndRoundTrips) {
   EXPECT_EQ(again.source, m.source);
   EXPECT_EQ(again.fits, m.fits);
   const Brdf smooth = makeBrdf(m.fits[0]);
-  EXPECT_TRUE(std::get<Smooth>(smooth).fresnelVH);
+  ASSERT_NE(smooth.as<Smooth>(), nullptr);
+  EXPECT_TRUE(smooth.as<Smooth>()->fresnelVH);
 }
 
 class BadMaterialFile : public ::testing::TestWithParam<BadCase> {};

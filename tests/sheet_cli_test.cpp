@@ -1,5 +1,6 @@
 // glossy sheet and glossy sheets through the command line: the layered EXR (grid + 7 panels) and the PNG,
-// the error table and metadata, labelled empty panels, --time, batch resuming and sharding, bad input.
+// the error table and metadata, labelled empty panels, the smooth fit's Fresnel angle, --time, batch
+// resuming and sharding, bad input.
 #include "renderer/image/exr_image.h"
 #include "tests/support/test_support.h"
 
@@ -115,10 +116,30 @@ eta = 1.5
   EXPECT_NE(attr("glossy:panel.microfacet_E2.note").find("no microfacet:E2 fit"), std::string::npos);
   EXPECT_EQ(attr("glossy:panel.cook_torrance_E2.empty"), "0");
   EXPECT_EQ(attr("glossy:errors"), "none: no measured panel");
+  EXPECT_EQ(attr("glossy:smoothFresnel"), "projected") << "the smooth fit's default";
   EXPECT_TRUE(attr("glossy:error.cook_torrance_E2.relativeRmse").empty());
   EXPECT_NE(r.out.find("no measured panel"), std::string::npos) << r.out;
   EXPECT_EQ(readImageLayer(tmp / "two.exr", "microfacet_E2").at(16 + 3, 3)[0], 0.0f);
   EXPECT_TRUE(std::filesystem::exists(tmp / "two.png"));
+}
+
+TEST(CliSheet, SmoothFresnelIsWhatTheFileSays) {
+  TempDir tmp;
+  writeText(tmp / "vh.toml", R"(name = "vh"
+
+[[fit]]
+model = "smooth"
+metric = "E2"
+kd = [0.1, 0.1, 0.1]
+a = [2.0, 2.0, 2.0]
+b = 100.0
+c = 1.5
+eta = 1.5
+fresnel = "vh"
+)");
+  const RunResult r = runGlossy(tiny({"sheet", "--material", (tmp / "vh.toml").string(), "-o", (tmp / "vh.exr").string()}));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readImageAttribute(tmp / "vh.exr", "glossy:smoothFresnel"), "vh");
 }
 
 TEST(CliSheet, TimeBudgetRendersProgressively) {

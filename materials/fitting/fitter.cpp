@@ -284,28 +284,23 @@ FitReport fitWith(const MetricData& data, const FitSettings& settings) {
   return report;
 }
 
-template <size_t I = 0>
-bool dispatch(std::string_view name, const MetricData& data, const FitSettings& s, FitReport& out) {
-  if constexpr (I < std::variant_size_v<Brdf>) {
-    using M = std::variant_alternative_t<I, Brdf>;
-    if constexpr (Fittable<M>) {
-      if (M::kName == name) {
-        out = fitWith<M>(data, s);
-        return true;
-      }
-    }
-    return dispatch<I + 1>(name, data, s, out);
+// The built-in models the fitter can fit (a model registered at run time has no static type to fit).
+template <class M>
+bool fitIfNamed(std::string_view name, const MetricData& data, const FitSettings& s, FitReport& out) {
+  if constexpr (Fittable<M>) {
+    if (M::kName != name) return false;
+    out = fitWith<M>(data, s);
+    return true;
   }
   return false;
 }
-
-template <size_t I = 0>
-void collect(std::vector<std::string_view>& names) {
-  if constexpr (I < std::variant_size_v<Brdf>) {
-    using M = std::variant_alternative_t<I, Brdf>;
-    if constexpr (Fittable<M>) names.push_back(M::kName);
-    collect<I + 1>(names);
-  }
+template <class... M>
+bool dispatch(ModelList<M...>, std::string_view name, const MetricData& data, const FitSettings& s, FitReport& out) {
+  return (fitIfNamed<M>(name, data, s, out) || ...);
+}
+template <class... M>
+bool canFit(ModelList<M...>, std::string_view name) {
+  return ((Fittable<M> && M::kName == name) || ...);
 }
 
 }  // namespace
@@ -319,24 +314,26 @@ std::string FitSettings::describe() const {
 
 std::vector<std::string_view> fittableModels() {
   std::vector<std::string_view> names;
-  collect(names);
-  // The comparison grid's order, as the registry lists the models.
-  std::vector<std::string_view> ordered;
   for (const ModelInfo& m : analyticModels())
-    if (std::find(names.begin(), names.end(), m.name) != names.end()) ordered.push_back(m.name);
-  return ordered;
+    if (canFit(BuiltinModels{}, m.name)) names.push_back(m.name);
+  return names;
+}
+
+std::string fittableModelNames() {
+  std::string names;
+  for (std::string_view n : fittableModels()) names.append(names.empty() ? "" : ", ").append(n);
+  return names;
+}
+
+void requireFittable(std::string_view model) {
+  if (!canFit(BuiltinModels{}, model))
+    throw InputError("--model: cannot fit '" + std::string(model) + "' (fittable: " + fittableModelNames() + ")");
 }
 
 FitReport fitModel(const MetricData& data, std::string_view model, const FitSettings& settings) {
+  requireFittable(model);
   FitReport report;
-  if (!dispatch(model, data, settings, report)) {
-    std::string known;
-    for (std::string_view n : fittableModels()) {
-      if (!known.empty()) known += ", ";
-      known += n;
-    }
-    throw InputError("--model: cannot fit '" + std::string(model) + "' (fittable: " + known + ")");
-  }
+  dispatch(BuiltinModels{}, model, data, settings, report);
   return report;
 }
 

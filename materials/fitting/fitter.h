@@ -32,8 +32,11 @@ struct FitReport {
   double seconds = 0.0;
 };
 
-// The models with a fittable lobe (kShape, kScaleKey, lobe()), in the comparison grid's order.
+// The registry's models with a fittable lobe (kShape, kScaleKey, lobe()), in its order; and as one string.
 std::vector<std::string_view> fittableModels();
+std::string fittableModelNames();
+// InputError naming the fittable models unless `model` is one.
+void requireFittable(std::string_view model);
 
 // Throws InputError for a model that cannot be fitted, and for data on which the fit fails.
 FitReport fitModel(const MetricData& data, std::string_view model, const FitSettings& settings = {});

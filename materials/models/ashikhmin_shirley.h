@@ -18,6 +18,8 @@ namespace glossy {
 struct AshikhminShirley {
   static constexpr std::string_view kName = "ashikhmin-shirley";
   static constexpr std::string_view kLabel = "Ashikhmin-Shirley";
+  static constexpr std::string_view kShortLabel = "AS";
+  static constexpr std::string_view kConventions = "Fresnel at <V,H>";
   static constexpr ParamSpec kParams[] = {
       params::kKd,
       params::kKs,

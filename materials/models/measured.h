@@ -11,19 +11,11 @@
 
 #include "materials/merl/merl_sampling.h"
 #include "materials/merl/merl_table.h"
-#include "materials/models/brdf_sample.h"
+#include "materials/models/brdf_model.h"
 
-#include <functional>
 #include <memory>
 
 namespace glossy {
-
-// A further proposal for the mixture: any sampler with its exact pdf (withProposal() in brdf.h makes one
-// from an analytic fit; type-erased because Brdf itself would make Measured recursive).
-struct MeasuredProposal {
-  std::function<BrdfSample(const Vec3& V, double uLobe, Vec2 u)> sample;
-  std::function<double(const Vec3& L, const Vec3& V)> pdf;
-};
 
 struct Measured {
   static constexpr std::string_view kName = "measured";
@@ -32,7 +24,7 @@ struct Measured {
 
   std::shared_ptr<const MerlTable> table;
   std::shared_ptr<const MerlSampling> sampling;  // null: no tabulated proposal
-  std::shared_ptr<const MeasuredProposal> proposal;  // null: none
+  std::shared_ptr<const BrdfModel> proposal;  // a further sampler, with its exact pdf (withProposal()); null: none
   double cosineWeight = 1.0, proposalWeight = 0.0;
 
   Measured() = default;

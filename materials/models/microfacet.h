@@ -20,6 +20,7 @@ namespace glossy {
 struct Microfacet {
   static constexpr std::string_view kName = "microfacet";
   static constexpr std::string_view kLabel = "Microfacet";
+  static constexpr std::string_view kConventions = "1/pi in the specular denominator, Fresnel at <V,H>";
   static constexpr ParamSpec kParams[] = {
       params::kKd,
       params::kAbcA, params::kAbcB, params::kAbcC,

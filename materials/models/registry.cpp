@@ -1,37 +1,58 @@
 #include "materials/models/registry.h"
 
-#include <array>
+#include "materials/core/input_error.h"
+
+#include <stdexcept>
 
 namespace glossy {
 
 namespace {
 
-template <class M>
-constexpr ModelInfo infoOf() {
-  return {M::kName, M::kLabel, M::kParams, [](const ParamSet& p) -> Brdf { return M::fromParams(p); }};
+template <class... M>
+std::deque<ModelInfo> infoOf(ModelList<M...>) {
+  return {modelInfo<M>()...};
 }
 
-constexpr std::array kModels = {
-    infoOf<Microfacet>(), infoOf<Smooth>(), infoOf<AshikhminShirley>(), infoOf<CookTorrance>(), infoOf<Lambertian>(),
-};
+std::deque<ModelInfo>& models() {
+  static std::deque<ModelInfo> all = infoOf(BuiltinModels{});  // a deque: findModel's pointers stay valid
+  return all;
+}
+
+std::string joined(const char* separator, auto&& part) {
+  std::string s;
+  for (const ModelInfo& m : models())
+    if (const std::string p = part(m); !p.empty()) s += (s.empty() ? "" : separator) + p;
+  return s;
+}
 
 }  // namespace
 
-std::span<const ModelInfo> analyticModels() { return kModels; }
+void registerModel(const ModelInfo& model) {
+  if (findModel(model.name)) throw std::logic_error("a model named '" + std::string(model.name) + "' is already registered");
+  models().push_back(model);
+}
+
+const std::deque<ModelInfo>& analyticModels() { return models(); }
 
 const ModelInfo* findModel(std::string_view name) {
-  for (const ModelInfo& m : kModels)
+  for (const ModelInfo& m : models())
     if (m.name == name) return &m;
   return nullptr;
 }
 
+const ModelInfo& requireModel(std::string_view name, const std::string& context) {
+  if (const ModelInfo* m = findModel(name)) return *m;
+  throw InputError(context + ": unknown model '" + std::string(name) + "' (known: " + knownModelNames() + ")");
+}
+
 std::string knownModelNames() {
-  std::string s;
-  for (const ModelInfo& m : kModels) {
-    if (!s.empty()) s += ", ";
-    s += m.name;
-  }
-  return s;
+  return joined(", ", [](const ModelInfo& m) { return std::string(m.name); });
+}
+
+std::string modelConventions() {
+  return joined("; ", [](const ModelInfo& m) {
+    return m.conventions.empty() ? std::string() : std::string(m.name) + ": " + std::string(m.conventions);
+  });
 }
 
 }  // namespace glossy

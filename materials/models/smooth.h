@@ -19,6 +19,8 @@ namespace glossy {
 struct Smooth {
   static constexpr std::string_view kName = "smooth";
   static constexpr std::string_view kLabel = "Smooth Surface";
+  static constexpr std::string_view kShortLabel = "Smooth";
+  static constexpr std::string_view kConventions = "Fresnel at the projected cos theta_d unless smoothFresnel = vh";
   static constexpr std::string_view kFresnelChoices[] = {"projected", "vh"};
   static constexpr ParamSpec kParams[] = {
       params::kKd,

@@ -28,7 +28,7 @@ std::string quoteList(std::span<const std::string_view> items) {
 }
 
 size_t modelRank(const std::string& model) {
-  auto models = analyticModels();
+  const auto& models = analyticModels();
   for (size_t i = 0; i < models.size(); ++i)
     if (models[i].name == model) return i;
   return models.size();
@@ -108,9 +108,7 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
   const std::string where = at(source, t) + fitLabel(index, fit.id);
   requireString(t, "model", where);
   requireString(t, "metric", where);
-  const ModelInfo* model = findModel(fit.id.model);
-  if (!model)
-    throw InputError(where + ": key 'model': unknown model '" + fit.id.model + "' (known: " + knownModelNames() + ")");
+  const ModelInfo* model = &requireModel(fit.id.model, where + ": key 'model'");
   if (std::find(std::begin(kMetrics), std::end(kMetrics), fit.id.metric) == std::end(kMetrics))
     throw InputError(where + ": key 'metric': must be E1 or E2, got '" + fit.id.metric + "'");
 
@@ -176,8 +174,7 @@ FitId FitId::parse(std::string_view text, std::string_view context) {
     throw InputError(std::string(context) + ": '" + std::string(text) + "' is not MODEL:METRIC (e.g. microfacet:E2)");
   id.model = std::string(text.substr(0, colon));
   id.metric = std::string(text.substr(colon + 1));
-  if (!findModel(id.model))
-    throw InputError(std::string(context) + ": unknown model '" + id.model + "' (known: " + knownModelNames() + ")");
+  requireModel(id.model, std::string(context));
   if (std::find(std::begin(kMetrics), std::end(kMetrics), id.metric) == std::end(kMetrics))
     throw InputError(std::string(context) + ": metric must be E1 or E2, got '" + id.metric + "'");
   return id;
@@ -226,8 +223,7 @@ void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::stri
 }
 
 void validateFit(const Fit& fit, const std::string& context) {
-  const ModelInfo* model = findModel(fit.id.model);
-  if (!model) throw InputError(context + ": unknown model '" + fit.id.model + "' (known: " + knownModelNames() + ")");
+  const ModelInfo* model = &requireModel(fit.id.model, context);
   if (std::find(std::begin(kMetrics), std::end(kMetrics), fit.id.metric) == std::end(kMetrics))
     throw InputError(context + ": metric must be E1 or E2, got '" + fit.id.metric + "'");
   for (const auto& [key, value] : fit.params.values()) {
@@ -315,9 +311,7 @@ std::string toToml(const MaterialFile& m) {
 }
 
 Brdf makeBrdf(const Fit& fit) {
-  const ModelInfo* model = findModel(fit.id.model);
-  if (!model) throw InputError("unknown model '" + fit.id.model + "'");
-  return model->make(fit.params);
+  return requireModel(fit.id.model, "fit " + fit.id.str()).make(fit.params);
 }
 
 std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& m, const std::filesystem::path& merlDir) {

@@ -117,10 +117,7 @@ int runBatch(const FitOptions& o) {
   const auto tables = tablesIn(o.measuredDir);
   const std::vector<std::string> models = modelsOf(o.models);
   const std::vector<Metric> metrics = metricsOf(o.metrics.empty() ? std::vector<std::string>{"E1", "E2"} : o.metrics);
-  const auto fittable = fittableModels();
-  for (const auto& m : models)
-    if (std::find(fittable.begin(), fittable.end(), m) == fittable.end())
-      throw InputError("--model: cannot fit '" + m + "' (fittable: microfacet, smooth, ashikhmin-shirley, cook-torrance)");
+  for (const auto& m : models) requireFittable(m);
   std::filesystem::create_directories(o.outDir);
   const std::string settings = o.settings.describe();
 
@@ -176,7 +173,7 @@ Command addFitCommand(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand("fit", "Fit analytic models to measured MERL data under E1 or E2 (docs/fitting.md)");
   app->add_option("--measured", o->measured, "MERL table (.binary or .binary.xz) to fit");
   app->add_option("--merl-dir", o->merlDir, "where to look for --measured (else $GLOSSY_MERL_DIR)");
-  app->add_option("--model", o->models, "model to fit: microfacet, smooth, ashikhmin-shirley, cook-torrance (batch: repeatable, default all)");
+  app->add_option("--model", o->models, "model to fit: " + fittableModelNames() + " (batch: repeatable, default all)");
   app->add_option("--metric", o->metrics, "E1 or E2 (batch: repeatable, default both)");
   app->add_option("-o,--output", o->output, "material TOML to write or update (keeps its other fits); default: stdout");
   app->add_option("--measured-dir", o->measuredDir, "batch: fit every table in this folder");

@@ -1,9 +1,9 @@
 // glossy list: the material library at a glance, with each fit's head-on albedo.
 #include "materials/core/input_error.h"
 #include "materials/models/albedo.h"
-#include "materials/models/registry.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/command.h"
+#include "renderer/sheet/sheet.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -19,10 +19,8 @@ struct ListOptions {
   std::string merlDir;
 };
 
-// The supplement's grid order.
-const FitId kColumns[] = {{"microfacet", "E2"}, {"smooth", "E2"}, {"ashikhmin-shirley", "E1"},
-                          {"ashikhmin-shirley", "E2"}, {"cook-torrance", "E1"}, {"cook-torrance", "E2"}};
-const char* kColumnLabels[] = {"Micro E2", "Smooth E2", "AS E1", "AS E2", "CT E1", "CT E2"};
+// A column per fit of the sheets' comparison grid.
+int width(const SheetPanel& column) { return std::max(9, int(column.label.size())); }
 
 std::vector<std::filesystem::path> collect(const std::vector<std::string>& paths) {
   std::vector<std::filesystem::path> files;
@@ -48,7 +46,8 @@ int runList(const ListOptions& o) {
   std::printf("Head-on directional albedo a(N) = ∫ρ(L,N) cos θ_L dω_L of each fit (mean of R, G, B);\n"
               "'measured' says whether the material's MERL table was found (--merl-dir, $GLOSSY_MERL_DIR).\n\n");
   std::printf("%-26s %-9s", "material", "measured");
-  for (const char* l : kColumnLabels) std::printf(" %9s", l);
+  for (const SheetPanel& c : sheetPanels())
+    if (!c.fit.empty()) std::printf(" %*s", width(c), c.label.c_str());
   std::printf("\n");
   int bad = 0, fits = 0;
   for (const auto& file : files) {
@@ -61,14 +60,15 @@ int runList(const ListOptions& o) {
       continue;
     }
     std::printf("%-26s %-9s", m.name.c_str(), m.measured.empty() ? "-" : resolveMeasured(m, o.merlDir) ? "found" : "missing");
-    for (const FitId& id : kColumns) {
-      const Fit* f = m.find(id);
+    for (const SheetPanel& c : sheetPanels()) {
+      if (c.fit.empty()) continue;
+      const Fit* f = m.find(FitId::parse(c.fit, c.label));
       if (!f) {
-        std::printf(" %9s", "-");
+        std::printf(" %*s", width(c), "-");
         continue;
       }
       const Rgb a = albedoAtNormalIncidence(makeBrdf(*f));
-      std::printf(" %9.4f", (a.r + a.g + a.b) / 3.0);
+      std::printf(" %*.4f", width(c), (a.r + a.g + a.b) / 3.0);
       ++fits;
     }
     std::printf("\n");

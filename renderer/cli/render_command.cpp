@@ -1,5 +1,6 @@
 // glossy render: one image of a glTF scene under an environment, as shared/spec/interfaces.md states.
 #include "materials/core/input_error.h"
+#include "materials/models/registry.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
@@ -74,8 +75,7 @@ int runRender(RenderOptions o) {
       {"glossy:scene", scenePath},
       {"glossy:env", environment.description()},
       {"glossy:smoothFresnel", binding.smoothFresnel},
-      {"glossy:conventions", std::string("microfacet, cook-torrance: 1/pi in the specular denominator; Fresnel at <V,H>; "
-                                         "smooth: Fresnel at the projected cos theta_d unless smoothFresnel = vh")},
+      {"glossy:conventions", modelConventions()},
       {"glossy:droppedSamples", int(std::min<uint64_t>(stats.droppedSamples, uint64_t(INT32_MAX)))},
       {"glossy:renderSeconds", float(stats.seconds)},
       {"glossy:version", std::string(GLOSSY_VERSION)},

@@ -1,10 +1,12 @@
 // glossy sheet / glossy sheets: the supplement's comparison grid for one material, or for many
 // (shared/spec/interfaces.md; renderer/sheet/sheet.h has the layout and the error figures).
 #include "materials/core/input_error.h"
+#include "materials/models/registry.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
 #include "renderer/cli/scene_options.h"
+#include "renderer/scene/material_binding.h"
 #include "renderer/sheet/sheet.h"
 
 #include <algorithm>
@@ -75,11 +77,17 @@ std::shared_ptr<const MerlTable> findMeasured(const MaterialFile& m, const Sheet
 std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& stage, const SheetOptions& o, const Sheet& sheet,
                                           double seconds) {
   uint64_t dropped = 0;
-  for (const PanelRender& p : sheet.panels) dropped += p.droppedSamples;
+  std::string smoothFresnel;  // as the file's smooth fits say, like render's for its binding
+  for (const PanelRender& p : sheet.panels) {
+    dropped += p.droppedSamples;
+    const Fit* fit = p.empty || p.panel.fit.empty() ? nullptr : m.find(FitId::parse(p.panel.fit, m.path.string()));
+    const std::string f = fit ? smoothFresnelOf(*fit) : "";
+    if (!f.empty() && smoothFresnel.find(f) == std::string::npos) smoothFresnel.append(smoothFresnel.empty() ? "" : ", ").append(f);
+  }
   return {
       {"glossy:material", m.path.string()},
       {"glossy:fit", std::string("sheet")},
-      {"glossy:measured", sheet.panels.front().note},
+      {"glossy:measured", sheet.measured()->note},
       {"glossy:spp", o.settings.secondsPerPanel > 0.0 ? std::string("progressive") : std::to_string(o.settings.spp)},
       {"glossy:secondsPerPanel", float(o.settings.secondsPerPanel)},
       o.settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(o.settings.seed)}
@@ -87,9 +95,8 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       {"glossy:maxDepth", o.settings.maxDepth},
       {"glossy:scene", stage.scenePath},
       {"glossy:env", stage.environment->description()},
-      {"glossy:smoothFresnel", std::string("projected")},
-      {"glossy:conventions", std::string("microfacet, cook-torrance: 1/pi in the specular denominator; Fresnel at <V,H>; "
-                                         "smooth: Fresnel at the projected cos theta_d unless smoothFresnel = vh")},
+      {"glossy:smoothFresnel", smoothFresnel.empty() ? std::string("projected") : smoothFresnel},
+      {"glossy:conventions", modelConventions()},
       {"glossy:pngExposure", float(o.exposure)},
       {"glossy:droppedSamples", int(std::min<uint64_t>(dropped, INT32_MAX))},
       {"glossy:renderSeconds", float(seconds)},
@@ -210,10 +217,11 @@ int runSheets(const SheetOptions& o) {
 
 Command addSheetCommand(CLI::App& parent) {
   auto o = std::make_shared<SheetOptions>();
+  std::string grid;
+  for (const SheetPanel& p : sheetPanels()) grid.append(grid.empty() ? "" : " | ").append(p.label);
   CLI::App* app = parent.add_subcommand(
-      "sheet",
-      "Render a material's comparison sheet: Measured | Microfacet E2 | Smooth E2 | AS E1 | AS E2 | CT E1 | CT E2, "
-      "into one layered EXR and a labelled PNG beside it, and print each model's error against the measured panel.");
+      "sheet", "Render a material's comparison sheet: " + grid +
+                   ", into one layered EXR and a labelled PNG beside it, and print each model's error against the measured panel.");
   app->add_option("--material", o->material, "Material parameter file (TOML)")->required();
   app->add_option("--measured", o->measured, "MERL .binary (or .binary.xz) for the measured panel; default: the file's own, "
                                              "looked up in --merl-dir or $GLOSSY_MERL_DIR");

@@ -1,7 +1,6 @@
 #include "renderer/scene/material_binding.h"
 
 #include "materials/core/input_error.h"
-#include "materials/params/material_file.h"
 
 namespace glossy {
 
@@ -23,8 +22,12 @@ BrdfChoice brdfFromMaterialFile(const std::filesystem::path& file, const std::st
   const Fit* fit = m.find(id);
   if (!fit) throw InputError(file.string() + ": has no " + id.str() + " fit");
   BrdfChoice c{makeBrdf(*fit), file.string(), id.str()};
-  if (id.model == Smooth::kName) c.smoothFresnel = fit->params.choice("fresnel", Smooth::kParams);
+  if (id.model == Smooth::kName) c.smoothFresnel = smoothFresnelOf(*fit);
   return c;
+}
+
+std::string smoothFresnelOf(const Fit& fit) {
+  return fit.id.model == Smooth::kName ? fit.params.choice("fresnel", Smooth::kParams) : "";
 }
 
 MaterialBinding bindMaterials(const SceneDescription& scene, const std::optional<BrdfChoice>& override) {

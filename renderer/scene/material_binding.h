@@ -3,6 +3,7 @@
 #pragma once
 
 #include "materials/models/brdf.h"
+#include "materials/params/material_file.h"
 #include "renderer/scene/scene.h"
 
 #include <optional>
@@ -20,6 +21,8 @@ struct BrdfChoice {
 
 // Loads `fitText` (MODEL:METRIC) of a parameter file; InputError naming the file if absent or bad.
 BrdfChoice brdfFromMaterialFile(const std::filesystem::path& file, const std::string& fitText);
+// The Fresnel angle a smooth fit renders with, "projected" or "vh", as metadata records it; "" for other models.
+std::string smoothFresnelOf(const Fit& fit);
 
 struct MaterialBinding {
   std::vector<Brdf> brdfs;            // per SceneDescription::materials entry

@@ -1,6 +1,7 @@
 #include "renderer/sheet/sheet.h"
 
 #include "materials/fitting/metric.h"
+#include "materials/models/registry.h"
 #include "renderer/camera/camera_rays.h"
 #include "renderer/scene/material_binding.h"
 
@@ -8,7 +9,6 @@
 #include <OpenImageIO/imagebufalgo.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -93,17 +93,29 @@ std::string formatted(const char* format, double value) {
 
 }  // namespace
 
+SheetPanel SheetPanel::measured() { return {"measured", "Measured", ""}; }
+
+SheetPanel SheetPanel::ofFit(const FitId& fit) {
+  const ModelInfo* model = findModel(fit.model);
+  std::string layer = fit.model + "_" + fit.metric;
+  std::replace(layer.begin(), layer.end(), '-', '_');
+  return {layer, std::string(model ? model->shortLabel : fit.model) + " " + fit.metric, fit.str()};
+}
+
 std::span<const SheetPanel> sheetPanels() {
-  static const std::array<SheetPanel, 7> panels = {{
-      {"measured", "Measured", ""},
-      {"microfacet_E2", "Microfacet E2", "microfacet:E2"},
-      {"smooth_E2", "Smooth E2", "smooth:E2"},
-      {"ashikhmin_shirley_E1", "AS E1", "ashikhmin-shirley:E1"},
-      {"ashikhmin_shirley_E2", "AS E2", "ashikhmin-shirley:E2"},
-      {"cook_torrance_E1", "CT E1", "cook-torrance:E1"},
-      {"cook_torrance_E2", "CT E2", "cook-torrance:E2"},
-  }};
+  static const std::vector<SheetPanel> panels = [] {
+    std::vector<SheetPanel> grid = {SheetPanel::measured()};
+    for (const char* fit : {"microfacet:E2", "smooth:E2", "ashikhmin-shirley:E1", "ashikhmin-shirley:E2", "cook-torrance:E1", "cook-torrance:E2"})
+      grid.push_back(SheetPanel::ofFit(FitId::parse(fit, "the sheet grid")));
+    return grid;
+  }();
   return panels;
+}
+
+const PanelRender* Sheet::measured() const {
+  for (const PanelRender& p : panels)
+    if (p.panel.fit.empty()) return &p;
+  return nullptr;
 }
 
 SheetScene makeSheetScene(const SceneDescription& description, const EmbreeScene& bvh,
@@ -135,7 +147,7 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
   std::optional<MetricData> e1, e2;
   if (measured) e1.emplace(*measured, Metric::E1), e2.emplace(*measured, Metric::E2);
 
-  for (const SheetPanel& panel : sheetPanels()) {
+  for (const SheetPanel& panel : settings.panels) {
     PanelRender r;
     if (panel.fit.empty()) {
       if (measured) {
@@ -157,13 +169,11 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     sheet.panels.push_back(std::move(r));
   }
 
-  const PanelRender& ref = sheet.panels.front();
-  if (!ref.empty)
-    for (size_t k = 1; k < sheet.panels.size(); ++k) {
-      PanelRender& p = sheet.panels[k];
-      if (p.empty) continue;
-      p.relativeRmse = relativeRmse(p.image, ref.image, sheet.objectMask);
-      p.luminanceRatio = luminanceRatio(p.image, ref.image, sheet.objectMask);
+  if (sheet.hasMeasured())
+    for (PanelRender& p : sheet.panels) {
+      if (p.empty || p.panel.fit.empty()) continue;
+      p.relativeRmse = relativeRmse(p.image, sheet.measured()->image, sheet.objectMask);
+      p.luminanceRatio = luminanceRatio(p.image, sheet.measured()->image, sheet.objectMask);
     }
 
   sheet.grid = RgbImage(w * int(sheet.panels.size()), h);
@@ -272,7 +282,7 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
       // Narrow panels get the figures without their names.
       second = w >= 120 ? formatted("rRMSE %.3f", p.relativeRmse) + formatted("  lum x%.2f", p.luminanceRatio)
                         : formatted("%.3f", p.relativeRmse) + formatted(" x%.2f", p.luminanceRatio);
-    else if (k > 0)
+    else if (!p.panel.fit.empty())
       second = "no measured panel";
     else
       second = p.note.find("NBRDF") != std::string::npos ? "MERL (NBRDF reconstr.)" : "MERL";
@@ -297,11 +307,11 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
 std::string errorTable(const Sheet& sheet) {
   std::ostringstream s;
   s << sheet.material << ": ";
+  const std::string note = sheet.measured() ? sheet.measured()->note : "none in the grid";
   if (!sheet.hasMeasured()) {
-    s << "no measured panel (" << sheet.panels.front().note << "), so no errors against it\n";
+    s << "no measured panel (" << note << "), so no errors against it\n";
   } else {
-    s << "error of each model against the measured panel (" << sheet.panels.front().note
-      << "), over the object's pixels\n";
+    s << "error of each model against the measured panel (" << note << "), over the object's pixels\n";
   }
   s << "  panel           spp   rel. RMSE   luminance ratio   BRDF E1   BRDF E2\n";
   for (const PanelRender& p : sheet.panels) {

@@ -22,8 +22,12 @@ struct SheetPanel {
   std::string layer;  // EXR layer: "measured", "microfacet_E2", ...
   std::string label;  // for people: "Measured", "Microfacet E2", ...
   std::string fit;    // MODEL:METRIC; empty for the measured panel
+
+  static SheetPanel measured();
+  // Layer "cook_torrance_E2", label "CT E2": the model's short label (registry.h) and the metric.
+  static SheetPanel ofFit(const FitId& fit);
 };
-// The supplement's order.
+// The supplement's comparison grid, the one list of it: Measured, then its six fits in its order.
 std::span<const SheetPanel> sheetPanels();
 
 struct SheetSettings {
@@ -34,6 +38,7 @@ struct SheetSettings {
   int threads = 0;
   int maxDepth = 8;
   bool progress = true;
+  std::vector<SheetPanel> panels{sheetPanels().begin(), sheetPanels().end()};
 };
 
 // What every panel shares.
@@ -63,10 +68,11 @@ struct PanelRender {
 
 struct Sheet {
   std::string material;
-  std::vector<PanelRender> panels;  // in sheetPanels() order
+  std::vector<PanelRender> panels;  // in SheetSettings::panels order
   std::vector<char> objectMask;     // per panel pixel: the primary ray hits the object
-  RgbImage grid;                    // the panels side by side, 7 width × height
-  bool hasMeasured() const { return !panels.front().empty; }
+  RgbImage grid;                    // the panels side by side, panels × width by height
+  const PanelRender* measured() const;  // null when the grid has no measured panel
+  bool hasMeasured() const { return measured() && !measured()->empty; }
 };
 
 // `measured` may be null (its panel is then empty, with `measuredNote` saying why).

@@ -127,23 +127,19 @@ void PrintTo(const SamplingCase& c, std::ostream* os) { *os << c.label(); }
 
 double lobeWidth(const Brdf& brdf) {
   constexpr double q = 0.25;
-  struct Width {
-    // Half-vector lobes: the angle of L from the mirror direction is about twice θ_h.
-    double operator()(const AshikhminShirley& m) const {
-      return 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m.n + 1.0)));  // cos θ_h = ξ^(1/(n+1))
-    }
-    double operator()(const CookTorrance& m) const {
-      return 2.0 * std::atan(m.m * std::sqrt(-std::log(1.0 - q)));  // tan² θ_h = −m² ln(1 − ξ)
-    }
-    double operator()(const Microfacet& m) const {
-      const double x = abcQuantile(m.b, m.c, 1.0, q);  // x = 1 − cos θ_h
-      return 2.0 * std::sqrt(x * (2.0 - x));
-    }
-    double operator()(const Smooth& m) const { return std::sqrt(abcQuantile(m.b, m.c, 4.0, q)); }  // d = |D_P|
-    double operator()(const Lambertian&) const { return 0.5; }
-    double operator()(const Measured&) const { return 0.5; }
-  };
-  return std::clamp(std::visit(Width{}, brdf), 1e-5, 0.5);
+  double width = 0.5;  // Lambertian, measured data
+  // Half-vector lobes: the angle of L from the mirror direction is about twice θ_h.
+  if (const auto* m = brdf.as<AshikhminShirley>()) {
+    width = 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));  // cos θ_h = ξ^(1/(n+1))
+  } else if (const auto* m = brdf.as<CookTorrance>()) {
+    width = 2.0 * std::atan(m->m * std::sqrt(-std::log(1.0 - q)));  // tan² θ_h = −m² ln(1 − ξ)
+  } else if (const auto* m = brdf.as<Microfacet>()) {
+    const double x = abcQuantile(m->b, m->c, 1.0, q);  // x = 1 − cos θ_h
+    width = 2.0 * std::sqrt(x * (2.0 - x));
+  } else if (const auto* m = brdf.as<Smooth>()) {
+    width = std::sqrt(abcQuantile(m->b, m->c, 4.0, q));  // d = |D_P|
+  }
+  return std::clamp(width, 1e-5, 0.5);
 }
 
 LobeGrid gridFor(const Brdf& brdf, const Vec3& V) {

@@ -1,0 +1,20 @@
+// The built-in analytic models: the one list of them, in the order of the supplement's comparison grid
+// (Microfacet, Smooth, Ashikhmin-Shirley, Cook-Torrance), then Lambertian. The registry (registry.cpp)
+// lists them from it at run time; the fitter (fitter.cpp) needs their static types, for Ceres' jets, and
+// instantiates itself for each. A new model is its header and one entry here.
+#pragma once
+
+#include "materials/models/ashikhmin_shirley.h"
+#include "materials/models/cook_torrance.h"
+#include "materials/models/lambertian.h"
+#include "materials/models/microfacet.h"
+#include "materials/models/smooth.h"
+
+namespace glossy {
+
+template <class... Models>
+struct ModelList {};
+
+using BuiltinModels = ModelList<Microfacet, Smooth, AshikhminShirley, CookTorrance, Lambertian>;
+
+}  // namespace glossy
