@@ -19,23 +19,6 @@ namespace glossy::test {
 
 namespace {
 
-SceneMaterial material(const char* name, Rgb emission = Rgb(0.0)) {
-  SceneMaterial m;
-  m.name = name;
-  m.emission = emission;
-  return m;
-}
-
-// Two triangles, counter-clockwise (facing edgeU × edgeV).
-Mesh quad(glm::vec3 corner, glm::vec3 edgeU, glm::vec3 edgeV, int material) {
-  Mesh m;
-  m.name = "test quad";
-  m.material = material;
-  m.positions = {corner, corner + edgeU, corner + edgeU + edgeV, corner + edgeV};
-  m.indices = {0, 1, 2, 0, 2, 3};
-  return m;
-}
-
 RgbImage renderScene(const SceneDescription& description, const std::vector<Brdf>& brdfs, const Environment* environment,
                      const Camera& camera, const RenderSettings& settings) {
   const EmbreeScene bvh(description);
@@ -60,7 +43,7 @@ struct Stage {
   SceneDescription description;
   std::vector<Brdf> brdfs;
   explicit Stage(const Brdf& sphere, bool lamp) {
-    description.materials = {material("sphere"), material("floor"), material("lamp", Rgb(4.0, 3.0, 2.0))};
+    description.materials = {material("sphere"), material("floor"), material("lamp", Rgb(0.0), Rgb(4.0, 3.0, 2.0))};
     description.meshes.push_back(uvSphere(1.0, 64, 32, 0));
     description.meshes.push_back(quad({-4, -1, 4}, {8, 0, 0}, {0, 0, -8}, 1));
     if (lamp) description.meshes.push_back(quad({-1, 2.5f, -1}, {2, 0, 0}, {0, 0, 2}, 2));
@@ -127,7 +110,7 @@ TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
 // Light samples of either light and BSDF samples that find either are weighted by MIS against each other.
 TEST(Integrator, AnEnvironmentAndAnEmitterTogetherGiveTheirAnalyticIrradiance) {
   SceneDescription description;
-  description.materials = {material("floor"), material("lamp", Rgb(10.0, 5.0, 2.0))};
+  description.materials = {material("floor"), material("lamp", Rgb(0.0), Rgb(10.0, 5.0, 2.0))};
   description.meshes.push_back(quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0));
   description.meshes.push_back(quad({-0.2f, 1, -0.2f}, {0.4f, 0, 0}, {0, 0, 0.4f}, 1));  // facing down
   const std::vector<Brdf> brdfs = {Lambertian{Rgb(0.5)}, Lambertian{Rgb(0.0)}};
@@ -181,7 +164,7 @@ TEST(Integrator, AnEnvironmentAndAnEmitterTogetherGiveTheirAnalyticIrradiance) {
 
 TEST(Integrator, TheLightChooserDrawsByPower) {
   SceneDescription description;
-  description.materials = {material("dim", Rgb(1.0)), material("bright", Rgb(3.0))};
+  description.materials = {material("dim", Rgb(0.0), Rgb(1.0)), material("bright", Rgb(0.0), Rgb(3.0))};
   description.meshes.push_back(quad({0, 0, 0}, {1, 0, 0}, {0, 0, 1}, 0));
   description.meshes.push_back(quad({0, 2, 0}, {2, 0, 0}, {0, 0, 1}, 1));  // twice the area, thrice the radiance
   const Environment environment = Environment::constant(Rgb(0.5));
@@ -213,7 +196,7 @@ TEST(Integrator, AScaledSceneRendersTheSameImage) {
   const Environment sky = Environment::makeDefault();
   auto scaled = [&](double s, Camera& camera) {
     SceneDescription d = original;
-    d.materials.push_back(material("lamp", Rgb(6.0)));
+    d.materials.push_back(material("lamp", Rgb(0.0), Rgb(6.0)));
     d.meshes.push_back(quad({-0.6f, 1.6f, -0.6f}, {1.2f, 0, 0}, {0, 0, 1.2f}, int(d.materials.size()) - 1));
     for (Mesh& m : d.meshes)
       for (glm::vec3& p : m.positions) p = glm::vec3(glm::dvec3(p) * s);
@@ -247,7 +230,7 @@ TEST(Integrator, AScaledSceneRendersTheSameImage) {
 TEST(Integrator, ALightJustAboveASurfaceStillLightsIt) {
   const float gap = 1e-5f;
   SceneDescription description;
-  description.materials = {material("floor"), material("lamp", Rgb(2.0))};
+  description.materials = {material("floor"), material("lamp", Rgb(0.0), Rgb(2.0))};
   description.meshes.push_back(quad({-1, 0, 1}, {2, 0, 0}, {0, 0, -2}, 0));
   description.meshes.push_back(quad({0, gap, -1}, {1, 0, 0}, {0, 0, 2}, 1));  // x in [0, 1], facing down
   const std::vector<Brdf> brdfs = {Lambertian{Rgb(0.5)}, Lambertian{Rgb(0.0)}};

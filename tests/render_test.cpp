@@ -14,25 +14,6 @@ namespace glossy::test {
 
 namespace {
 
-SceneMaterial material(const char* name, Rgb baseColor = Rgb(0.8), Rgb emission = Rgb(0.0)) {
-  SceneMaterial m;
-  m.name = name;
-  m.baseColor = baseColor;
-  m.emission = emission;
-  return m;
-}
-
-
-Mesh quad(glm::vec3 corner, glm::vec3 edgeU, glm::vec3 edgeV, int material) {
-  Mesh m;
-  m.name = "test quad";
-  m.material = material;
-  m.positions = {corner, corner + edgeU, corner + edgeU + edgeV, corner + edgeV};
-  m.indices = {0, 1, 2, 0, 2, 3};
-  return m;
-}
-
-
 struct Fixture {
   SceneDescription description;
   std::vector<Brdf> brdfs;

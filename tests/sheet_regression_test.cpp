@@ -1,4 +1,4 @@
-// Image regression of the material sheets: the six supplement materials re-rendered at 2 × 128 spp against
+// Image regression of the material sheets: the six supplement materials re-rendered at 2 × 512 spp against
 // the 2048-spp references in tests/reference/ (made by scripts/make-reference-sheets), panel by panel, with
 // a tolerance derived from both renders' noise (tests/support/image_regression.h); family-wise
 // significance 0.01 (Šidák) over all panels. A model made 2 % brighter must fail.
@@ -13,7 +13,10 @@ namespace glossy::test {
 
 namespace {
 
-constexpr int kSize = 64, kReferenceSpp = 2048, kHalfSpp = 128;
+// Halves of 512 spp: at 128, the chrome Ashikhmin-Shirley E1 panel's heavy-tailed noise (caustics through
+// a near-mirror: the 2048-spp reference catches bright rare paths the halves miss) failed the block test
+// at 2 of 6 seed pairs, unbiased as it is; at 512 it passed at each of 3, including both that failed.
+constexpr int kSize = 64, kReferenceSpp = 2048, kHalfSpp = 512;
 const std::vector<std::string> kMaterials = {"alum-bronze", "blue-acrylic", "blue-rubber", "chrome", "gold-metallic-paint2",
                                              "gold-paint"};
 

@@ -135,10 +135,12 @@ void sampleMixtureBatch(const Model& model, const Vec3* V, const double* uLobe, 
   model.lobeOneMinusCosBatch(u, lobe, oneMinusCos, n);
   // φ of the half vector, or the concentric disk's polar point for the cosine lobe: one sin/cos pass for both.
   for (int k = 0; k < n; ++k) {
-    if (lobe[k])
+    if (lobe[k]) {
       phi[k] = 2.0 * kPi * u[k].y;
-    else
+      r[k] = 0.0;
+    } else {
       squareToConcentricDiskPolar(u[k], r[k], phi[k]);
+    }
   }
   lanes::sinCos(phi, s, c, n);
   Vec3 L[kMaxBatchLanes];

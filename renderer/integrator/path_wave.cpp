@@ -128,33 +128,36 @@ void WaveTracer::trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* 
 
 // bsdfSample_ of the lanes: sampleBsdf, as one batch.
 void WaveTracer::sampleBrdf(const Brdf& brdf, const int* lanes, int n) {
-  Vec3 wo[kWaveSize];
-  double uLobe[kWaveSize];
-  Vec2 u[kWaveSize];
+  if (context_.settings.cosineBrdfSampling) {
+    for (int k = 0; k < n; ++k) bsdfSample_[lanes[k]] = sampleBsdf(context_.settings, point_[lanes[k]], draws_[lanes[k]]);
+    return;
+  }
+  // Zeroed only because GCC cannot see that the batch reads the n lanes written.
+  Vec3 wo[kWaveSize] = {};
+  double uLobe[kWaveSize] = {};
+  Vec2 u[kWaveSize] = {};
   BrdfSample samples[kWaveSize];
   for (int k = 0; k < n; ++k) {
-    const int i = lanes[k];
-    if (context_.settings.cosineBrdfSampling) bsdfSample_[i] = sampleBsdf(context_.settings, point_[i], draws_[i]);
-    wo[k] = point_[i].woLocal;
-    uLobe[k] = draws_[i].lobe;
-    u[k] = draws_[i].bsdf;
+    wo[k] = point_[lanes[k]].woLocal;
+    uLobe[k] = draws_[lanes[k]].lobe;
+    u[k] = draws_[lanes[k]].bsdf;
   }
-  if (context_.settings.cosineBrdfSampling) return;
   sampleBatch(brdf, wo, uLobe, u, samples, n);
   for (int k = 0; k < n; ++k) bsdfSample_[lanes[k]] = samples[k];
 }
 
 // value_ of the lanes: valueToward their light samples, as one batch.
 void WaveTracer::evalBrdf(const Brdf& brdf, const int* lanes, int n) {
-  Vec3 wi[kWaveSize], wo[kWaveSize];
+  if (context_.settings.cosineBrdfSampling) {
+    for (int k = 0; k < n; ++k) value_[lanes[k]] = valueToward(context_.settings, point_[lanes[k]], lightPath_[lanes[k]].wiLocal);
+    return;
+  }
+  Vec3 wi[kWaveSize] = {}, wo[kWaveSize] = {};  // zeroed for GCC, as in sampleBrdf
   BrdfValue values[kWaveSize];
   for (int k = 0; k < n; ++k) {
-    const int i = lanes[k];
-    if (context_.settings.cosineBrdfSampling) value_[i] = valueToward(context_.settings, point_[i], lightPath_[i].wiLocal);
-    wi[k] = lightPath_[i].wiLocal;
-    wo[k] = point_[i].woLocal;
+    wi[k] = lightPath_[lanes[k]].wiLocal;
+    wo[k] = point_[lanes[k]].woLocal;
   }
-  if (context_.settings.cosineBrdfSampling) return;
   evalPdfBatch(brdf, wi, wo, values, n);
   for (int k = 0; k < n; ++k) value_[lanes[k]] = values[k];
 }

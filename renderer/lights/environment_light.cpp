@@ -19,44 +19,31 @@ class EnvironmentLight final : public Light {
   bool distant() const override { return true; }
 
   LightSample sample(const Vec3& /*point*/, Vec2 u) const override { return lightSample(environment_.sample(u)); }
-  // The map's reads for all lanes at once (environment.h): the same values as one at a time.
-  void sample(const Vec3* /*points*/, const Vec2* u, const int* lanes, int n, LightSample* out) const override {
-    Vec2 packed[Environment::kMaxBatch];
+  // The map's reads for all lanes at once (environment.h): the same values as one at a time. The
+  // environment's batches take the lanes as a mask over the first kMaxBatch.
+  void sample(const Vec3* points, const Vec2* u, const int* lanes, int n, LightSample* out) const override {
+    bool want[Environment::kMaxBatch] = {};
+    if (!mask(lanes, n, want)) return Light::sample(points, u, lanes, n, out);
     Environment::Sample samples[Environment::kMaxBatch];
-    bool want[Environment::kMaxBatch];
-    for (int first = 0; first < n; first += Environment::kMaxBatch) {
-      const int count = std::min(Environment::kMaxBatch, n - first);
-      for (int k = 0; k < count; ++k) {
-        packed[k] = u[lanes[first + k]];
-        want[k] = true;
-      }
-      environment_.sample(want, packed, samples, count);
-      for (int k = 0; k < count; ++k) out[lanes[first + k]] = lightSample(samples[k]);
-    }
+    environment_.sample(want, u, samples, lanes[n - 1] + 1);
+    for (int k = 0; k < n; ++k) out[lanes[k]] = lightSample(samples[lanes[k]]);
   }
 
   Rgb arriving(const Vec3& dir, double& pdf) const override { return environment_.radianceAndPdf(dir, pdf); }
   void arriving(const Vec3* dirs, const int* lanes, int n, Rgb* radiance, double* pdf) const override {
-    Vec3 packed[Environment::kMaxBatch];
-    Rgb r[Environment::kMaxBatch];
-    double p[Environment::kMaxBatch];
-    bool want[Environment::kMaxBatch];
-    for (int first = 0; first < n; first += Environment::kMaxBatch) {
-      const int count = std::min(Environment::kMaxBatch, n - first);
-      for (int k = 0; k < count; ++k) {
-        packed[k] = dirs[lanes[first + k]];
-        want[k] = true;
-      }
-      environment_.radianceAndPdf(want, packed, r, p, count);
-      for (int k = 0; k < count; ++k) {
-        radiance[lanes[first + k]] = r[k];
-        pdf[lanes[first + k]] = p[k];
-      }
-    }
+    bool want[Environment::kMaxBatch] = {};
+    if (!mask(lanes, n, want)) return Light::arriving(dirs, lanes, n, radiance, pdf);
+    environment_.radianceAndPdf(want, dirs, radiance, pdf, lanes[n - 1] + 1);
   }
 
  private:
   static LightSample lightSample(const Environment::Sample& s) { return {s.dir, s.radiance, s.pdf, true, Vec3(0.0)}; }
+  // want[lanes[k]] for increasing lanes; false if there are none or they reach past the mask.
+  static bool mask(const int* lanes, int n, bool* want) {
+    if (n == 0 || lanes[n - 1] >= Environment::kMaxBatch) return false;
+    for (int k = 0; k < n; ++k) want[lanes[k]] = true;
+    return true;
+  }
 
   const Environment& environment_;
   double sceneRadius_;

@@ -6,6 +6,23 @@
 
 namespace glossy::test {
 
+Mesh quad(glm::vec3 corner, glm::vec3 edgeU, glm::vec3 edgeV, int material) {
+  Mesh m;
+  m.name = "test quad";
+  m.material = material;
+  m.positions = {corner, corner + edgeU, corner + edgeU + edgeV, corner + edgeV};
+  m.indices = {0, 1, 2, 0, 2, 3};
+  return m;
+}
+
+SceneMaterial material(const char* name, Rgb baseColor, Rgb emission) {
+  SceneMaterial m;
+  m.name = name;
+  m.baseColor = baseColor;
+  m.emission = emission;
+  return m;
+}
+
 Mesh uvSphere(double radius, int segments, int rings, int material) {
   Mesh m;
   m.name = "test sphere";

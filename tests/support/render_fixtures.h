@@ -9,6 +9,10 @@
 
 namespace glossy::test {
 
+// Two triangles from corner, facing edgeU × edgeV.
+Mesh quad(glm::vec3 corner, glm::vec3 edgeU, glm::vec3 edgeV, int material);
+// A scene material; an emission makes it a lamp.
+SceneMaterial material(const char* name, Rgb baseColor = Rgb(0.8), Rgb emission = Rgb(0.0));
 // Unit-normal UV sphere of the given radius about the origin, counter-clockwise seen from outside.
 Mesh uvSphere(double radius, int segments, int rings, int material);
 // An orthographic camera at eye looking at target, half-extent halfExtent in both axes.
