@@ -13,9 +13,9 @@ namespace glossy::test {
 
 namespace {
 
-// Halves of 512 spp: at 128, the chrome Ashikhmin-Shirley E1 panel's heavy-tailed noise (caustics through
-// a near-mirror: the 2048-spp reference catches bright rare paths the halves miss) failed the block test
-// at 2 of 6 seed pairs, unbiased as it is; at 512 it passed at each of 3, including both that failed.
+// Halves of a quarter of the reference's samples: some panels' noise is heavy-tailed (chrome's
+// Ashikhmin-Shirley E1: caustics through a near-mirror), and halves of a sixteenth miss the rare bright
+// paths the reference catches often enough to fail the block test, unbiased as they are.
 constexpr int kSize = 64, kReferenceSpp = 2048, kHalfSpp = 512;
 const std::vector<std::string> kMaterials = {"alum-bronze", "blue-acrylic", "blue-rubber", "chrome", "gold-metallic-paint2",
                                              "gold-paint"};

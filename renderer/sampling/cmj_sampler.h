@@ -4,7 +4,7 @@
 // In every pair of dimensions a pixel's N samples lie one per cell of an m × n grid, and one in each of the
 // grid's m·n thin columns and m·n thin rows (counts with no such grid: CmjPattern); a 1D value is one point
 // in each of N intervals. Unlike a (0,2)-sequence, whose prefixes are nets only at powers of two, this
-// stratifies the count asked for: 90 samples are better than 64, not barely better (docs/performance.md).
+// stratifies the count asked for: 90 samples are better than 64, not barely better (docs/rendering.md).
 //
 // Each dimension shuffles the sample index with its own permutation, which decorrelates the pairs; the
 // permutations and the jitter are hashed from (seed, pass, pixel, dimension), so a value depends only on
