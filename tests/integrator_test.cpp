@@ -124,15 +124,7 @@ TEST(Integrator, AnEnvironmentAndAnEmitterTogetherGiveTheirAnalyticIrradiance) {
   const RgbImage a = renderScene(description, brdfs, &environment, camera, settings);
   settings.seed = 2;
   const RgbImage b = renderScene(description, brdfs, &environment, camera, settings);
-  auto projectedSolidAngle = [](const Vec3& p) {
-    const Vec3 corners[4] = {{-0.2, 1, -0.2}, {0.2, 1, -0.2}, {0.2, 1, 0.2}, {-0.2, 1, 0.2}};
-    double e = 0.0;
-    for (int i = 0; i < 4; ++i) {
-      const Vec3 u = glm::normalize(corners[i] - p), v = glm::normalize(corners[(i + 1) % 4] - p);
-      e += std::acos(glm::dot(u, v)) * glm::normalize(glm::cross(u, v)).y;
-    }
-    return 0.5 * std::abs(e);
-  };
+  const Vec3 lamp[4] = {{-0.2, 1, -0.2}, {0.2, 1, -0.2}, {0.2, 1, 0.2}, {-0.2, 1, 0.2}};
   auto floorX = [](double px) { return (2.0 * px / 40 - 1.0) * 2.0; };
   auto floorZ = [](double py) { return -(1.0 - 2.0 * py / 40) * 2.0; };
   for (int c = 0; c < 3; ++c) {
@@ -146,7 +138,7 @@ TEST(Integrator, AnEnvironmentAndAnEmitterTogetherGiveTheirAnalyticIrradiance) {
         if (std::abs(floorX(x + 0.5)) < 0.5 && std::abs(floorZ(y + 0.5)) < 0.5) continue;  // the lamp's back hides it
         double omega = 0.0;
         for (int i = 0; i < 8; ++i)
-          for (int j = 0; j < 8; ++j) omega += projectedSolidAngle(Vec3(floorX(x + (i + 0.5) / 8), 0, floorZ(y + (j + 0.5) / 8))) / 64;
+          for (int j = 0; j < 8; ++j) omega += projectedSolidAngle(lamp, Vec3(floorX(x + (i + 0.5) / 8), 0, floorZ(y + (j + 0.5) / 8))) / 64;
         const double want = (Rgb(10.0, 5.0, 2.0)[c] * omega + sky[c] * (kPi - omega)) * (0.5 / kPi);
         const double mean = 0.5 * (a.at(x, y)[c] + b.at(x, y)[c]), half = 0.5 * (a.at(x, y)[c] - b.at(x, y)[c]);
         error += mean - want;
@@ -242,12 +234,7 @@ TEST(Integrator, ALightJustAboveASurfaceStillLightsIt) {
   settings.maxDepth = 2;
   const RgbImage img = renderScene(description, brdfs, nullptr, camera, settings);
   const Vec3 corners[4] = {{0, gap, -1}, {1, gap, -1}, {1, gap, 1}, {0, gap, 1}};
-  double omega = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    const Vec3 a = glm::normalize(corners[i] - floorPoint), b = glm::normalize(corners[(i + 1) % 4] - floorPoint);
-    omega += std::acos(glm::dot(a, b)) * glm::normalize(glm::cross(a, b)).y;
-  }
-  omega = 0.5 * std::abs(omega);
+  const double omega = projectedSolidAngle(corners, floorPoint);
   const double want = 2.0 * omega * 0.5 / kPi;
   ASSERT_GT(omega, 0.99 * kPi);
   EXPECT_NEAR(img.at(0, 0)[0], want, 0.01 * want);

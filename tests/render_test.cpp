@@ -159,12 +159,7 @@ TEST(Render, EmissiveQuadLightsAPlaneWithItsAnalyticIrradiance) {
   // Lambert's polygon formula: E = Le/2 Σ_edges γ_i (n · unit(v_i × v_{i+1})), from the receiving point.
   auto irradiance = [](const Vec3& p) {
     const Vec3 corners[4] = {{-0.2, 1, -0.2}, {0.2, 1, -0.2}, {0.2, 1, 0.2}, {-0.2, 1, 0.2}};
-    double e = 0.0;
-    for (int i = 0; i < 4; ++i) {
-      const Vec3 a = glm::normalize(corners[i] - p), b = glm::normalize(corners[(i + 1) % 4] - p);
-      e += std::acos(glm::dot(a, b)) * glm::normalize(glm::cross(a, b)).y;
-    }
-    return 0.5 * std::abs(e);
+    return projectedSolidAngle(corners, p);
   };
   int checked = 0;
   for (int x : {4, 8, 12, 28, 32, 36})

@@ -1,5 +1,6 @@
 #include "tests/support/render_fixtures.h"
 
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <cmath>
@@ -13,6 +14,15 @@ Mesh quad(glm::vec3 corner, glm::vec3 edgeU, glm::vec3 edgeV, int material) {
   m.positions = {corner, corner + edgeU, corner + edgeU + edgeV, corner + edgeV};
   m.indices = {0, 1, 2, 0, 2, 3};
   return m;
+}
+
+double projectedSolidAngle(const glm::dvec3 (&corners)[4], const glm::dvec3& p) {
+  double e = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const glm::dvec3 a = glm::normalize(corners[i] - p), b = glm::normalize(corners[(i + 1) % 4] - p);
+    e += std::acos(glm::dot(a, b)) * glm::normalize(glm::cross(a, b)).y;
+  }
+  return 0.5 * std::abs(e);
 }
 
 SceneMaterial material(const char* name, Rgb baseColor, Rgb emission) {

@@ -13,6 +13,9 @@ namespace glossy::test {
 Mesh quad(glm::vec3 corner, glm::vec3 edgeU, glm::vec3 edgeV, int material);
 // A scene material; an emission makes it a lamp.
 SceneMaterial material(const char* name, Rgb baseColor = Rgb(0.8), Rgb emission = Rgb(0.0));
+// The projected solid angle of a quad (corners in order) seen from p on a surface facing +Y, by Lambert's
+// polygon formula: ½ |Σ_edges γ_i (ŷ · unit(v_i × v_{i+1}))|. An emitter's irradiance is Le times it.
+double projectedSolidAngle(const glm::dvec3 (&corners)[4], const glm::dvec3& p);
 // Unit-normal UV sphere of the given radius about the origin, counter-clockwise seen from outside.
 Mesh uvSphere(double radius, int segments, int rings, int material);
 // An orthographic camera at eye looking at target, half-extent halfExtent in both axes.
