@@ -15,4 +15,7 @@ using Rgb = glm::dvec3;
 inline constexpr double kPi = std::numbers::pi;
 inline constexpr double kInvPi = std::numbers::inv_pi;
 
+// Relative luminance of linear Rec. 709 RGB.
+inline double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
 }  // namespace glossy

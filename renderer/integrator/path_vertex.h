@@ -169,16 +169,8 @@ inline BrdfValue valueToward(const RenderSettings& settings, const ShadingPoint&
   if (settings.cosineBrdfSampling) return {eval(*sp.brdf, wiLocal, sp.woLocal), cosineHemispherePdf(wiLocal)};
   return evalPdf(*sp.brdf, wiLocal, sp.woLocal);
 }
-inline BrdfSample sampleCosine(const Brdf& brdf, const Vec3& wo, Vec2 u) {
-  BrdfSample s;
-  s.L = squareToCosineHemisphere(u);
-  s.pdf = cosineHemispherePdf(s.L);
-  if (s.pdf <= 0.0) return {};
-  s.weight = eval(brdf, s.L, wo) * kPi;
-  return s;
-}
 inline BrdfSample sampleBsdf(const RenderSettings& settings, const ShadingPoint& sp, const VertexDraws& u) {
-  if (settings.cosineBrdfSampling) return sampleCosine(*sp.brdf, sp.woLocal, u.bsdf);
+  if (settings.cosineBrdfSampling) return sampleCosineLobe(sp.brdf->model(), sp.woLocal, u.bsdf);
   return sample(*sp.brdf, sp.woLocal, u.lobe, u.bsdf);
 }
 

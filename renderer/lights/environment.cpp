@@ -18,8 +18,6 @@ namespace {
 
 constexpr double kInv4Pi = 0.25 * kInvPi;
 
-double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-
 // OpenImageIO's messages may span lines; InputError's must not.
 std::string oneLine(std::string text) {
   for (char& c : text)

@@ -73,6 +73,4 @@ struct FoundLight {
 };
 using LightFactory = void(const LightSources&, std::vector<FoundLight>&);
 
-inline double luminance(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-
 }  // namespace glossy

@@ -23,19 +23,18 @@ LightSet::LightSet(const LightSources& sources) {
     const double power = f.light->power();
     powers.push_back(std::isfinite(power) && power > 0.0 ? power : 0.0);
     lightsWithPower_ += powers.back() > 0.0;
-    anyPower_ = lightsWithPower_ > 0;
     lights_.push_back(std::move(f.light));
   }
   if (lights_.empty()) return;
   power_ = Distribution1D(powers);
   for (size_t i = 0; i < lights_.size(); ++i) {
-    chosen_.push_back({lights_[i].get(), anyPower_ ? power_.discreteProbability(i) : 0.0});
+    chosen_.push_back({lights_[i].get(), lightsWithPower_ > 0 ? power_.discreteProbability(i) : 0.0});
     if (lights_[i]->distant()) distant_.push_back(chosen_.back());
   }
 }
 
 ChosenLight LightSet::choose(double u) const {
-  if (!anyPower_) return {};
+  if (lightsWithPower_ == 0) return {};
   return chosen_[power_.sampleDiscrete(u)];
 }
 

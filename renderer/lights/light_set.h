@@ -23,7 +23,6 @@ class LightSet {
   // Every registered light type's lights in the scene (light_set.cpp).
   explicit LightSet(const LightSources& sources);
 
-  bool empty() const { return lights_.empty(); }
   // Whether choose(u) depends on u: more than one light has power.
   bool hasChoice() const { return lightsWithPower_ > 1; }
   // A light drawn by power with u in [0, 1); none if the scene has no light with power.
@@ -38,7 +37,6 @@ class LightSet {
   std::vector<std::unique_ptr<Light>> lights_;
   std::vector<ChosenLight> chosen_;  // each light with its probability
   Distribution1D power_;
-  bool anyPower_ = false;
   int lightsWithPower_ = 0;
   std::vector<ChosenLight> distant_;
   std::vector<std::vector<int>> surface_;  // [mesh][triangle]: index into lights_, or −1

@@ -17,7 +17,7 @@ class TriangleLight final : public Light {
     const Vec3 c = glm::cross(e1_, e2_);
     area_ = 0.5 * glm::length(c);
     normal_ = area_ > 0.0 ? c / (2.0 * area_) : Vec3(0.0);
-    margin_ = surfaceMargin(std::max({maxAbsComponent(p0), maxAbsComponent(p1), maxAbsComponent(p2)}));
+    margin_ = triangleMargin(p0, p1, p2);
   }
 
   double power() const override { return kPi * area_ * luminance(radiance_); }

@@ -160,7 +160,7 @@ void EmbreeScene::completeHit(const Ray& ray, Hit& hit) const {
     hit.t = glm::dot(e2, qv) / det;
   }
   hit.position = (1.0 - hit.u - hit.v) * p0 + hit.u * p1 + hit.v * p2;
-  hit.margin = surfaceMargin(std::max({maxAbsComponent(p0), maxAbsComponent(p1), maxAbsComponent(p2)}));
+  hit.margin = triangleMargin(p0, p1, p2);
   hit.geometricNormal = glm::normalize(glm::cross(e1, e2));
   hit.shadingNormal = hit.geometricNormal;
   if (!mesh.normals.empty()) {

@@ -36,6 +36,9 @@ struct Hit {
 // below it, and it scales with the scene, so a scene and its copy scaled by 1e3 render alike.
 inline double surfaceMargin(double maxAbs) { return 0x1p-19 * maxAbs; }
 inline double maxAbsComponent(const Vec3& p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
+inline double triangleMargin(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  return surfaceMargin(std::max({maxAbsComponent(p0), maxAbsComponent(p1), maxAbsComponent(p2)}));
+}
 
 // A ray leaving a surface point with margin m and geometric normal ng, in unit direction dir: it starts m
 // off the surface on dir's side.

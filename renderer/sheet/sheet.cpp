@@ -19,7 +19,7 @@ namespace glossy {
 
 namespace {
 
-double luminance(const float* p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
+double luminance(const float* p) { return glossy::luminance(Rgb(p[0], p[1], p[2])); }
 
 // sRGB transfer function (IEC 61966-2-1) of a linear value, clamped to [0, 1].
 float srgbEncode(double v) {
