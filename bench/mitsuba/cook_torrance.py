@@ -90,8 +90,8 @@ class CookTorranceBSDF(mi.BSDF):
     def eval_pdf(self, ctx, si, wo, active=True):
         return self._eval_pdf(si.wi, wo, active)
 
-    def sample(self, ctx, si, sample1, sample2, active=True):
-        V = si.wi
+    def sample_direction(self, V, sample1, sample2):
+        """L drawn from the mixture (also the measured plugin's proposal): (L, specular lobe?, lobe ok)."""
         specular = sample1 < self.p_spec
         # Beckmann half vector: 1 - cos th = tan^2 / (sec (sec + 1)), no cancellation.
         tan2 = -self.m * self.m * dr.log(1.0 - sample2.x)
@@ -104,19 +104,13 @@ class CookTorranceBSDF(mi.BSDF):
         vh = dr.dot(V, H)
         L_spec = 2.0 * vh * H - V
         L_diff = mi.warp.square_to_cosine_hemisphere(sample2)
-        L = dr.select(specular, L_spec, L_diff)
-        value, pdf = self._eval_pdf(V, L, active)
-        valid = active & (V.z > 0.0) & (L.z > 0.0) & (pdf > 0.0) & dr.isfinite(pdf) & (~specular | (vh > 0.0))
+        return dr.select(specular, L_spec, L_diff), specular, ~specular | (vh > 0.0)
 
-        bs = dr.zeros(mi.BSDFSample3f)
-        bs.wo = L
-        bs.pdf = dr.select(valid, pdf, 0.0)
-        bs.eta = 1.0
-        bs.sampled_type = dr.select(specular, mi.UInt32(+mi.BSDFFlags.GlossyReflection),
-                                    mi.UInt32(+mi.BSDFFlags.DiffuseReflection))
-        bs.sampled_component = dr.select(specular, mi.UInt32(0), mi.UInt32(1))
-        weight = dr.select(valid, value / pdf, 0.0)
-        return bs, weight
+    def sample(self, ctx, si, sample1, sample2, active=True):
+        V = si.wi
+        L, specular, lobe_ok = self.sample_direction(V, sample1, sample2)
+        value, pdf = self._eval_pdf(V, L, active)
+        return make_sample(L, specular, active & lobe_ok & (V.z > 0.0) & (L.z > 0.0), value, pdf)
 
     def traverse(self, callback):
         pass
@@ -126,6 +120,20 @@ class CookTorranceBSDF(mi.BSDF):
 
     def to_string(self):
         return f"CookTorranceBSDF[kd={self.kd}, ks={self.ks}, m={self.m}, eta={self.eta}, p_spec={self.p_spec:.4f}]"
+
+
+def make_sample(L, specular, valid, value, pdf):
+    """Mitsuba's (BSDFSample3f, weight) for a direction L drawn by the mixture: weight = value / pdf, both 0
+    where the sample is invalid or its density is not a positive finite number."""
+    valid = valid & (pdf > 0.0) & dr.isfinite(pdf)
+    bs = dr.zeros(mi.BSDFSample3f)
+    bs.wo = L
+    bs.pdf = dr.select(valid, pdf, 0.0)
+    bs.eta = 1.0
+    bs.sampled_type = dr.select(specular, mi.UInt32(+mi.BSDFFlags.GlossyReflection),
+                                mi.UInt32(+mi.BSDFFlags.DiffuseReflection))
+    bs.sampled_component = dr.select(specular, mi.UInt32(0), mi.UInt32(1))
+    return bs, dr.select(valid, value / pdf, 0.0)
 
 
 def register():
