@@ -652,20 +652,21 @@ def print_efficiency(r):
           f"> 1 when glossy is the more efficient (in brackets: its least and greatest over the pairs). Bias z: "
           f"(glossy's mean - Mitsuba's) over the mask and all renders, over its standard error. Pixels: the squared "
           f"difference of the two mean images over what their noise explains (about 1 when they agree). "
-          f"**!** marks |z| > 4 or pixels > 1.5. Mitsuba JIT: its kernels' compile (or disk-cache load) in the "
-          f"warm-up, not in its times.\n")
+          f"**!** marks |z| > 4 or pixels > 1.5. Mitsuba 1st s: its first (warm-up) render, not in its times, and the "
+          f"seconds Dr.Jit spent compiling kernels in it (none when its disk cache, ~/.drjit, has them).\n")
     print("| lighting | material | glossy s | glossy noise | Mitsuba s | Mitsuba noise | efficiency glossy / Mitsuba "
-          "| bias z | pixels | Mitsuba JIT s |")
+          "| bias z | pixels | Mitsuba 1st s |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     for c in e["cells"]:
         ratios = c["efficiency_ratios"]
         z_flag = " **!**" if abs(c["bias_z"]) > 4 else ""
         p_flag = " **!**" if c["pixel_agreement"] > 1.5 else ""
+        compiled = f" ({c['mitsuba_compile_seconds']:.2f} compile)" if c["mitsuba_kernels_compiled"] else ""
         print(f"| {LIGHTINGS[c['lighting']]} | {MATERIALS[c['material']]} | {c['glossy_seconds_median']:.3f} | "
               f"{c['glossy_noise']:.5f} | {c['mitsuba_seconds_median']:.3f} | {c['mitsuba_noise']:.5f} | "
               f"**{c['efficiency_ratio']:.3f}** ({min(ratios):.2f}-{max(ratios):.2f}) | {c['bias_z']:+.1f}{z_flag} | "
               f"{c['pixel_agreement']:.2f}{p_flag} | "
-              f"{c['mitsuba_compile_seconds']:.2f}{'' if c['mitsuba_kernels_compiled'] else ' (disk cache)'} |")
+              f"{c['mitsuba_first_render_seconds']:.2f}{compiled} |")
 
 
 def print_rays(r):
