@@ -664,7 +664,7 @@ def print_efficiency(r):
         compiled = f" ({c['mitsuba_compile_seconds']:.2f} compile)" if c["mitsuba_kernels_compiled"] else ""
         print(f"| {LIGHTINGS[c['lighting']]} | {MATERIALS[c['material']]} | {c['glossy_seconds_median']:.3f} | "
               f"{c['glossy_noise']:.5f} | {c['mitsuba_seconds_median']:.3f} | {c['mitsuba_noise']:.5f} | "
-              f"**{c['efficiency_ratio']:.3f}** ({min(ratios):.2f}-{max(ratios):.2f}) | {c['bias_z']:+.1f}{z_flag} | "
+              f"**{c['efficiency_ratio']:.3f}** ({min(ratios):.3g}-{max(ratios):.3g}) | {c['bias_z']:+.1f}{z_flag} | "
               f"{c['pixel_agreement']:.2f}{p_flag} | "
               f"{c['mitsuba_first_render_seconds']:.2f}{compiled} |")
 

@@ -4,8 +4,8 @@ Mitsuba 3 BSDF written in Python, sampled exactly as glossy samples it.
     rho = Kd/pi + A S(x) F(<V,H>; eta) G / (pi <L,N> <V,N>),   S(x) = (1 + B x)^(-C),   x = 1 - <N,H>
 
 F and G as in cook_torrance.py (Fresnel at <V,H>, the V-groove G); rho = 0 unless L_z > 0 and V_z > 0.
-x is formed without cancellation, x = |h_p|^2 / (|h| (|h| + h_z)) with h = L + V, since B reaches 2.2e5
-(aluminium's E2 fit: the lobe is a few milliradians wide with a heavy (1 + Bx)^-C tail).
+x is formed without cancellation (cook_torrance.HalfVector), x = |h_p|^2 / (|h| (|h| + h_z)), since B
+reaches 2.2e5 (aluminium's E2 fit: the lobe is a few milliradians wide with a heavy (1 + Bx)^-C tail).
 
 Sampling is glossy's one-sample mixture (materials/models/microfacet.h, abc_profile.h, brdf_sample.h): with
 probability p_spec = clamp(a_s / (a_s + mean Kd), 0.05, 0.95), a_s = 8 mean(A) F(1; eta) I(1 - sqrt(1/2)),
@@ -24,7 +24,7 @@ import math
 import drjit as dr
 import mitsuba as mi
 
-from cook_torrance import fresnel_cook_torrance, fresnel_scalar, make_sample
+from cook_torrance import HalfVector, fresnel_cook_torrance, fresnel_scalar, lobe_probability, make_sample
 
 
 def log1p(y):
@@ -82,36 +82,22 @@ class MicrofacetBSDF(mi.BSDF):
         self.profile = AbcProfile(props["b"], props["c"])
         self.norm = 1.0 / (self.profile.integral(1.0) * 2.0 * math.pi * 4.0)
         # glossy's specularProbability(): head-on lobe albedo ~ 8 A F(1) I(1 - sqrt(1/2)) (G ~ 1).
-        r = (self.eta - 1.0) / (self.eta + 1.0)
-        specular = 8.0 * (sum(self.a) / 3.0) * r * r * self.profile.integral(1.0 - math.sqrt(0.5))
-        diffuse = sum(self.kd) / 3.0
-        if not specular > 0.0:
-            self.p_spec = 0.0
-        elif not diffuse > 0.0:
-            self.p_spec = 1.0
-        else:
-            self.p_spec = min(max(specular / (specular + diffuse), 0.05), 0.95)
-        assert abs(fresnel_scalar(1.0, self.eta) - r * r) < 1e-12
+        head_on = self.profile.integral(1.0 - math.sqrt(0.5))
+        specular = 8.0 * (sum(self.a) / 3.0) * fresnel_scalar(1.0, self.eta) * head_on
+        self.p_spec = lobe_probability(specular, self.kd)
         self.m_flags = mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide
         self.m_components = [mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.FrontSide,
                              mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide]
 
     # rho(L, V) * L_z and the mixture pdf, sharing the half-vector terms.
     def _eval_pdf(self, V, L, active):
-        h = V + L
-        p2 = h.x * h.x + h.y * h.y
-        length = dr.sqrt(p2 + h.z * h.z)
-        cos_h = h.z / length
-        x = p2 / (length * (length + h.z))
-        cos_vh = dr.dot(V, h) / length
-        s = self.profile.value(x)
-        t = 2.0 * cos_h / cos_vh
-        g = dr.select(cos_vh > 0.0, dr.minimum(1.0, dr.minimum(t * V.z, t * L.z)), 0.0)
-        f = fresnel_cook_torrance(cos_vh, self.eta)
+        h = HalfVector(V, L)
+        s = self.profile.value(h.one_minus_cos)
+        f = fresnel_cook_torrance(h.cos_vh, self.eta)
         valid = active & (L.z > 0.0) & (V.z > 0.0)
         # (Kd/pi + A S F G / (pi L_z V_z)) * L_z
-        value = mi.Color3f(self.kd) * (L.z / dr.pi) + mi.Color3f(self.a) * (s * f * g / (dr.pi * V.z))
-        lobe_pdf = dr.select(cos_vh > 0.0, s * self.norm / cos_vh, 0.0)
+        value = mi.Color3f(self.kd) * (L.z / dr.pi) + mi.Color3f(self.a) * (s * f * h.g / (dr.pi * V.z))
+        lobe_pdf = dr.select(h.cos_vh > 0.0, s * self.norm / h.cos_vh, 0.0)
         pdf = self.p_spec * lobe_pdf + (1.0 - self.p_spec) * L.z / dr.pi
         return dr.select(valid, value, 0.0), dr.select(valid, pdf, 0.0)
 
