@@ -17,9 +17,12 @@
 //   quit
 //
 // An error answers "error MESSAGE". `glossy_compare --write-sky FILE` writes glossy's built-in procedural
-// sky as a float EXR (the map both renderers load) and exits.
+// sky as a float EXR (the map both renderers load) and exits. --env-constant stands in for --env (the
+// efficiency table's constant light, Environment::constant); --measured renders every mesh with a MERL
+// table and glossy's tabulated sampler for it (Measured), as `glossy render --measured` does.
 #include "bench/ray_replay.h"
 #include "materials/core/atomic_file.h"
+#include "materials/merl/merl_table.h"
 #include "renderer/image/exr_image.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/lights/default_sky.h"
@@ -31,6 +34,8 @@
 
 #include <cstdio>
 #include <iostream>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -70,10 +75,14 @@ RecordedRays recordRays(EmbreeScene& bvh, const RenderScene& scene, const Camera
 
 int main(int argc, char** argv) {
   CLI::App app{"glossy_compare: glossy's side of bench/mitsuba/compare.py (commands on stdin; see the source)"};
-  std::string scenePath, envPath, skyOut;
+  std::string scenePath, envPath, skyOut, measuredPath;
+  double envConstant = -1.0;
   int width = 256, height = 256, maxDepth = 3;
   app.add_option("--scene", scenePath, "glTF scene (its first camera, its extras.glossy bindings)");
-  app.add_option("--env", envPath, "Lat-long environment map (.exr, .hdr)");
+  auto* envOpt = app.add_option("--env", envPath, "Lat-long environment map (.exr, .hdr)");
+  app.add_option("--env-constant", envConstant, "Constant environment radiance instead of --env")
+      ->excludes(envOpt)->check(CLI::NonNegativeNumber);
+  app.add_option("--measured", measuredPath, "MERL table (.binary or .binary.xz) for every mesh instead of its binding");
   app.add_option("--width", width)->capture_default_str();
   app.add_option("--height", height)->capture_default_str();
   app.add_option("--max-depth", maxDepth, "Path segments at most (3 = one indirect bounce)")->capture_default_str();
@@ -82,13 +91,17 @@ int main(int argc, char** argv) {
 
   try {
     if (!skyOut.empty()) return writeSky(skyOut);
-    if (scenePath.empty() || envPath.empty()) {
-      std::cerr << "glossy_compare: --scene and --env are required\n";
+    if (scenePath.empty() || (envPath.empty() && envConstant < 0.0)) {
+      std::cerr << "glossy_compare: --scene and --env (or --env-constant) are required\n";
       return 2;
     }
     const SceneDescription description = loadGltf(scenePath);
-    MaterialBinding binding = bindMaterials(description, std::nullopt);
-    const Environment environment = Environment::load(envPath);
+    std::optional<BrdfChoice> override;
+    if (!measuredPath.empty())
+      override = BrdfChoice{Measured{std::make_shared<const MerlTable>(MerlTable::load(measuredPath))}, measuredPath, "measured"};
+    MaterialBinding binding = bindMaterials(description, override);
+    if (override) binding.bindings.push_back(measuredPath + " measured");
+    const Environment environment = envPath.empty() ? Environment::constant(Rgb(envConstant)) : Environment::load(envPath);
     EmbreeScene bvh(description);
     const RenderScene scene{&description, &bvh, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, &environment};
     const Camera& camera = description.cameras.at(0);
@@ -120,7 +133,7 @@ int main(int argc, char** argv) {
           if (out != "-")
             writeExr(out, image,
                      {{"glossy:spp", settings.spp}, {"glossy:seed", int(settings.seed)}, {"glossy:maxDepth", maxDepth},
-                      {"glossy:renderSeconds", float(stats.seconds)}, {"glossy:scene", scenePath}, {"glossy:env", envPath}});
+                      {"glossy:renderSeconds", float(stats.seconds)}, {"glossy:scene", scenePath}, {"glossy:env", environment.description()}});
           std::printf("ok %.9g %llu %.6g\n", stats.seconds, static_cast<unsigned long long>(stats.droppedSamples), cpu);
         } else if (command == "rays") {
           RenderSettings settings = base;

@@ -1,30 +1,49 @@
-"""glossy vs Mitsuba 3 on the same scene, the same BRDF, in one invocation (issue 8, deliverables 1 and 2).
+"""glossy vs Mitsuba 3 on the same scene, the same BRDFs, in one invocation (issue 8; issue 21, deliverable 1).
 
-Run through scripts/compare-mitsuba, which makes the venv and builds glossy. Steps:
+Run through scripts/compare-mitsuba, which makes the venv and builds glossy; --only picks sections, e.g.
+  scripts/compare-mitsuba --only efficiency --lighting sky --material ct --seeds 2     (about half a minute)
+--glossy PATH measures another build's glossy_compare with this checkout's harness.
 
- 1. The scene, written once for both (bench/mitsuba/scene.py): a 128x64 UV sphere of radius 1 with vertex
-    normals as glTF (glossy) and PLY (Mitsuba), camera at (0, 1, 4) looking at the origin, 35 deg vertical
-    FOV, 256^2; glossy's procedural sky written as one float EXR that both load; Cook-Torrance E2 of
-    materials/alum-bronze.toml (glossy: extras.glossy binding; Mitsuba: bench/mitsuba/cook_torrance.py).
-    Both: path tracing, max depth 3 (path segments), power-heuristic MIS between one emitter sample and one
-    BSDF sample per vertex, the environment visible behind the sphere, 1-pixel box filter.
- 2. Speed at equal spp: a warm-up each (Mitsuba's JIT compile is timed and reported apart), then RUNS
-    renders each with different seeds, interleaved glossy / Mitsuba / Mitsuba / glossy ... so that load
-    from other processes falls on both alike. Samples/s = W*H*spp / seconds; medians; their ratio.
-    glossy's time is its render call (bench/compare_bench.cpp); Mitsuba's is mi.render + dr.eval +
-    dr.sync_thread, so every kernel has run.
- 3. Ray rates: glossy's path-tracing rays/s beside raw Embree's on the very rays of the same render, at
-    1 and 2 threads (bench/ray_replay.h); and the same ratio for Mitsuba: its render's rate on that many rays
-    beside its own traversal (ray_intersect_preliminary, ray_test) of those rays.
- 4. Agreement: converged images of both (each the mean of two half renders, cached in OUT/ref), relative
-    RMSE between them over the sphere and the background, beside the noise floor the halves measure;
-    the same for a grey Lambertian sphere (the environment orientation check).
- 5. Equal time: each renderer gets the same wall-time budget (spp from its measured rate), renders SEEDS
-    images, and its relative RMSE against glossy's converged image is reported (median over seeds), beside
-    the RMSE against its own converged image.
+The scene (bench/mitsuba/scene.py), written once for both: a 128x64 UV sphere of radius 1 with vertex
+normals as glTF (glossy; extras.glossy binds the material) and PLY (Mitsuba), camera at (0, 1, 4) looking at
+the origin, 35 deg vertical FOV, 256^2. Both: path tracing, max depth 3 (path segments), power-heuristic MIS
+between one emitter sample and one BSDF sample per vertex, the environment visible behind the sphere,
+1-pixel box filter; Mitsuba 3.9.1 llvm_ad_rgb with the multijitter sampler, glossy with its own sampler.
+
+ 1. Efficiency (the main table): efficiency = 1 / (render time x pixel variance) at equal spp, per
+    (lighting, material):
+    - lightings: studio (../shared/envmaps/studio_small_09_1k.hdr, loaded by both), sky (glossy's procedural
+      default sky written as one float EXR both load), constant (radiance 1: Mitsuba's `constant` emitter,
+      glossy's Environment::constant through glossy_compare --env-constant);
+    - materials: ct (blue-rubber's Cook-Torrance E1 fit; Mitsuba: cook_torrance.py), microfacet (aluminium's
+      Microfacet E2 fit, B = 2.2e5: a heavy-tailed lobe; microfacet.py), measured (the MERL-format
+      blue-rubber table, an NBRDF reconstruction: glossy_compare --measured with glossy's tabulated sampler;
+      Mitsuba: measured.py, the same nearest-bin lookup, sampled by the CT E1 fit's mixture). The plugins'
+      values agree with `glossy eval` (bench/mitsuba/check_plugins.py).
+    Each renderer renders SEEDS pairs of images at SPP, after warm-ups (glossy's thread pool; Mitsuba's JIT
+    compile, timed by Dr.Jit's kernel history and reported apart), interleaved g m m g g m ... so that load
+    from other processes falls on both alike. Render time only: glossy's is its render call (bench/
+    compare_bench.cpp), Mitsuba's mi.render + dr.eval + dr.sync_thread (its Python tracing of the kernel
+    included, as a user pays it). Per pair: variance = mean((a - b)^2) / 2 over the mask's pixels and the 3
+    channels, time = the pair's mean, efficiency ratio = (t_M var_M) / (t_g var_g); the table gives medians
+    over the pairs. The mask: pixels whose whole footprint sees the sphere, from rays through each pixel's
+    four corners traced against the very mesh (Mitsuba's camera and ray_test; the mesh is convex, so four
+    covered corners mean a covered pixel), shrunk by one more pixel all round (sphere_mask).
+    Checks per cell: bias z = (glossy's mean - Mitsuba's) over the mask and all renders, over its standard
+    error from the spread of the per-render means (a biased estimator or a wrongly scaled light shows as
+    |z| >> 1); pixels = sum over the mask of (mean image_g - mean image_M)^2 over the sum of what their
+    per-pixel noise explains (about 1 when the images agree; a mirrored or rotated map, which the mask
+    mean can hide, drives it far above 1).
+ 2. Ray rates (on sphere.gltf: alum-bronze's CT E2 under the sky): glossy's path-tracing rays/s beside raw
+    Embree's on the very rays of the same render, at 1 and 2 threads (bench/ray_replay.h); the same ratio
+    for Mitsuba (its render's rate beside its own traversal, ray_intersect_preliminary and ray_test, of
+    those rays); samples/s at 1 and 2 threads.
+ 3. Agreement (the same scene): converged images of both (each the mean of two half renders, cached in
+    OUT/ref), relative RMSE between them over the sphere and the background, beside the noise floor the
+    halves measure; the same for a grey Lambertian sphere (the environment orientation check).
 
 relative RMSE(img, ref) = sqrt(mean((img - ref)^2)) / sqrt(mean(ref^2)), over the pixels and the three
-channels of the region named (all pixels unless stated).
+channels of the region named (all pixels unless stated). Results: OUT/results.json (the sections run).
 """
 
 import argparse
@@ -49,9 +68,12 @@ import drjit as dr  # noqa: E402
 import mitsuba as mi  # noqa: E402
 
 mi.set_variant("llvm_ad_rgb")
-import cook_torrance  # noqa: E402  (needs the variant)
+import cook_torrance  # noqa: E402  (these need the variant)
+import measured  # noqa: E402
+import microfacet  # noqa: E402
 
-cook_torrance.register()
+for _plugin in (cook_torrance, microfacet, measured):
+    _plugin.register()
 
 
 def log(*args):
@@ -62,14 +84,17 @@ def log(*args):
 class Glossy:
     """The glossy_compare server: the scene loaded and the BVH built once; one command per line."""
 
-    def __init__(self, exe, scene, env, size, max_depth):
-        self.proc = subprocess.Popen(
-            [str(exe), "--scene", str(scene), "--env", str(env), "--width", str(size), "--height", str(size),
-             "--max-depth", str(max_depth)],
-            stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
+    def __init__(self, exe, scene, env, size, max_depth, extra=()):
+        """env: a map's path, or a number for a constant environment (--env-constant); extra: further options
+        (e.g. --measured FILE)."""
+        light = ["--env-constant", repr(float(env))] if isinstance(env, (int, float)) else ["--env", str(env)]
+        command = [str(exe), "--scene", str(scene), *light, "--width", str(size), "--height", str(size),
+                   "--max-depth", str(max_depth), *map(str, extra)]
+        self.proc = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True, bufsize=1)
         ready = self.proc.stdout.readline().split(maxsplit=1)
         if not ready or ready[0] != "ready":
-            raise RuntimeError(f"glossy_compare did not start ({ready})")
+            raise RuntimeError(f"glossy_compare did not start ({' '.join(command)}); an older build may lack "
+                               "--env-constant and --measured")
         self.binding = ready[1].strip() if len(ready) > 1 else ""
 
     def _ask(self, line):
@@ -106,7 +131,8 @@ class Glossy:
 
 
 # ----------------------------------------------------------------------------------------------- Mitsuba
-def mitsuba_scene(out, size, max_depth, bsdf, sampler):
+def mitsuba_scene(out, size, max_depth, bsdf, sampler, emitter=None):
+    """emitter: a scene-dictionary emitter; default the sky EXR in out."""
     return mi.load_dict({
         "type": "scene",
         "integrator": {"type": "path", "max_depth": max_depth, "hide_emitters": False},
@@ -118,7 +144,7 @@ def mitsuba_scene(out, size, max_depth, bsdf, sampler):
                      "pixel_format": "rgb"},
             "sampler": {"type": sampler, "sample_count": 1},
         },
-        "sky": {"type": "envmap", "filename": str(out / "sky.exr")},
+        "sky": emitter or {"type": "envmap", "filename": str(out / "sky.exr")},
         "sphere": {"type": "ply", "filename": str(out / "sphere.ply"), "bsdf": bsdf},
     })
 
@@ -137,6 +163,23 @@ def mitsuba_render(scene, spp, seed):
     seconds = time.perf_counter() - start
     mitsuba_last_cpu = time.process_time() - cpu
     return seconds, np.array(image, dtype=np.float64)
+
+
+def mitsuba_compile_seconds(scene, spp, seed):
+    """Renders once with Dr.Jit's kernel history on: (wall seconds, seconds Dr.Jit spent generating and
+    compiling (or loading from its disk cache) the kernels, kernels compiled, kernels loaded from the disk
+    cache). For the warm-up render, whose compile is excluded from the timed renders and reported apart."""
+    dr.kernel_history()  # clears it
+    dr.set_flag(dr.JitFlag.KernelHistory, True)
+    try:
+        seconds, _ = mitsuba_render(scene, spp, seed)
+    finally:
+        dr.set_flag(dr.JitFlag.KernelHistory, False)
+    kernels = [k for k in dr.kernel_history() if "codegen_time" in k]
+    compile_ms = sum(k["codegen_time"] + k["backend_time"] for k in kernels if not k["cache_hit"])
+    compiled = sum(1 for k in kernels if not k["cache_hit"] and not k["cache_disk"])
+    from_disk = sum(1 for k in kernels if k["cache_disk"])
+    return seconds, compile_ms / 1000.0, compiled, from_disk
 
 
 class SppRounding:
@@ -248,90 +291,269 @@ def noise_of_mean(a, b):
     return math.sqrt(np.mean((a - b) ** 2) / 4.0)
 
 
+# ---------------------------------------------------------------------------------------------- efficiency
+LIGHTINGS = {"studio": "studio HDR", "sky": "smooth sky", "constant": "constant 1"}
+MATERIALS = {"ct": "Cook-Torrance E1, blue-rubber", "microfacet": "Microfacet E2, aluminium",
+             "measured": "MERL blue-rubber (NBRDF reconstruction)"}
+
+
+def fit_of(material_file, model, metric):
+    fits = tomllib.loads(Path(material_file).read_text())["fit"]
+    return next(f for f in fits if f["model"] == model and f["metric"] == metric)
+
+
+def sphere_mask(out, size, max_depth, sampler):
+    """Pixels whose whole footprint sees the sphere. The rays through a pixel's four corners (Mitsuba's
+    camera, which glossy's matches) are traced against the very triangle mesh both render; the mesh is
+    convex, so its image is a convex region, and a pixel whose four corners it covers is covered whole.
+    The mask is then shrunk by one more pixel all round (3x3 erosion), a margin for any sub-pixel difference
+    between the two renderers' cameras or film."""
+    scene = mitsuba_scene(out, size, max_depth, {"type": "diffuse"}, sampler, {"type": "constant"})
+    sensor = scene.sensors()[0]
+    n = (size + 1) ** 2
+    i, j = np.meshgrid(np.arange(size + 1), np.arange(size + 1), indexing="ij")  # corner row i, column j
+    position = mi.Point2f((j.ravel() / size).astype(np.float32), (i.ravel() / size).astype(np.float32))
+    ray, _ = sensor.sample_ray(dr.zeros(mi.Float, n), dr.full(mi.Float, 0.5, n), position,
+                               dr.full(mi.Point2f, 0.5, n))
+    hit = np.array(scene.ray_test(ray), dtype=bool).reshape(size + 1, size + 1)
+    covered = hit[:-1, :-1] & hit[1:, :-1] & hit[:-1, 1:] & hit[1:, 1:]
+    padded = np.pad(covered, 1, constant_values=False)
+    mask = np.ones_like(covered)
+    for di in range(3):
+        for dj in range(3):
+            mask &= padded[di:di + size, dj:dj + size]
+    return mask
+
+
+def efficiency_cell(a, ctx, lighting, material):
+    """One (lighting, material) cell: warm-ups, then 2 x seeds renders of each renderer at a.spp, interleaved
+    g m m g g m ..., the images kept over the mask only. Returns the cell's record (efficiency_summary)."""
+    root, out, mask = ctx["root"], ctx["out"], ctx["mask"]
+    env = {"studio": ctx["studio"], "sky": out / "sky.exr", "constant": 1.0}[lighting]
+    emitter = {"studio": {"type": "envmap", "filename": str(ctx["studio"])},
+               "sky": {"type": "envmap", "filename": str(out / "sky.exr")},
+               "constant": {"type": "constant", "radiance": {"type": "rgb", "value": 1.0}}}[lighting]
+    ct_fit = fit_of(root / "materials/blue-rubber.toml", "cook-torrance", "E1")
+    if material == "ct":
+        gltf, extra, bsdf = out / "eff-ct.gltf", (), cook_torrance.bsdf_dict(ct_fit)
+    elif material == "microfacet":
+        gltf, extra = out / "eff-microfacet.gltf", ()
+        bsdf = microfacet.bsdf_dict(fit_of(root / "materials/aluminium.toml", "microfacet", "E2"))
+    else:  # glossy: its tabulated sampler; Mitsuba: the CT E1 fit's mixture as the proposal (measured.py)
+        gltf, extra, bsdf = out / "eff-ct.gltf", ("--measured", ctx["merl"]), measured.bsdf_dict(ctx["merl"], ct_fit)
+    glossy = Glossy(ctx["glossy"], gltf, env, a.size, a.max_depth, extra)
+    mts = mitsuba_scene(out, a.size, a.max_depth, bsdf, a.sampler, emitter)
+
+    # Warm-ups: glossy's thread pool and caches; Mitsuba's JIT compile (the first render), then one more so
+    # that a kernel-cache miss on the seed would show here rather than in the timed runs.
+    glossy.render(a.spp, 9999, a.threads)
+    m_first, m_compile, m_compiled, m_from_disk = mitsuba_compile_seconds(mts, a.spp, 9999)
+    m_second, _ = mitsuba_render(mts, a.spp, 9998)
+    g_t, m_t, g_img, m_img, g_cpu, m_cpu = [], [], [], [], [], []
+    tmp = out / "eff"
+    tmp.mkdir(exist_ok=True)
+    for i in range(2 * a.seeds):
+        for who in (("g", "m") if i % 2 == 0 else ("m", "g")):
+            if who == "g":  # the EXR is written after the render call, outside the time it reports
+                path = tmp / f"glossy-{i}.exr"
+                g_t.append(glossy.render(a.spp, a.seed + i, a.threads, path))
+                g_cpu.append(glossy.last_cpu)
+                g_img.append(read_exr(path)[mask])
+            else:
+                seconds, img = mitsuba_render(mts, a.spp, a.seed + i)
+                m_t.append(seconds)
+                m_cpu.append(mitsuba_last_cpu)
+                m_img.append(img[mask])
+    glossy.close()
+    del mts
+    cell = {"lighting": lighting, "material": material, "glossy_binding": glossy.binding,
+            "mitsuba_bsdf": {k: v for k, v in bsdf.items()}, "spp": a.spp, "pairs": a.seeds,
+            "glossy_seconds": g_t, "mitsuba_seconds": m_t, "glossy_cpu_seconds": g_cpu, "mitsuba_cpu_seconds": m_cpu,
+            "mitsuba_first_render_seconds": m_first, "mitsuba_second_render_seconds": m_second,
+            "mitsuba_compile_seconds": m_compile, "mitsuba_kernels_compiled": m_compiled,
+            "mitsuba_kernels_from_disk_cache": m_from_disk,
+            "load_average": os.getloadavg()}
+    cell.update(efficiency_summary(g_t, g_img, m_t, m_img))
+    return cell
+
+
+def efficiency_summary(g_t, g_img, m_t, m_img):
+    """Per seed pair k (renders 2k, 2k+1 of each): variance = mean((a - b)^2) / 2 over the mask's pixels and
+    the 3 channels, time = the pair's mean render seconds, efficiency = 1 / (time x variance); the ratio
+    glossy / Mitsuba per pair, and its median. Bias: the renderers' means over the mask (all their renders),
+    their difference over its standard error (z), the error from the spread of the per-render means."""
+    def pairs(times, imgs):
+        var = [float(np.mean((imgs[2 * k] - imgs[2 * k + 1]) ** 2) / 2) for k in range(len(imgs) // 2)]
+        sec = [(times[2 * k] + times[2 * k + 1]) / 2 for k in range(len(imgs) // 2)]
+        return var, sec
+
+    g_var, g_sec = pairs(g_t, g_img)
+    m_var, m_sec = pairs(m_t, m_img)
+    ratios = [(ms * mv) / (gs * gv) for gs, gv, ms, mv in zip(g_sec, g_var, m_sec, m_var)]
+    r = {"glossy_variance": g_var, "mitsuba_variance": m_var, "efficiency_ratios": ratios,
+         "efficiency_ratio": statistics.median(ratios),
+         "glossy_seconds_median": statistics.median(g_t), "mitsuba_seconds_median": statistics.median(m_t),
+         "glossy_noise": math.sqrt(statistics.median(g_var)), "mitsuba_noise": math.sqrt(statistics.median(m_var)),
+         "mask_pixels": int(g_img[0].shape[0])}
+    # Bias: per-render means over the mask, for the channel average and per channel.
+    g_means = np.array([img.mean(axis=0) for img in g_img])   # [renders, 3]
+    m_means = np.array([img.mean(axis=0) for img in m_img])
+    for name, g, m in (("", g_means.mean(axis=1), m_means.mean(axis=1)), ("_rgb", g_means, m_means)):
+        se = np.sqrt(g.var(axis=0, ddof=1) / len(g) + m.var(axis=0, ddof=1) / len(m))
+        diff = g.mean(axis=0) - m.mean(axis=0)
+        r["bias_z" + name] = (diff / se).tolist()
+        r["mean_ratio_mitsuba_over_glossy" + name] = (m.mean(axis=0) / g.mean(axis=0)).tolist()
+    # The same standard error from the pixels' variance (assumes independent pixels): a check of the above.
+    def pixel_se2(imgs):
+        c = [img.mean(axis=1) for img in imgs]
+        v = statistics.mean(float(np.mean((c[2 * k] - c[2 * k + 1]) ** 2) / 2) for k in range(len(c) // 2))
+        return v / len(c[0]) / len(c)
+    r["bias_z_pixel_se"] = float((g_means.mean() - m_means.mean()) / math.sqrt(pixel_se2(g_img) + pixel_se2(m_img)))
+    # Pixel by pixel: the squared difference of the two mean images over what their noise alone would give
+    # (from each pixel's spread over the renders). About 1 when the images agree; a structural difference
+    # the mask mean can hide (a mirrored or rotated map, a shifted camera) drives it well above 1.
+    g_stack, m_stack = np.stack(g_img), np.stack(m_img)
+    expected = g_stack.var(axis=0, ddof=1) / len(g_stack) + m_stack.var(axis=0, ddof=1) / len(m_stack)
+    r["pixel_agreement"] = float(np.sum((g_stack.mean(axis=0) - m_stack.mean(axis=0)) ** 2) / np.sum(expected))
+    return r
+
+
 # -------------------------------------------------------------------------------------------------- main
+SECTIONS = ("efficiency", "rays", "agreement")
+
+
+def csv_of(choices):
+    def parse(text):
+        items = [t.strip() for t in text.split(",") if t.strip()]
+        bad = [t for t in items if t not in choices]
+        if bad or not items:
+            raise argparse.ArgumentTypeError(f"choose from {', '.join(choices)} (comma-separated), not {text!r}")
+        return items
+    return parse
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--root", type=Path, default=HERE.parent.parent, help="glossy checkout")
     p.add_argument("--build", type=Path, default=None, help="glossy build folder (default ROOT/build)")
+    p.add_argument("--glossy", type=Path, default=None,
+                   help="glossy_compare to measure (default BUILD/bench/glossy_compare): another build's, to judge it")
     p.add_argument("--out", type=Path, default=None, help="work folder (default BUILD/compare)")
+    p.add_argument("--only", type=csv_of(SECTIONS), default=list(SECTIONS),
+                   help=f"sections to run, comma-separated: {', '.join(SECTIONS)} (default all)")
+    p.add_argument("--lighting", type=csv_of(tuple(LIGHTINGS)), default=list(LIGHTINGS),
+                   help="efficiency: lightings, comma-separated: studio, sky, constant (default all)")
+    p.add_argument("--material", type=csv_of(tuple(MATERIALS)), default=list(MATERIALS),
+                   help="efficiency: materials, comma-separated: ct, microfacet, measured (default all)")
+    p.add_argument("--seeds", type=int, default=4, help="efficiency: seed pairs per renderer and cell (median reported)")
+    p.add_argument("--seed", type=int, default=100, help="efficiency: first seed (render i has seed SEED + i)")
+    p.add_argument("--spp", type=int, default=64, help="efficiency: samples per pixel of every render")
+    p.add_argument("--studio", type=Path, default=None,
+                   help="efficiency: the studio map (default ROOT/../shared/envmaps/studio_small_09_1k.hdr)")
+    p.add_argument("--merl", type=Path, default=None,
+                   help="efficiency: the measured table (default ROOT/../shared/merl/blue-rubber.binary.xz)")
     p.add_argument("--size", type=int, default=256)
-    p.add_argument("--spp", type=int, default=64, help="samples per pixel of the equal-spp runs")
-    p.add_argument("--runs", type=int, default=5, help="timed runs of each renderer (median reported)")
     p.add_argument("--threads", type=int, default=2)
     p.add_argument("--max-depth", type=int, default=3)
-    p.add_argument("--ref-spp", type=int, default=1024, help="spp of each converged image (two halves)")
-    p.add_argument("--check-spp", type=int, default=256, help="spp of each diffuse-sphere check image")
-    p.add_argument("--budget", type=float, default=2.0, help="seconds per equal-time render")
-    p.add_argument("--seeds", type=int, default=3, help="equal-time renders of each renderer")
-    p.add_argument("--ray-spp", type=int, default=16, help="spp of the recorded render of the ray-rate figures")
     p.add_argument("--sampler", default="multijitter", help="Mitsuba sampler plugin")
-    p.add_argument("--material", default="materials/alum-bronze.toml")
-    p.add_argument("--fit", default="cook-torrance:E2")
-    p.add_argument("--fresh", action="store_true", help="re-render the cached converged images")
+    p.add_argument("--runs", type=int, default=5, help="rays: timed runs of each measurement (median reported)")
+    p.add_argument("--ray-spp", type=int, default=16, help="rays: spp of the recorded render")
+    p.add_argument("--ref-spp", type=int, default=1024, help="agreement: spp of each converged image (two halves)")
+    p.add_argument("--check-spp", type=int, default=256, help="agreement: spp of each diffuse-sphere check image")
+    p.add_argument("--sphere-material", default="materials/alum-bronze.toml",
+                   help="the material of sphere.gltf: the rays and agreement sections' and bench/compare-builds'")
+    p.add_argument("--sphere-fit", default="cook-torrance:E2")
+    p.add_argument("--fresh", action="store_true", help="agreement: re-render the cached converged images")
     p.add_argument("--json", type=Path, default=None, help="results file (default OUT/results.json)")
     p.add_argument("--scene-only", action="store_true", help="write the scene files and the sky, then stop")
     a = p.parse_args()
     root = a.root.resolve()
     build = (a.build or root / "build").resolve()
+    exe = (a.glossy or build / "bench/glossy_compare").resolve()
     out = (a.out or build / "compare").resolve()
     refdir = out / "ref"
     refdir.mkdir(parents=True, exist_ok=True)
-    N = a.size * a.size
     wall = time.perf_counter()
+    load_start = os.getloadavg()
     dr.set_thread_count(a.threads)
 
-    # 1. The scene for both.
-    material_file = (root / a.material).resolve()
-    model, metric = a.fit.split(":")
-    fit = next(f for f in tomllib.loads(material_file.read_text())["fit"]
-               if f["model"] == model and f["metric"] == metric)
+    # The scene files: sphere.gltf (--sphere-material) for the rays and agreement sections and
+    # bench/compare-builds, eff-*.gltf for the efficiency table, the PLY, the sky.
+    material_file = (root / a.sphere_material).resolve()
+    model, metric = a.sphere_fit.split(":")
+    fit = fit_of(material_file, model, metric)
     if model != "cook-torrance":
-        raise SystemExit("compare.py: the Mitsuba side implements cook-torrance fits only")
-    triangles = bench_scene.write_scene(out, a.size, a.size, material_file, a.fit)
-    subprocess.run([str(build / "bench/glossy_compare"), "--write-sky", str(out / "sky.exr")], check=True)
+        raise SystemExit("compare.py: the rays and agreement sections take cook-torrance fits only")
+    triangles = bench_scene.write_scene(out, a.size, a.size, material_file, a.sphere_fit)
+    bench_scene.write_sphere_gltf(out / "eff-ct.gltf", root / "materials/blue-rubber.toml", "cook-torrance:E1", a.size, a.size)
+    bench_scene.write_sphere_gltf(out / "eff-microfacet.gltf", root / "materials/aluminium.toml", "microfacet:E2",
+                                  a.size, a.size)
+    subprocess.run([str(exe), "--write-sky", str(out / "sky.exr")], check=True)
     log(f"scene: UV sphere {bench_scene.SEGMENTS}x{bench_scene.RINGS}, {triangles} triangles; sky {out / 'sky.exr'}")
     if a.scene_only:
         print(out)
         return
-
-    glossy = Glossy(build / "bench/glossy_compare", out / "sphere.gltf", out / "sky.exr", a.size, a.max_depth)
-    log(f"glossy: {glossy.binding}")
-    mts = mitsuba_scene(out, a.size, a.max_depth, cook_torrance.bsdf_dict(fit), a.sampler)
     rounding = SppRounding(a.sampler)
-    if rounding.largest_at_most(a.spp) != a.spp:
-        raise SystemExit(f"compare.py: the {a.sampler} sampler does not render {a.spp} spp as asked")
-    log(f"mitsuba {mi.__version__} (drjit {dr.__version__}), variant llvm_ad_rgb, sampler {a.sampler}, "
-        f"{dr.thread_count()} threads")
+    log(f"glossy: {exe}; mitsuba {mi.__version__} (drjit {dr.__version__}), variant llvm_ad_rgb, sampler {a.sampler}, "
+        f"{dr.thread_count()} threads; load average {load_start[0]:.2f}")
+    results = {"mitsuba_version": mi.__version__, "drjit_version": dr.__version__, "variant": "llvm_ad_rgb",
+               "mitsuba_sampler": a.sampler, "size": a.size, "max_depth": a.max_depth, "threads": a.threads,
+               "glossy_compare": str(exe), "triangles": triangles, "sections": a.only}
 
-    # 2. Equal spp. Warm-ups first: glossy's thread pool and caches, Mitsuba's JIT compile.
-    glossy.render(a.spp, 999, a.threads)
-    jit_first, _ = mitsuba_render(mts, a.spp, 999)
-    mitsuba_render(mts, a.spp, 998)
-    g_times, m_times, m_images, g_cpu, m_cpu = [], [], [], [], []
-    for i in range(a.runs):
-        order = ("g", "m") if i % 2 == 0 else ("m", "g")
-        for who in order:
-            if who == "g":  # the EXR is written after the render call, outside the time it reports
-                g_times.append(glossy.render(a.spp, i, a.threads, out / f"equal-spp-glossy-{i}.exr"))
-                g_cpu.append(glossy.last_cpu)
-            else:
-                seconds, img = mitsuba_render(mts, a.spp, i)
-                m_times.append(seconds)
-                m_cpu.append(mitsuba_last_cpu)
-                m_images.append(img)
-    g_med, m_med = statistics.median(g_times), statistics.median(m_times)
-    speed = {
-        "spp": a.spp, "threads": a.threads, "runs": a.runs,
-        "glossy_seconds": g_times, "mitsuba_seconds": m_times,
-        "glossy_samples_per_s": N * a.spp / g_med, "mitsuba_samples_per_s": N * a.spp / m_med,
-        "ratio_glossy_over_mitsuba": m_med / g_med, "mitsuba_first_render_seconds": jit_first,
-        "glossy_cpu_seconds": g_cpu, "mitsuba_cpu_seconds": m_cpu,
-        "glossy_samples_per_cpu_s": N * a.spp / statistics.median(g_cpu),
-        "mitsuba_samples_per_cpu_s": N * a.spp / statistics.median(m_cpu),
-    }
-    log(f"equal spp: glossy {g_med:.3f} s, mitsuba {m_med:.3f} s (median of {a.runs})")
+    # 1. Efficiency.
+    if "efficiency" in a.only:
+        if rounding.largest_at_most(a.spp) != a.spp:
+            raise SystemExit(f"compare.py: the {a.sampler} sampler does not render {a.spp} spp as asked")
+        if a.seeds < 2:
+            raise SystemExit("compare.py: --seeds must be at least 2 (the bias check needs a spread)")
+        ctx = {"root": root, "out": out, "glossy": exe, "mask": sphere_mask(out, a.size, a.max_depth, a.sampler),
+               "studio": (a.studio or root.parent / "shared/envmaps/studio_small_09_1k.hdr").resolve(),
+               "merl": (a.merl or root.parent / "shared/merl/blue-rubber.binary.xz").resolve()}
+        log(f"efficiency: mask of {int(ctx['mask'].sum())} pixels; {a.seeds} seed pairs at {a.spp} spp per cell")
+        cells = []
+        for lighting in a.lighting:
+            for material in a.material:
+                start = time.perf_counter()
+                cells.append(efficiency_cell(a, ctx, lighting, material))
+                c = cells[-1]
+                log(f"  {lighting:8} {material:10} glossy {c['glossy_seconds_median']:.3f} s noise {c['glossy_noise']:.5f}, "
+                    f"Mitsuba {c['mitsuba_seconds_median']:.3f} s noise {c['mitsuba_noise']:.5f}: efficiency ratio "
+                    f"{c['efficiency_ratio']:.3f}, bias z {c['bias_z']:+.1f} (pixel SE {c['bias_z_pixel_se']:+.1f}), pixels "
+                    f"{c['pixel_agreement']:.2f} "
+                    f"[{time.perf_counter() - start:.0f} s]")
+        results["efficiency"] = {"spp": a.spp, "pairs": a.seeds, "seed": a.seed, "studio": str(ctx["studio"]),
+                                 "merl": str(ctx["merl"]), "mask_pixels": int(ctx["mask"].sum()), "cells": cells}
 
-    # 3. Ray rates, 1 and 2 threads (also glossy's thread scaling).
+    if "rays" in a.only or "agreement" in a.only:
+        glossy = Glossy(exe, out / "sphere.gltf", out / "sky.exr", a.size, a.max_depth)
+        log(f"glossy: {glossy.binding}")
+        mts = mitsuba_scene(out, a.size, a.max_depth, cook_torrance.bsdf_dict(fit), a.sampler)
+        results.update({"material": str(material_file), "fit": a.sphere_fit})
+        if "rays" in a.only:
+            results.update(ray_rates(a, glossy, mts, out))
+        if "agreement" in a.only:
+            results.update(agreement(a, glossy, mts, out, refdir, rounding, exe, model, metric, material_file))
+        glossy.close()
+
+    results["wall_seconds"] = time.perf_counter() - wall
+    results["load_average_start"] = load_start
+    results["load_average"] = os.getloadavg()
+    (a.json or out / "results.json").write_text(json.dumps(results, indent=1) + "\n")
+    if "efficiency" in results:
+        print_efficiency(results)
+    if "rays" in results:
+        print_rays(results)
+    if "agreement" in results:
+        print_agreement(results)
+    print(f"\nwall time {results['wall_seconds']:.0f} s; load average at the start {load_start[0]:.2f}, at the end "
+          f"{', '.join(f'{x:.2f}' for x in results['load_average'])} (1, 5, 15 min; this benchmark's own is about "
+          f"{a.threads})")
+
+
+def ray_rates(a, glossy, mts, out):
+    """glossy's path-tracing ray rate beside raw Embree's on the same rays, at 1 and 2 threads; the same ratio
+    for Mitsuba; samples/s at 1 and 2 threads (thread scaling)."""
+    N = a.size * a.size
     rays = {}
     for threads in (1, 2):
         n_rays, samples, pt, raw, raw_packets = glossy.rays(a.ray_spp, threads, a.runs)
@@ -365,8 +587,12 @@ def main():
         log(f"rays, {threads} thread(s): Mitsuba PT >= {n_dumped / m_pt:.3g}/s, its own traversal {n_dumped / m_raw:.3g}/s")
     dr.set_thread_count(a.threads)
     ray_file.unlink()
+    return {"rays": rays, "scaling": scaling}
 
-    # 4. Converged images (cached) and their agreement.
+
+def agreement(a, glossy, mts, out, refdir, rounding, exe, model, metric, material_file):
+    """Converged images of both (each the mean of two half renders, cached in OUT/ref) and their agreement,
+    for sphere.gltf's material and for a grey Lambertian sphere (the environment orientation check)."""
     def converged(name, render_half, spp):
         """(mean of two half renders, the halves), rendered once and cached in OUT/ref."""
         halves = [refdir / f"{name}-{spp}spp-{h}.exr" for h in "ab"]
@@ -389,7 +615,7 @@ def main():
     m_ref, m_halves = converged(f"mitsuba-{a.sampler}-{tag}", mitsuba_half(mts), a.ref_spp)
     reg = {"all": np.ones((a.size, a.size), bool), **regions(a.size)}
 
-    def agreement(g, gh, m, mh):
+    def agree(g, gh, m, mh):
         """Rel. RMSE of Mitsuba's converged image against glossy's per region, beside the noise floor:
         the rel. RMSE two unbiased images with these noise levels would show, sqrt(n_g^2 + n_m^2)."""
         r = {}
@@ -402,93 +628,51 @@ def main():
 
     rms_ref = math.sqrt(np.mean(g_ref ** 2))
     g_ref_noise, m_ref_noise = noise_of_mean(*g_halves), noise_of_mean(*m_halves)
-    agree = {"cook_torrance": agreement(g_ref, g_halves, m_ref, m_halves)}
-    speed["glossy_rmse_vs_glossy_ref"] = [rel_rmse(read_exr(out / f"equal-spp-glossy-{i}.exr"), g_ref)
-                                          for i in range(a.runs)]
-    speed["mitsuba_rmse_vs_glossy_ref"] = [rel_rmse(img, g_ref) for img in m_images]
-    del m_images
-    # The grey Lambertian sphere under the same sky: the environment orientation check.
-    gd = Glossy(build / "bench/glossy_compare", out / "diffuse.gltf", out / "sky.exr", a.size, a.max_depth)
+    result = {"cook_torrance": agree(g_ref, g_halves, m_ref, m_halves)}
+    gd = Glossy(exe, out / "diffuse.gltf", out / "sky.exr", a.size, a.max_depth)
     md = mitsuba_scene(out, a.size, a.max_depth, {"type": "diffuse", "reflectance": {"type": "rgb", "value": 0.5}},
                        a.sampler)
     gd_ref, gd_halves = converged(f"glossy-diffuse-{a.size}-d{a.max_depth}", glossy_half(gd), a.check_spp)
     md_ref, md_halves = converged(f"mitsuba-{a.sampler}-diffuse-{a.size}-d{a.max_depth}", mitsuba_half(md), a.check_spp)
     gd.close()
-    agree["diffuse"] = agreement(gd_ref, gd_halves, md_ref, md_halves)
-    del md
+    result["diffuse"] = agree(gd_ref, gd_halves, md_ref, md_halves)
     write_exr(out / "agreement.exr", np.concatenate([g_ref, m_ref, gd_ref, md_ref], axis=1))
-
-    # 5. Equal time.
-    g_rate, m_rate = speed["glossy_samples_per_s"], speed["mitsuba_samples_per_s"]
-    g_spp = max(1, round(a.budget * g_rate / N))
-    m_spp = rounding.largest_at_most(max(1, round(a.budget * m_rate / N)))
-    mitsuba_render(mts, m_spp, 995)  # compile at this spp
-    eq = {"budget_seconds": a.budget, "glossy_spp": g_spp, "mitsuba_spp": m_spp,
-          "glossy": {"seconds": [], "rmse_vs_glossy_ref": [], "rmse_vs_own_ref": []},
-          "mitsuba": {"seconds": [], "rmse_vs_glossy_ref": [], "rmse_vs_own_ref": []}}
-    for s in range(a.seeds):
-        path = out / f"equal-time-glossy-{s}.exr"
-        seconds = glossy.render(g_spp, 2000 + s, a.threads, path)
-        img = read_exr(path)
-        eq["glossy"]["seconds"].append(seconds)
-        eq["glossy"]["rmse_vs_glossy_ref"].append(rel_rmse(img, g_ref))
-        eq["glossy"]["rmse_vs_own_ref"].append(rel_rmse(img, g_ref))
-        seconds, img = mitsuba_render(mts, m_spp, 2000 + s)
-        eq["mitsuba"]["seconds"].append(seconds)
-        eq["mitsuba"]["rmse_vs_glossy_ref"].append(rel_rmse(img, g_ref))
-        eq["mitsuba"]["rmse_vs_own_ref"].append(rel_rmse(img, m_ref))
-        if s == 0:
-            write_exr(out / "equal-time-mitsuba-0.exr", img)
-    for who in ("glossy", "mitsuba"):
-        # Monte Carlo error falls as 1/sqrt(time): the RMSE each would have had at exactly the budget.
-        eq[who]["rmse_at_budget"] = [e * math.sqrt(t / a.budget) for e, t in
-                                     zip(eq[who]["rmse_vs_glossy_ref"], eq[who]["seconds"])]
-        for k in ("seconds", "rmse_vs_glossy_ref", "rmse_vs_own_ref", "rmse_at_budget"):
-            eq[who][k + "_median"] = statistics.median(eq[who][k])
-    glossy.close()
-
-    results = {
-        "mitsuba_version": mi.__version__, "drjit_version": dr.__version__, "variant": "llvm_ad_rgb",
-        "mitsuba_sampler": a.sampler, "size": a.size, "max_depth": a.max_depth, "material": str(material_file),
-        "fit": a.fit, "triangles": triangles, "speed": speed, "rays": rays, "scaling": scaling,
-        "agreement": agree, "reference": {"spp": a.ref_spp, "check_spp": a.check_spp, "glossy_noise_rel": g_ref_noise / rms_ref,
-                                          "mitsuba_noise_rel": m_ref_noise / rms_ref},
-        "equal_time": eq, "wall_seconds": time.perf_counter() - wall,
-        "load_average": os.getloadavg(),
-    }
-    (a.json or out / "results.json").write_text(json.dumps(results, indent=1) + "\n")
-    print_table(results)
+    return {"agreement": result,
+            "reference": {"spp": a.ref_spp, "check_spp": a.check_spp, "glossy_noise_rel": g_ref_noise / rms_ref,
+                          "mitsuba_noise_rel": m_ref_noise / rms_ref}}
 
 
-def print_table(r):
-    s, eq = r["speed"], r["equal_time"]
-    print(f"\nglossy vs Mitsuba {r['mitsuba_version']} ({r['variant']}, {r['mitsuba_sampler']} sampler): "
-          f"{r['size']}x{r['size']} UV sphere ({r['triangles']} triangles), {r['fit']} of "
-          f"{Path(r['material']).name}, max depth {r['max_depth']}, {s['threads']} threads\n")
-    print(f"{'equal spp (' + str(s['spp']) + ' spp, median of ' + str(s['runs']) + ')':44} {'glossy':>12} {'Mitsuba':>12}")
-    print(f"{'  seconds':44} {statistics.median(s['glossy_seconds']):12.3f} {statistics.median(s['mitsuba_seconds']):12.3f}")
-    print(f"{'  samples/s':44} {s['glossy_samples_per_s']:12.4g} {s['mitsuba_samples_per_s']:12.4g}")
-    print(f"{'  glossy / Mitsuba samples/s':44} {s['ratio_glossy_over_mitsuba']:12.3f}")
-    print(f"{'  samples per CPU second (all threads)':44} {s['glossy_samples_per_cpu_s']:12.4g} "
-          f"{s['mitsuba_samples_per_cpu_s']:12.4g}")
-    print(f"{'  glossy / Mitsuba samples per CPU second':44} "
-          f"{s['glossy_samples_per_cpu_s'] / s['mitsuba_samples_per_cpu_s']:12.3f}")
-    print(f"{'  rel. RMSE vs glossy converged':44} {statistics.median(s['glossy_rmse_vs_glossy_ref']):12.4f} "
-          f"{statistics.median(s['mitsuba_rmse_vs_glossy_ref']):12.4f}")
-    print(f"{'  Mitsuba first render (JIT compile), s':44} {'':12} {s['mitsuba_first_render_seconds']:12.3f}")
-    print(f"equal time ({eq['budget_seconds']:g} s budget, median of {len(eq['glossy']['seconds'])} seeds)")
-    print(f"{'  spp':44} {eq['glossy_spp']:12d} {eq['mitsuba_spp']:12d}")
-    print(f"{'  seconds':44} {eq['glossy']['seconds_median']:12.3f} {eq['mitsuba']['seconds_median']:12.3f}")
-    print(f"{'  rel. RMSE vs glossy converged':44} {eq['glossy']['rmse_vs_glossy_ref_median']:12.4f} "
-          f"{eq['mitsuba']['rmse_vs_glossy_ref_median']:12.4f}")
-    print(f"{'  rel. RMSE vs own converged':44} {eq['glossy']['rmse_vs_own_ref_median']:12.4f} "
-          f"{eq['mitsuba']['rmse_vs_own_ref_median']:12.4f}")
-    print(f"{'  rel. RMSE scaled to the budget, sqrt(t/T)':44} {eq['glossy']['rmse_at_budget_median']:12.4f} "
-          f"{eq['mitsuba']['rmse_at_budget_median']:12.4f}")
-    print(f"{'  glossy / Mitsuba rel. RMSE at the budget':44} "
-          f"{eq['glossy']['rmse_at_budget_median'] / eq['mitsuba']['rmse_at_budget_median']:12.3f}")
+def print_efficiency(r):
+    e = r["efficiency"]
+    print(f"\n## Efficiency, glossy vs Mitsuba {r['mitsuba_version']} ({r['variant']}, {r['mitsuba_sampler']} sampler)\n")
+    print(f"Efficiency = 1 / (render seconds x variance); variance = mean((a - b)^2) / 2 over the sphere's "
+          f"{e['mask_pixels']} fully covered pixels and the 3 channels, for two renders a, b of different seeds; "
+          f"noise = sqrt(variance). {r['size']}x{r['size']}, {e['spp']} spp, max depth {r['max_depth']}, "
+          f"{r['threads']} threads. Medians over {e['pairs']} seed pairs per renderer and cell; the efficiency ratio "
+          f"> 1 when glossy is the more efficient (in brackets: its least and greatest over the pairs). Bias z: "
+          f"(glossy's mean - Mitsuba's) over the mask and all renders, over its standard error. Pixels: the squared "
+          f"difference of the two mean images over what their noise explains (about 1 when they agree). "
+          f"**!** marks |z| > 4 or pixels > 1.5. Mitsuba 1st s: its first (warm-up) render, not in its times, and the "
+          f"seconds Dr.Jit spent compiling kernels in it (none when its disk cache, ~/.drjit, has them).\n")
+    print("| lighting | material | glossy s | glossy noise | Mitsuba s | Mitsuba noise | efficiency glossy / Mitsuba "
+          "| bias z | pixels | Mitsuba 1st s |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for c in e["cells"]:
+        ratios = c["efficiency_ratios"]
+        z_flag = " **!**" if abs(c["bias_z"]) > 4 else ""
+        p_flag = " **!**" if c["pixel_agreement"] > 1.5 else ""
+        compiled = f" ({c['mitsuba_compile_seconds']:.2f} compile)" if c["mitsuba_kernels_compiled"] else ""
+        print(f"| {LIGHTINGS[c['lighting']]} | {MATERIALS[c['material']]} | {c['glossy_seconds_median']:.3f} | "
+              f"{c['glossy_noise']:.5f} | {c['mitsuba_seconds_median']:.3f} | {c['mitsuba_noise']:.5f} | "
+              f"**{c['efficiency_ratio']:.3f}** ({min(ratios):.3g}-{max(ratios):.3g}) | {c['bias_z']:+.1f}{z_flag} | "
+              f"{c['pixel_agreement']:.2f}{p_flag} | "
+              f"{c['mitsuba_first_render_seconds']:.2f}{compiled} |")
+
+
+def print_rays(r):
     sc = r["scaling"]
-    print(f"threads ({sc['spp']} spp), samples/s")
+    print(f"\nsphere.gltf: {Path(r['material']).name} {r['fit']} under the smooth sky")
+    print(f"threads ({sc['spp']} spp), samples/s {'glossy':>22} {'Mitsuba':>12}")
     print(f"{'  1 thread':44} {sc['glossy_1']:12.4g} {sc['mitsuba_1']:12.4g}")
     print(f"{'  2 threads':44} {sc['glossy_2']:12.4g} {sc['mitsuba_2']:12.4g}")
     print(f"{'  scaling 1 -> 2':44} {sc['glossy_2'] / sc['glossy_1']:12.2f} {sc['mitsuba_2'] / sc['mitsuba_1']:12.2f}")
@@ -500,11 +684,13 @@ def print_table(r):
     print(f"Mitsuba on the same rays (its ray count taken as glossy's: a lower bound): "
           f"{'PT rays/s':>12} {'own raw':>12} {'PT/raw':>8}")
     for t, v in r["rays"].items():
-        if "mitsuba_raw_seconds" in v:
-            print(f"{'  ' + str(t) + ' thread(s)':44} {v['mitsuba_pt_rays_per_s']:12.4g} {v['mitsuba_raw_rays_per_s']:12.4g} "
-                  f"{100 * v['mitsuba_pt_over_raw']:7.1f}%")
-    print(f"agreement of the converged images (Cook-Torrance {r['reference']['spp']} spp each, grey diffuse "
-          f"{r['reference']['check_spp']} spp each): rel. RMSE Mitsuba vs glossy [noise floor]")
+        print(f"{'  ' + str(t) + ' thread(s)':44} {v['mitsuba_pt_rays_per_s']:12.4g} {v['mitsuba_raw_rays_per_s']:12.4g} "
+              f"{100 * v['mitsuba_pt_over_raw']:7.1f}%")
+
+
+def print_agreement(r):
+    print(f"\nagreement of the converged images ({Path(r['material']).name} {r['fit']} {r['reference']['spp']} spp "
+          f"each, grey diffuse {r['reference']['check_spp']} spp each): rel. RMSE Mitsuba vs glossy [noise floor]")
     for name, g in r["agreement"].items():
         ratio = ", ".join(f"{x:.4f}" for x in g["mean_ratio_sphere"])
         cells = ", ".join(f"{region} {g[region]:.2e} [{g['noise_floor_' + region]:.2e}]"
@@ -512,9 +698,8 @@ def print_table(r):
         print(f"  {name:14} {cells}")
         print(f"  {'':14} mean over the sphere, Mitsuba / glossy (R, G, B): {ratio}")
     ref = r["reference"]
-    print(f"  noise of the converged Cook-Torrance images themselves (rel. RMSE about their expectation, from "
-          f"their halves): glossy {ref['glossy_noise_rel']:.2e}, Mitsuba {ref['mitsuba_noise_rel']:.2e}")
-    print(f"\nwall time {r['wall_seconds']:.0f} s, load average {', '.join(f'{x:.2f}' for x in r['load_average'])}")
+    print(f"  noise of the converged images themselves (rel. RMSE about their expectation, from their halves): "
+          f"glossy {ref['glossy_noise_rel']:.2e}, Mitsuba {ref['mitsuba_noise_rel']:.2e}")
 
 
 if __name__ == "__main__":

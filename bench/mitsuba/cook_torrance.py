@@ -42,6 +42,35 @@ def fresnel_scalar(c, eta):
     return 0.5 * a * a * (1.0 + b * b)
 
 
+def lobe_probability(specular, kd):
+    """glossy's lobeProbability() (brdf_sample.h): the specular lobe's share from the lobes' approximate
+    albedos (the diffuse one the mean of Kd), clamped to [0.05, 0.95] while both lobes have some albedo."""
+    diffuse = sum(kd) / 3.0
+    if not specular > 0.0:
+        return 0.0
+    if not diffuse > 0.0:
+        return 1.0
+    return min(max(specular / (specular + diffuse), 0.05), 0.95)
+
+
+class HalfVector:
+    """The half-vector terms of a direction pair (V, L), both with z > 0, formed from h = L + V without
+    cancellation (glossy's half_vector.h, vgroove.h): cos th_h, 1 - cos th_h = |h_p|^2 / (|h| (|h| + h_z)),
+    tan^2 th_h = |h_p|^2 / h_z^2, <V,H>, and the V-groove G (0 for <V,H> <= 0). Terms a model does not use
+    cost nothing: Dr.Jit compiles only what the outputs need."""
+
+    def __init__(self, V, L):
+        h = V + L
+        p2 = h.x * h.x + h.y * h.y
+        length = dr.sqrt(p2 + h.z * h.z)
+        self.cos = h.z / length
+        self.one_minus_cos = p2 / (length * (length + h.z))
+        self.tan2 = p2 / (h.z * h.z)
+        self.cos_vh = dr.dot(V, h) / length
+        s = 2.0 * self.cos / self.cos_vh
+        self.g = dr.select(self.cos_vh > 0.0, dr.minimum(1.0, dr.minimum(s * V.z, s * L.z)), 0.0)
+
+
 class CookTorranceBSDF(mi.BSDF):
     def __init__(self, props):
         mi.BSDF.__init__(self, props)
@@ -49,11 +78,7 @@ class CookTorranceBSDF(mi.BSDF):
         self.ks = [props["ks_r"], props["ks_g"], props["ks_b"]]
         self.m = float(props["m"])
         self.eta = float(props["eta"])
-        # The lobe choice of glossy's lobeProbability(): approximate albedos, clamped to [0.05, 0.95].
-        specular = 4.0 * (sum(self.ks) / 3.0) * fresnel_scalar(1.0, self.eta)
-        diffuse = sum(self.kd) / 3.0
-        p = specular / (specular + diffuse) if diffuse > 0.0 else 1.0
-        self.p_spec = 0.0 if specular <= 0.0 else min(max(p, 0.05), 0.95)
+        self.p_spec = lobe_probability(4.0 * (sum(self.ks) / 3.0) * fresnel_scalar(1.0, self.eta), self.kd)
         self.m_flags = mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide
         self.m_components = [mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.FrontSide,
                              mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide]
@@ -61,23 +86,16 @@ class CookTorranceBSDF(mi.BSDF):
     # rho(L, V) * L_z and the mixture pdf, sharing the half-vector terms.
     def _eval_pdf(self, V, L, active):
         m2 = self.m * self.m
-        h = V + L
-        p2 = h.x * h.x + h.y * h.y
-        inv_len = dr.rsqrt(p2 + h.z * h.z)
-        cos_h = h.z * inv_len
-        tan2 = p2 / (h.z * h.z)
-        cos_vh = dr.dot(V, h) * inv_len
-        e = dr.exp(-tan2 / m2)
-        cos2 = cos_h * cos_h
+        h = HalfVector(V, L)
+        e = dr.exp(-h.tan2 / m2)
+        cos2 = h.cos * h.cos
         d = e / (m2 * cos2 * cos2)
-        s = 2.0 * cos_h / cos_vh
-        g = dr.select(cos_vh > 0.0, dr.minimum(1.0, dr.minimum(s * V.z, s * L.z)), 0.0)
-        f = fresnel_cook_torrance(cos_vh, self.eta)
+        f = fresnel_cook_torrance(h.cos_vh, self.eta)
         valid = active & (L.z > 0.0) & (V.z > 0.0)
         # (Kd/pi + Ks D F G / (pi L_z V_z)) * L_z
-        spec = d * f * g / (dr.pi * V.z)
+        spec = d * f * h.g / (dr.pi * V.z)
         value = mi.Color3f(self.kd) * (L.z / dr.pi) + mi.Color3f(self.ks) * spec
-        lobe_pdf = dr.select(cos_vh > 0.0, e / (dr.pi * m2 * cos2 * cos_h * 4.0 * cos_vh), 0.0)
+        lobe_pdf = dr.select(h.cos_vh > 0.0, e / (dr.pi * m2 * cos2 * h.cos * 4.0 * h.cos_vh), 0.0)
         pdf = self.p_spec * lobe_pdf + (1.0 - self.p_spec) * L.z / dr.pi
         return dr.select(valid, value, 0.0), dr.select(valid, pdf, 0.0)
 
@@ -90,8 +108,8 @@ class CookTorranceBSDF(mi.BSDF):
     def eval_pdf(self, ctx, si, wo, active=True):
         return self._eval_pdf(si.wi, wo, active)
 
-    def sample(self, ctx, si, sample1, sample2, active=True):
-        V = si.wi
+    def sample_direction(self, V, sample1, sample2):
+        """L drawn from the mixture (also the measured plugin's proposal): (L, specular lobe?, lobe ok)."""
         specular = sample1 < self.p_spec
         # Beckmann half vector: 1 - cos th = tan^2 / (sec (sec + 1)), no cancellation.
         tan2 = -self.m * self.m * dr.log(1.0 - sample2.x)
@@ -104,19 +122,13 @@ class CookTorranceBSDF(mi.BSDF):
         vh = dr.dot(V, H)
         L_spec = 2.0 * vh * H - V
         L_diff = mi.warp.square_to_cosine_hemisphere(sample2)
-        L = dr.select(specular, L_spec, L_diff)
-        value, pdf = self._eval_pdf(V, L, active)
-        valid = active & (V.z > 0.0) & (L.z > 0.0) & (pdf > 0.0) & dr.isfinite(pdf) & (~specular | (vh > 0.0))
+        return dr.select(specular, L_spec, L_diff), specular, ~specular | (vh > 0.0)
 
-        bs = dr.zeros(mi.BSDFSample3f)
-        bs.wo = L
-        bs.pdf = dr.select(valid, pdf, 0.0)
-        bs.eta = 1.0
-        bs.sampled_type = dr.select(specular, mi.UInt32(+mi.BSDFFlags.GlossyReflection),
-                                    mi.UInt32(+mi.BSDFFlags.DiffuseReflection))
-        bs.sampled_component = dr.select(specular, mi.UInt32(0), mi.UInt32(1))
-        weight = dr.select(valid, value / pdf, 0.0)
-        return bs, weight
+    def sample(self, ctx, si, sample1, sample2, active=True):
+        V = si.wi
+        L, specular, lobe_ok = self.sample_direction(V, sample1, sample2)
+        value, pdf = self._eval_pdf(V, L, active)
+        return make_sample(L, specular, active & lobe_ok & (V.z > 0.0) & (L.z > 0.0), value, pdf)
 
     def traverse(self, callback):
         pass
@@ -126,6 +138,20 @@ class CookTorranceBSDF(mi.BSDF):
 
     def to_string(self):
         return f"CookTorranceBSDF[kd={self.kd}, ks={self.ks}, m={self.m}, eta={self.eta}, p_spec={self.p_spec:.4f}]"
+
+
+def make_sample(L, specular, valid, value, pdf):
+    """Mitsuba's (BSDFSample3f, weight) for a direction L drawn by the mixture: weight = value / pdf, both 0
+    where the sample is invalid or its density is not a positive finite number."""
+    valid = valid & (pdf > 0.0) & dr.isfinite(pdf)
+    bs = dr.zeros(mi.BSDFSample3f)
+    bs.wo = L
+    bs.pdf = dr.select(valid, pdf, 0.0)
+    bs.eta = 1.0
+    bs.sampled_type = dr.select(specular, mi.UInt32(+mi.BSDFFlags.GlossyReflection),
+                                mi.UInt32(+mi.BSDFFlags.DiffuseReflection))
+    bs.sampled_component = dr.select(specular, mi.UInt32(0), mi.UInt32(1))
+    return bs, dr.select(valid, value / pdf, 0.0)
 
 
 def register():

@@ -118,6 +118,13 @@ def write_ply(path, positions, normals, indices):
     Path(path).write_bytes(header.encode("ascii") + vertices.tobytes() + faces.tobytes())
 
 
+def write_sphere_gltf(path, material_file, fit, width, height):
+    """One more glTF of the same sphere (own .bin beside it) bound to material_file's fit through extras.glossy."""
+    positions, normals, indices = uv_sphere()
+    write_gltf(path, positions, normals, indices,
+               {"name": "object", "extras": {"glossy": {"material": str(material_file), "fit": fit}}}, width, height)
+
+
 def write_scene(out_dir, width, height, material_file, fit):
     """Writes sphere.gltf/.bin (bound to material_file's fit), diffuse.gltf/.bin (grey Lambertian, for the
     environment-orientation check) and sphere.ply into out_dir. Returns the triangle count."""
