@@ -32,18 +32,32 @@ Rgb parseRgb(const std::string& text, const std::string& option) {
 
 }  // namespace
 
-Environment environmentFromOptions(const std::string& file, const std::string& constant, double rotateDegrees) {
-  if (!constant.empty()) return Environment::constant(parseRgb(constant, "--env-constant"));
-  if (!file.empty()) return Environment::load(file, rotateDegrees);
-  return Environment::makeDefault(rotateDegrees);
+void SceneOptions::addTo(CLI::App* app) {
+  app->add_option("--scene", scene, "glTF scene (.gltf or .glb); default: scenes/preview.gltf");
+  app->add_option("--camera", camera, "Camera by name (default: the scene's first)");
+  auto* file = app->add_option("--env", env, "Lat-long environment map (.exr, .hdr); default: the built-in sky");
+  auto* constant = app->add_option("--env-constant", envConstant, "Constant environment radiance: V or R,G,B");
+  file->excludes(constant);
+  app->add_option("--env-rotate", envRotate, "Rotate the environment about +Y, degrees");
 }
 
-const Camera& cameraFromOptions(const SceneDescription& scene, const std::string& name, const std::string& scenePath) {
-  if (scene.cameras.empty()) throw InputError(scenePath + ": the scene has no camera");
-  if (name.empty()) return scene.cameras.front();
-  for (const Camera& c : scene.cameras)
-    if (c.name == name) return c;
-  throw InputError(scenePath + ": no camera named '" + name + "'");
+std::string SceneOptions::scenePath() const {
+  return scene.empty() ? (std::filesystem::path(GLOSSY_SOURCE_DIR) / "scenes/preview.gltf").string() : scene;
+}
+
+Environment SceneOptions::environment() const {
+  if (!envConstant.empty()) return Environment::constant(parseRgb(envConstant, "--env-constant"));
+  if (!env.empty()) return Environment::load(env, envRotate);
+  return Environment::makeDefault(envRotate);
+}
+
+const Camera& SceneOptions::cameraOf(const SceneDescription& description) const {
+  const std::string where = description.source.string();
+  if (description.cameras.empty()) throw InputError(where + ": the scene has no camera");
+  if (camera.empty()) return description.cameras.front();
+  for (const Camera& c : description.cameras)
+    if (c.name == camera) return c;
+  throw InputError(where + ": no camera named '" + camera + "'");
 }
 
 }  // namespace glossy::cli
