@@ -1,9 +1,9 @@
 #include "materials/params/importer.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/parse_number.h"
 #include "materials/models/registry.h"
 
-#include <charconv>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -25,13 +25,9 @@ std::vector<std::string> splitLines(std::string_view text) {
   return lines;
 }
 
-double parseNumber(const std::string& s, const std::string& where) {
-  double v = 0.0;
-  const char* b = s.data();
-  if (!s.empty() && s[0] == '+') ++b;
-  auto [end, ec] = std::from_chars(b, s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size()) throw InputError(where + ": '" + s + "' is not a number");
-  return v;
+double requireNumber(const std::string& s, const std::string& where) {
+  if (const auto v = parseNumber(s)) return *v;
+  throw InputError(where + ": '" + s + "' is not a number");
 }
 
 // The supplement's row label → a registry model name.
@@ -123,7 +119,7 @@ std::vector<MaterialFile> importSupplement(std::string_view text, const std::str
         const std::string symbol = (*a)[1];
         const std::string key = supplementKey(symbol);
         if (key.empty()) throw InputError(context + ": unknown parameter '" + symbol + "'");
-        const double v = parseNumber((*a)[2], context + ": " + symbol);
+        const double v = requireNumber((*a)[2], context + ": " + symbol);
         if (c < 0) {
           if (fit.params.has(key)) throw InputError(context + ": parameter '" + symbol + "' given twice");
           fit.params.set(key, v);
@@ -168,18 +164,9 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
     throw InputError(source + ": cannot tell the metric (name the file *_E1.fit or *_E2.fit)");
 
   auto parseRgb = [](const std::string& list, const std::string& where) {
-    Rgb rgb;
-    std::istringstream in(list);
-    std::string item;
-    int c = 0;
-    while (std::getline(in, item, ',')) {
-      item.erase(0, item.find_first_not_of(" \t"));
-      item.erase(item.find_last_not_of(" \t") + 1);
-      if (c >= 3) throw InputError(where + ": expected 3 values");
-      rgb[c++] = parseNumber(item, where);
-    }
-    if (c != 3) throw InputError(where + ": expected 3 values");
-    return rgb;
+    const auto v = parseNumberList(list);
+    if (!v || v->size() != 3) throw InputError(where + ": expected 3 values, got '" + list + "'");
+    return Rgb((*v)[0], (*v)[1], (*v)[2]);
   };
 
   std::vector<MaterialFile> out;
@@ -217,7 +204,7 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
       if (value.front() == '[')
         fit.params.set(key->second, parseRgb(value.substr(1, value.size() - 2), context + ": " + arg));
       else
-        fit.params.set(key->second, parseNumber(value, context + ": " + arg));
+        fit.params.set(key->second, requireNumber(value, context + ": " + arg));
     }
     validateFit(fit, context);
     MaterialFile mat = newMaterial(name, kFitLinesSource);

@@ -1,6 +1,7 @@
 // glossy sample: directions drawn from a BRDF's sampler for one outgoing direction, with their pdf and
 // weight, so that anyone can check the sampler (shared/spec/interfaces.md).
 #include "materials/core/input_error.h"
+#include "materials/core/parse_number.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
 #include "renderer/cli/number_format.h"
@@ -9,7 +10,6 @@
 #include <cstdio>
 #include <memory>
 #include <random>
-#include <sstream>
 
 namespace glossy::cli {
 
@@ -23,22 +23,9 @@ struct SampleOptions {
 };
 
 Vec3 parseDirection(const std::string& text) {
-  std::stringstream s(text);
-  std::string item;
-  double v[3];
-  int n = 0;
-  while (std::getline(s, item, ',')) {
-    size_t used = 0;
-    try {
-      if (n < 3) v[n] = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (n >= 3 || used != item.size()) throw InputError("--wo: '" + text + "' is not x,y,z");
-    ++n;
-  }
-  if (n != 3) throw InputError("--wo: '" + text + "' is not x,y,z");
-  const Vec3 d(v[0], v[1], v[2]);
+  const auto v = parseNumberList(text);
+  if (!v || v->size() != 3) throw InputError("--wo: '" + text + "' is not x,y,z");
+  const Vec3 d((*v)[0], (*v)[1], (*v)[2]);
   const double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
   if (!std::isfinite(len) || len == 0.0) throw InputError("--wo: '" + text + "' is zero or not finite");
   return d / len;

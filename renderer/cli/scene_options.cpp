@@ -1,33 +1,21 @@
 #include "renderer/cli/scene_options.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/parse_number.h"
 
 #include <cmath>
-#include <sstream>
-#include <vector>
 
 namespace glossy::cli {
 
 namespace {
 
 Rgb parseRgb(const std::string& text, const std::string& option) {
-  std::stringstream s(text);
-  std::vector<double> v;
-  std::string item;
-  while (std::getline(s, item, ',')) {
-    try {
-      size_t used = 0;
-      v.push_back(std::stod(item, &used));
-      if (used != item.size()) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      throw InputError(option + ": '" + text + "' is not a number or R,G,B");
-    }
-  }
-  if (v.size() == 1) v.assign(3, v[0]);
-  if (v.size() != 3) throw InputError(option + ": '" + text + "' is not a number or R,G,B");
-  for (double x : v)
+  auto v = parseNumberList(text);
+  if (v && v->size() == 1) v->assign(3, v->front());
+  if (!v || v->size() != 3) throw InputError(option + ": '" + text + "' is not a number or R,G,B");
+  for (double x : *v)
     if (!std::isfinite(x) || x < 0.0) throw InputError(option + ": radiance must be finite and >= 0, got '" + text + "'");
-  return {v[0], v[1], v[2]};
+  return {(*v)[0], (*v)[1], (*v)[2]};
 }
 
 }  // namespace

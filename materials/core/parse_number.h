@@ -1,0 +1,37 @@
+// Numbers read from text (imported parameters, command-line options, stdin): what std::from_chars reads
+// (decimal or scientific, "inf", "nan"), with an optional leading '+', and nothing else around it.
+#pragma once
+
+#include <algorithm>
+#include <charconv>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace glossy {
+
+inline std::optional<double> parseNumber(std::string_view text) {
+  if (text.starts_with('+')) text.remove_prefix(1);
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return v;
+}
+
+// "x, y,z": comma-separated numbers, each with optional spaces or tabs around it; nullopt if any is not one.
+inline std::optional<std::vector<double>> parseNumberList(std::string_view text) {
+  std::vector<double> values;
+  for (size_t start = 0;;) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    std::string_view item = text.substr(start, comma - start);
+    item.remove_prefix(std::min(item.find_first_not_of(" \t"), item.size()));
+    item.remove_suffix(item.size() - (item.find_last_not_of(" \t") + 1));
+    const auto v = parseNumber(item);
+    if (!v) return std::nullopt;
+    values.push_back(*v);
+    if (comma == text.size()) return values;
+    start = comma + 1;
+  }
+}
+
+}  // namespace glossy
