@@ -4,6 +4,7 @@
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/output.h"
 
 #include <nlohmann/json.hpp>
 
@@ -56,8 +57,7 @@ int runError(const ErrorOptions& o) {
       out += line;
     }
   }
-  std::fwrite(out.data(), 1, out.size(), stdout);
-  return std::fflush(stdout) == 0 ? 0 : 1;
+  return writeStdout(out);
 }
 
 }  // namespace

@@ -4,11 +4,9 @@
 #include "materials/models/brdf.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/number_format.h"
+#include "renderer/cli/output.h"
 
-#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -52,19 +50,12 @@ int runEval(const EvalOptions& o) {
   out.reserve(pairs.size() * 80);
   for (const auto& [L, V] : pairs) {
     const Rgb rho = eval(brdf, L, V);
-    appendNumber(out, rho.r);
-    out += ',';
-    appendNumber(out, rho.g);
-    out += ',';
-    appendNumber(out, rho.b);
-    if (o.pdf) {
-      out += ',';
-      appendNumber(out, pdf(brdf, L, V));
-    }
-    out += '\n';
+    if (o.pdf)
+      appendLine(out, {rho.r, rho.g, rho.b, pdf(brdf, L, V)});
+    else
+      appendLine(out, {rho.r, rho.g, rho.b});
   }
-  std::fwrite(out.data(), 1, out.size(), stdout);
-  return std::fflush(stdout) == 0 ? 0 : 1;
+  return writeStdout(out);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "materials/fitting/fitter.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/output.h"
 
 #include <algorithm>
 #include <chrono>
@@ -88,10 +89,7 @@ int runSingle(const FitOptions& o) {
   report.fit.source = "glossy fit to " + tablePath.filename().string();
   std::cerr << tablePath.filename().string() << " " << describeFit(report) << "\n";
   material.put(report.fit);
-  if (o.output.empty()) {
-    std::cout << toToml(material);
-    return std::fflush(stdout) == 0 ? 0 : 1;
-  }
+  if (o.output.empty()) return writeStdout(toToml(material));
   writeFileAtomically(o.output, toToml(material));
   return 0;
 }

@@ -4,7 +4,7 @@
 #include "materials/core/parse_number.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/number_format.h"
+#include "renderer/cli/output.h"
 
 #include <cmath>
 #include <cstdio>
@@ -43,22 +43,16 @@ int runSample(const SampleOptions& o) {
   for (long long i = 0; i < o.count; ++i) {
     const double uLobe = uniform(rng), u1 = uniform(rng), u2 = uniform(rng);
     const BrdfSample s = sample(brdf, V, uLobe, Vec2(u1, u2));
-    if (!s.valid()) {
+    if (!s.valid())
       out += "0,0,0,0,0,0,0\n";
-    } else {
-      for (double x : {s.L.x, s.L.y, s.L.z, s.pdf, s.weight.r, s.weight.g, s.weight.b}) {
-        appendNumber(out, x);
-        out += ',';
-      }
-      out.back() = '\n';
-    }
+    else
+      appendLine(out, {s.L.x, s.L.y, s.L.z, s.pdf, s.weight.r, s.weight.g, s.weight.b});
     if (out.size() > (1u << 24)) {
       std::fwrite(out.data(), 1, out.size(), stdout);
       out.clear();
     }
   }
-  std::fwrite(out.data(), 1, out.size(), stdout);
-  return std::fflush(stdout) == 0 ? 0 : 1;
+  return writeStdout(out);
 }
 
 }  // namespace
