@@ -151,21 +151,12 @@ std::pair<int, int> parseShard(const std::string& text) {
 }
 
 int runSheets(const SheetOptions& o) {
-  std::vector<std::filesystem::path> files;
-  const std::vector<std::string> inputs = o.inputs.empty() ? std::vector<std::string>{defaultMaterialsDir().string()} : o.inputs;
-  for (const std::string& in : inputs) {
+  for (const std::string& in : o.inputs) {
     std::error_code ec;
-    if (std::filesystem::is_directory(in, ec)) {
-      for (const auto& e : std::filesystem::directory_iterator(in))
-        if (e.path().extension() == ".toml") files.push_back(e.path());
-    } else if (std::filesystem::is_regular_file(in, ec)) {
-      files.push_back(in);
-    } else {
+    if (!std::filesystem::is_directory(in, ec) && !std::filesystem::is_regular_file(in, ec))
       throw InputError(in + ": no such material file or folder");
-    }
   }
-  std::sort(files.begin(), files.end());
-  files.erase(std::unique(files.begin(), files.end()), files.end());
+  std::vector<std::filesystem::path> files = materialFiles(o.inputs);
   if (!o.shard.empty()) {
     const auto [index, count] = parseShard(o.shard);
     std::vector<std::filesystem::path> mine;
