@@ -48,12 +48,8 @@ struct Stage {
 // $GLOSSY_MERL_DIR. Returns null with a note saying where to get the data when there is none.
 std::shared_ptr<const MerlTable> findMeasured(const MaterialFile& m, const SheetOptions& o, const std::string& explicitPath,
                                               std::string& note) {
-  std::optional<std::filesystem::path> path;
-  if (!explicitPath.empty()) {
-    path = findMeasuredTable(explicitPath, o.merlDir);
-  } else if (!m.measured.empty()) {
-    path = resolveMeasured(m, o.merlDir);
-  }
+  const std::optional<std::filesystem::path> path =
+      explicitPath.empty() ? resolveMeasured(m, o.merlDir) : findMeasuredTable(explicitPath, o.merlDir);
   if (!path) {
     note = m.measured.empty() ? "the material names no measured table"
                               : "no " + m.measured + " in --merl-dir or $GLOSSY_MERL_DIR: get the MERL BRDF database "
