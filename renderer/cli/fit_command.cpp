@@ -64,18 +64,6 @@ std::string describeFit(const FitReport& r) {
   return s.str();
 }
 
-std::vector<Metric> metricsOf(const std::vector<std::string>& names) {
-  std::vector<Metric> out;
-  for (const auto& n : names) out.push_back(parseMetric(n, "--metric"));
-  return out;
-}
-
-std::vector<std::string> modelsOf(const std::vector<std::string>& names) {
-  if (!names.empty()) return names;
-  const auto all = fittableModels();
-  return {all.begin(), all.end()};
-}
-
 int runSingle(const FitOptions& o) {
   if (o.models.size() != 1 || o.metrics.size() != 1)
     throw InputError("glossy fit --measured needs one --model and one --metric (or use --measured-dir for all)");
@@ -113,8 +101,10 @@ std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
 int runBatch(const FitOptions& o) {
   if (o.outDir.empty()) throw InputError("glossy fit --measured-dir needs --out-dir");
   const auto tables = tablesIn(o.measuredDir);
-  const std::vector<std::string> models = modelsOf(o.models);
-  const std::vector<Metric> metrics = metricsOf(o.metrics.empty() ? std::vector<std::string>{"E1", "E2"} : o.metrics);
+  const auto fittable = fittableModels();
+  const std::vector<std::string> models = o.models.empty() ? std::vector<std::string>(fittable.begin(), fittable.end()) : o.models;
+  std::vector<Metric> metrics;
+  for (const std::string& m : o.metrics.empty() ? std::vector<std::string>{"E1", "E2"} : o.metrics) metrics.push_back(parseMetric(m, "--metric"));
   for (const auto& m : models) requireFittable(m);
   std::filesystem::create_directories(o.outDir);
   const std::string settings = o.settings.describe();
