@@ -19,7 +19,10 @@ void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::stri
 
 namespace {
 
-constexpr std::string_view kMetrics[] = {"E1", "E2"};
+
+void checkMetric(const std::string& metric, const std::string& what) {
+  if (metric != "E1" && metric != "E2") throw InputError(what + " must be E1 or E2, got '" + metric + "'");
+}
 
 std::string quoteList(std::span<const std::string_view> items) {
   std::string s;
@@ -109,8 +112,7 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
   requireString(t, "model", where);
   requireString(t, "metric", where);
   const ModelInfo* model = &requireModel(fit.id.model, where + ": key 'model'");
-  if (std::find(std::begin(kMetrics), std::end(kMetrics), fit.id.metric) == std::end(kMetrics))
-    throw InputError(where + ": key 'metric': must be E1 or E2, got '" + fit.id.metric + "'");
+  checkMetric(fit.id.metric, where + ": key 'metric':");
 
   for (auto&& [k, node] : t) {
     const std::string key(k.str());
@@ -175,8 +177,7 @@ FitId FitId::parse(std::string_view text, std::string_view context) {
   id.model = std::string(text.substr(0, colon));
   id.metric = std::string(text.substr(colon + 1));
   requireModel(id.model, std::string(context));
-  if (std::find(std::begin(kMetrics), std::end(kMetrics), id.metric) == std::end(kMetrics))
-    throw InputError(std::string(context) + ": metric must be E1 or E2, got '" + id.metric + "'");
+  checkMetric(id.metric, std::string(context) + ": metric");
   return id;
 }
 
@@ -224,8 +225,7 @@ void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::stri
 
 void validateFit(const Fit& fit, const std::string& context) {
   const ModelInfo* model = &requireModel(fit.id.model, context);
-  if (std::find(std::begin(kMetrics), std::end(kMetrics), fit.id.metric) == std::end(kMetrics))
-    throw InputError(context + ": metric must be E1 or E2, got '" + fit.id.metric + "'");
+  checkMetric(fit.id.metric, context + ": metric");
   for (const auto& [key, value] : fit.params.values()) {
     auto spec = std::find_if(model->params.begin(), model->params.end(), [&](const ParamSpec& s) { return s.key == key; });
     if (spec == model->params.end()) throw InputError(context + ": key '" + key + "': unknown for the " + fit.id.model + " model");
