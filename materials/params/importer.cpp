@@ -41,15 +41,10 @@ std::string supplementModel(const std::string& label) {
 
 // The supplement's parameter symbols → parameter-file keys.
 std::string supplementKey(const std::string& symbol) {
-  if (symbol == "K_d") return "kd";
-  if (symbol == "K_s") return "ks";
-  if (symbol == "A") return "a";
-  if (symbol == "B") return "b";
-  if (symbol == "C") return "c";
-  if (symbol == "m") return "m";
-  if (symbol == "n") return "n";
-  if (symbol == "eta") return "eta";
-  return {};
+  static const std::map<std::string, std::string> keys = {{"K_d", "kd"}, {"K_s", "ks"}, {"A", "a"}, {"B", "b"},
+                                                          {"C", "c"},   {"m", "m"},    {"n", "n"}, {"eta", "eta"}};
+  const auto key = keys.find(symbol);
+  return key == keys.end() ? std::string() : key->second;
 }
 
 MaterialFile newMaterial(const std::string& name, std::string_view source) {
