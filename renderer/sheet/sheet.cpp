@@ -85,9 +85,10 @@ std::string fitted(std::string text, int width, int fontSize, const std::string&
   return text;
 }
 
-std::string formatted(const char* format, double value) {
+template <class... T>
+std::string formatted(const char* format, T... values) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, format, value);
+  std::snprintf(buf, sizeof buf, format, values...);
   return buf;
 }
 
@@ -149,20 +150,15 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
 
   for (const SheetPanel& panel : settings.panels) {
     PanelRender r;
+    r.panel = panel;
     if (panel.fit.empty()) {
-      if (measured) {
-        r = renderPanel(scene, panel, Measured(measured), settings);
-        r.note = measuredNote;
-      } else {
-        r.panel = panel;
-        r.note = measuredNote;
-      }
+      if (measured) r = renderPanel(scene, panel, Measured(measured), settings);
+      r.note = measuredNote;
     } else if (const Fit* fit = material.find(FitId::parse(panel.fit, material.path.string()))) {
       const Brdf brdf = makeBrdf(*fit);
       r = renderPanel(scene, panel, brdf, settings);
       if (measured) r.brdfE1 = e1->error(brdf), r.brdfE2 = e2->error(brdf);
     } else {
-      r.panel = panel;
       r.note = "no " + panel.fit + " fit in " + material.name;
     }
     if (r.empty) r.image = RgbImage(w, h);
@@ -272,31 +268,25 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
       }
   }
   const float white[3] = {0.95f, 0.95f, 0.95f}, grey[3] = {0.7f, 0.7f, 0.7f};
+  const int small = std::max(8, fontSize - 2);
   for (int k = 0; k < n; ++k) {
     const PanelRender& p = sheet.panels[size_t(k)];
+    auto label = [&](const std::string& text, int y, int size, OIIO::cspan<float> colour) {
+      OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + y, fitted(text, w - 6, size, fontPath), size, fontPath, colour);
+    };
     std::string second;
-    const int small = std::max(8, fontSize - 2);
     if (p.empty)
       second = p.panel.fit.empty() ? "no MERL data (--merl-dir)" : "no fit";
     else if (p.relativeRmse >= 0.0)
       // Narrow panels get the figures without their names.
-      second = w >= 120 ? formatted("rRMSE %.3f", p.relativeRmse) + formatted("  lum x%.2f", p.luminanceRatio)
-                        : formatted("%.3f", p.relativeRmse) + formatted(" x%.2f", p.luminanceRatio);
+      second = formatted(w >= 120 ? "rRMSE %.3f  lum x%.2f" : "%.3f x%.2f", p.relativeRmse, p.luminanceRatio);
     else if (!p.panel.fit.empty())
       second = "no measured panel";
     else
       second = p.note.find("NBRDF") != std::string::npos ? "MERL (NBRDF reconstr.)" : "MERL";
-    OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + fontSize + 2, fitted(p.panel.label, w - 6, fontSize, fontPath), fontSize,
-                                    fontPath, white);
-    if (!second.empty())
-      OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + 2 * fontSize + 5, fitted(second, w - 6, small, fontPath), small,
-                                      fontPath, grey);
-    if (p.brdfE1 >= 0.0) {
-      const std::string third = w >= 120 ? formatted("E1 %.3g", p.brdfE1) + formatted("  E2 %.3g", p.brdfE2)
-                                         : formatted("%.2g", p.brdfE1) + formatted(" %.2g", p.brdfE2);
-      OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + 3 * fontSize + 7, fitted(third, w - 6, small, fontPath), small,
-                                      fontPath, grey);
-    }
+    label(p.panel.label, fontSize + 2, fontSize, white);
+    if (!second.empty()) label(second, 2 * fontSize + 5, small, grey);
+    if (p.brdfE1 >= 0.0) label(formatted(w >= 120 ? "E1 %.3g  E2 %.3g" : "%.2g %.2g", p.brdfE1, p.brdfE2), 3 * fontSize + 7, small, grey);
   }
   if (buf.has_error()) std::fprintf(stderr, "glossy: %s: labels not drawn: %s\n", path.string().c_str(), buf.geterror().c_str());
   std::vector<unsigned char> rgb(size_t(w * n) * size_t(h + strip) * 3);
