@@ -8,11 +8,8 @@
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/scene/material_binding.h"
 
-#include <cstdlib>
 #include <iostream>
-#include <map>
 #include <memory>
-#include <sstream>
 
 namespace glossy::cli {
 
