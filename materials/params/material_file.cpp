@@ -19,7 +19,6 @@ void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::stri
 
 namespace {
 
-
 void checkMetric(const std::string& metric, const std::string& what) {
   if (metric != "E1" && metric != "E2") throw InputError(what + " must be E1 or E2, got '" + metric + "'");
 }
@@ -314,9 +313,9 @@ Brdf makeBrdf(const Fit& fit) {
   return requireModel(fit.id.model, "fit " + fit.id.str()).make(fit.params);
 }
 
-std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& m, const std::filesystem::path& merlDir) {
-  if (m.measured.empty()) return std::nullopt;
-  const std::filesystem::path name = m.measured;
+std::optional<std::filesystem::path> resolveMeasured(const std::string& measured, const std::filesystem::path& merlDir) {
+  if (measured.empty()) return std::nullopt;
+  const std::filesystem::path name = measured;
   std::vector<std::filesystem::path> candidates;
   if (name.is_absolute()) candidates.push_back(name);
   if (!merlDir.empty()) candidates.push_back(merlDir / name);

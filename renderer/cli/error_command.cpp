@@ -23,7 +23,7 @@ int runError(const ErrorOptions& o) {
   const MaterialFile material = loadMaterialFile(o.material);
   std::filesystem::path tablePath;
   if (!o.measured.empty()) tablePath = findMeasuredTable(o.measured, o.merlDir);
-  else if (auto p = resolveMeasured(material, o.merlDir)) tablePath = *p;
+  else if (auto p = resolveMeasured(material.measured, o.merlDir)) tablePath = *p;
   else throw InputError(o.material + ": names no measured table that exists; pass --measured FILE");
   const auto table = loadMerlTable(tablePath);
   const MetricData e1(*table, Metric::E1), e2(*table, Metric::E2);

@@ -42,7 +42,7 @@ int runList(const ListOptions& o) {
       ++bad;
       continue;
     }
-    std::printf("%-26s %-9s", m.name.c_str(), m.measured.empty() ? "-" : resolveMeasured(m, o.merlDir) ? "found" : "missing");
+    std::printf("%-26s %-9s", m.name.c_str(), m.measured.empty() ? "-" : resolveMeasured(m.measured, o.merlDir) ? "found" : "missing");
     for (const SheetPanel& c : sheetPanels()) {
       if (c.fit.empty()) continue;
       const Fit* f = m.find(FitId::parse(c.fit, c.label));

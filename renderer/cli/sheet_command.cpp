@@ -49,7 +49,7 @@ struct Stage {
 std::shared_ptr<const MerlTable> findMeasured(const MaterialFile& m, const SheetOptions& o, const std::string& explicitPath,
                                               std::string& note) {
   const std::optional<std::filesystem::path> path =
-      explicitPath.empty() ? resolveMeasured(m, o.merlDir) : findMeasuredTable(explicitPath, o.merlDir);
+      explicitPath.empty() ? resolveMeasured(m.measured, o.merlDir) : findMeasuredTable(explicitPath, o.merlDir);
   if (!path) {
     note = m.measured.empty() ? "the material names no measured table"
                               : "no " + m.measured + " in --merl-dir or $GLOSSY_MERL_DIR: get the MERL BRDF database "
