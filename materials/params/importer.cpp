@@ -47,14 +47,6 @@ std::string supplementKey(const std::string& symbol) {
   return key == keys.end() ? std::string() : key->second;
 }
 
-MaterialFile newMaterial(const std::string& name, std::string_view source) {
-  MaterialFile m;
-  m.name = name;
-  m.measured = merlFileName(name);
-  m.source = std::string(source);
-  return m;
-}
-
 void checkMaterialName(const std::string& name, const std::string& where) {
   static const std::regex ok(R"([A-Za-z0-9][A-Za-z0-9_.+-]*)");
   if (!std::regex_match(name, ok)) throw InputError(where + ": '" + name + "' is not a usable material name");
@@ -76,7 +68,7 @@ std::vector<MaterialFile> importSupplement(std::string_view text, const std::str
     if (std::regex_search(lines[ln], m, section)) {
       const std::string name = m[1];
       checkMaterialName(name, where);
-      out.push_back(newMaterial(name, kSupplementSource));
+      out.push_back(measuredMaterial(name, kSupplementSource));
       continue;
     }
     // Strip the LaTeX of the PDF's text: $…$, backslashes, braces.
@@ -202,7 +194,7 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
         fit.params.set(key->second, requireNumber(value, context + ": " + arg));
     }
     validateFit(fit, context);
-    MaterialFile mat = newMaterial(name, kFitLinesSource);
+    MaterialFile mat = measuredMaterial(name, kFitLinesSource);
     mat.put(std::move(fit));
     for (const MaterialFile& prev : out)
       if (prev.name == name) throw InputError(where + ": material '" + name + "' appears twice in this file");
@@ -231,10 +223,7 @@ void Importer::add(std::vector<MaterialFile> materials, int precision) {
   for (MaterialFile& m : materials) {
     auto [it, fresh] = entries_.try_emplace(m.name);
     Entry& e = it->second;
-    if (fresh) {
-      e.material = newMaterial(m.name, m.source);
-      e.material.fits.clear();
-    }
+    if (fresh) e.material = measuredMaterial(m.name, m.source);
     for (Fit& fit : m.fits) {
       auto p = e.precision.find(fit.id.str());
       if (p != e.precision.end() && p->second > precision) continue;
@@ -247,7 +236,7 @@ void Importer::add(std::vector<MaterialFile> materials, int precision) {
 
 MaterialFile Importer::mergeInto(MaterialFile existing, const std::string& name) const {
   const Entry& e = entries_.at(name);
-  if (existing.name.empty()) existing = newMaterial(name, "");
+  if (existing.name.empty()) existing = measuredMaterial(name, "");
   // Make every fit's provenance explicit, merge, then let the material's source be the one most fits
   // share; a fit whose provenance differs keeps its own `source` key.
   for (Fit& f : existing.fits)

@@ -60,7 +60,9 @@ Brdf makeBrdf(const Fit& fit);
 // under $GLOSSY_MERL_DIR; each also as NAME.xz. nullopt when `measured` is empty or none exists.
 std::optional<std::filesystem::path> resolveMeasured(const std::string& measured, const std::filesystem::path& merlDir = {});
 
-// The measured file name every MERL material has: "alum-bronze" -> "alum-bronze.binary".
-inline std::string merlFileName(const std::string& material) { return material + ".binary"; }
+// A new material measured by the MERL table of its name ("alum-bronze" by "alum-bronze.binary").
+inline MaterialFile measuredMaterial(const std::string& name, std::string_view source) {
+  return {.name = name, .measured = name + ".binary", .source = std::string(source), .fits = {}, .path = {}};
+}
 
 }  // namespace glossy

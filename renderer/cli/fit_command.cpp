@@ -35,11 +35,7 @@ std::string materialNameOf(const std::filesystem::path& table) {
 MaterialFile loadOrStart(const std::filesystem::path& path, const std::filesystem::path& table) {
   std::error_code ec;
   if (std::filesystem::exists(path, ec)) return loadMaterialFile(path);
-  MaterialFile m;
-  m.name = materialNameOf(table);
-  m.measured = merlFileName(m.name);
-  m.source = "glossy fit to " + table.filename().string();
-  return m;
+  return measuredMaterial(materialNameOf(table), "glossy fit to " + table.filename().string());
 }
 
 std::string formatSeconds(double s) {
