@@ -47,8 +47,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     std::string what = e.what();
-    for (char& c : what)
-      if (c == '\n') c = ' ';
+    std::replace(what.begin(), what.end(), '\n', ' ');
     std::cerr << "glossy: " << what << " (see glossy --help)\n";
     return 2;
   }

@@ -31,11 +31,7 @@ std::unique_ptr<OIIO::ImageInput> openImage(const std::filesystem::path& path) {
 }
 
 void addAttributes(OIIO::ImageSpec& spec, const std::vector<ImageAttribute>& attributes) {
-  for (const ImageAttribute& a : attributes) {
-    if (auto s = std::get_if<std::string>(&a.value)) spec.attribute(a.name, *s);
-    if (auto i = std::get_if<int>(&a.value)) spec.attribute(a.name, *i);
-    if (auto f = std::get_if<float>(&a.value)) spec.attribute(a.name, *f);
-  }
+  for (const ImageAttribute& a : attributes) std::visit([&](const auto& value) { spec.attribute(a.name, value); }, a.value);
 }
 
 }  // namespace
