@@ -214,9 +214,7 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
     placed.push_back(std::move(img));
     names += (names.empty() ? "" : ",") + p.panel.layer;
     const std::string key = "glossy:panel." + p.panel.layer;
-    std::ostringstream box;
-    box << int(k) * w << " 0 " << w << " " << h;
-    metadata.push_back({key + ".box", box.str()});
+    metadata.push_back({key + ".box", std::to_string(int(k) * w) + " 0 " + std::to_string(w) + " " + std::to_string(h)});
     metadata.push_back({key + ".label", p.panel.label});
     metadata.push_back({key + ".fit", p.panel.fit.empty() ? std::string("measured") : p.panel.fit});
     metadata.push_back({key + ".empty", int(p.empty)});
@@ -298,11 +296,10 @@ std::string errorTable(const Sheet& sheet) {
   std::ostringstream s;
   s << sheet.material << ": ";
   const std::string note = sheet.measured() ? sheet.measured()->note : "none in the grid";
-  if (!sheet.hasMeasured()) {
-    s << "no measured panel (" << note << "), so no errors against it\n";
-  } else {
+  if (sheet.hasMeasured())
     s << "error of each model against the measured panel (" << note << "), over the object's pixels\n";
-  }
+  else
+    s << "no measured panel (" << note << "), so no errors against it\n";
   s << "  panel           spp   rel. RMSE   luminance ratio   BRDF E1   BRDF E2\n";
   for (const PanelRender& p : sheet.panels) {
     char line[160];
