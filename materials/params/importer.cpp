@@ -1,7 +1,7 @@
 #include "materials/params/importer.h"
 
 #include "materials/core/input_error.h"
-#include "materials/core/parse_number.h"
+#include "materials/core/text.h"
 #include "materials/models/registry.h"
 
 #include <fstream>

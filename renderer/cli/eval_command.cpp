@@ -1,6 +1,6 @@
 // glossy eval: BRDF values for direction pairs read from stdin (shared/spec/interfaces.md).
 #include "materials/core/input_error.h"
-#include "materials/core/parse_number.h"
+#include "materials/core/text.h"
 #include "materials/models/brdf.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"

@@ -2,6 +2,7 @@
 // material's parameter file; with --measured-dir, every model and metric for every table, resumably.
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 #include "materials/fitting/fitter.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
@@ -9,7 +10,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -38,12 +38,7 @@ MaterialFile loadOrStart(const std::filesystem::path& path, const std::filesyste
   return measuredMaterial(materialNameOf(table), "glossy fit to " + table.filename().string());
 }
 
-std::string formatSeconds(double s) {
-  char buf[32];
-  if (s < 120) std::snprintf(buf, sizeof buf, "%.1f s", s);
-  else std::snprintf(buf, sizeof buf, "%.0f min", s / 60.0);
-  return buf;
-}
+std::string formatSeconds(double s) { return s < 120 ? formatted("%.1f s", s) : formatted("%.0f min", s / 60.0); }
 
 std::string describeFit(const FitReport& r) {
   std::ostringstream s;

@@ -1,7 +1,7 @@
 // glossy sample: directions drawn from a BRDF's sampler for one outgoing direction, with their pdf and
 // weight, so that anyone can check the sampler (shared/spec/interfaces.md).
 #include "materials/core/input_error.h"
-#include "materials/core/parse_number.h"
+#include "materials/core/text.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
 #include "renderer/cli/output.h"

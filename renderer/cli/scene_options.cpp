@@ -1,7 +1,7 @@
 #include "renderer/cli/scene_options.h"
 
 #include "materials/core/input_error.h"
-#include "materials/core/parse_number.h"
+#include "materials/core/text.h"
 
 #include <cmath>
 

@@ -1,5 +1,6 @@
 #include "renderer/sheet/sheet.h"
 
+#include "materials/core/text.h"
 #include "materials/fitting/metric.h"
 #include "materials/models/registry.h"
 #include "renderer/camera/camera_rays.h"
@@ -83,13 +84,6 @@ std::string fitted(std::string text, int width, int fontSize, const std::string&
     while (!text.empty() && (static_cast<unsigned char>(text.back()) & 0xC0) == 0x80) text.pop_back();  // whole UTF-8 characters
   }
   return text;
-}
-
-template <class... T>
-std::string formatted(const char* format, T... values) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, values...);
-  return buf;
 }
 
 }  // namespace
@@ -302,15 +296,13 @@ std::string errorTable(const Sheet& sheet) {
     s << "no measured panel (" << note << "), so no errors against it\n";
   s << "  panel           spp   rel. RMSE   luminance ratio   BRDF E1   BRDF E2\n";
   for (const PanelRender& p : sheet.panels) {
-    char line[160];
     if (p.empty)
-      std::snprintf(line, sizeof line, "  %-14s    -   %s\n", p.panel.label.c_str(), p.note.c_str());
+      s << formatted("  %-14s    -   %s\n", p.panel.label.c_str(), p.note.c_str());
     else if (p.relativeRmse >= 0.0)
-      std::snprintf(line, sizeof line, "  %-14s %5d   %9.4f   %15.4f   %7.4f   %7.4f\n", p.panel.label.c_str(), p.spp,
-                    p.relativeRmse, p.luminanceRatio, p.brdfE1, p.brdfE2);
+      s << formatted("  %-14s %5d   %9.4f   %15.4f   %7.4f   %7.4f\n", p.panel.label.c_str(), p.spp, p.relativeRmse,
+                     p.luminanceRatio, p.brdfE1, p.brdfE2);
     else
-      std::snprintf(line, sizeof line, "  %-14s %5d   %9s   %15s\n", p.panel.label.c_str(), p.spp, "-", "-");
-    s << line;
+      s << formatted("  %-14s %5d   %9s   %15s\n", p.panel.label.c_str(), p.spp, "-", "-");
   }
   // Which model is closest: the smallest relative RMSE.
   const PanelRender* best = nullptr;

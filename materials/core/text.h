@@ -1,14 +1,24 @@
-// Numbers read from text (imported parameters, command-line options, stdin): what std::from_chars reads
+// Numbers in text. Read (imported parameters, command-line options, stdin): what std::from_chars reads
 // (decimal or scientific, "inf", "nan"), with an optional leading '+', and nothing else around it.
+// Written: printf's formats, into a std::string (GCC 12 has no std::format).
 #pragma once
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace glossy {
+
+template <class... T>
+std::string formatted(const char* format, T... values) {
+  std::string s(size_t(std::max(0, std::snprintf(nullptr, 0, format, values...))), '\0');
+  std::snprintf(s.data(), s.size() + 1, format, values...);
+  return s;
+}
 
 inline std::optional<double> parseNumber(std::string_view text) {
   if (text.starts_with('+')) text.remove_prefix(1);
