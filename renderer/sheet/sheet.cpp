@@ -36,13 +36,8 @@ PanelRender renderPanel(const SheetScene& scene, const SheetPanel& panel, const 
   for (size_t m = 0; m < brdfs.size(); ++m)
     if (scene.isObject[m]) brdfs[m] = brdf;
   const RenderScene rs{scene.description, scene.bvh, std::move(brdfs), brdf, scene.environment};
-  RenderSettings r;
-  r.width = s.width;
-  r.height = s.height;
-  r.seed = s.seed;
-  r.threads = s.threads;
-  r.maxDepth = s.maxDepth;
-  r.progress = s.progress && s.secondsPerPanel <= 0.0;
+  RenderSettings r{.width = s.width, .height = s.height, .maxDepth = s.maxDepth, .seed = s.seed, .threads = s.threads,
+                   .progress = s.progress && s.secondsPerPanel <= 0.0};
   const auto start = std::chrono::steady_clock::now();
   if (s.secondsPerPanel <= 0.0) {
     r.spp = s.spp;
