@@ -88,27 +88,18 @@ struct AccessorData {
   size_t count = 0;
   int componentType = 0;
 
-  glm::vec3 vec3(size_t i) const {
-    glm::vec3 v(0.0f);
-    if (first) std::memcpy(&v, first + i * stride, sizeof v);
-    return v;
+  // Element i as a T (zero without a buffer view), read unaligned.
+  template <class T>
+  T get(size_t i) const {
+    T x{};
+    if (first) std::memcpy(&x, first + i * stride, sizeof x);
+    return x;
   }
+  glm::vec3 vec3(size_t i) const { return get<glm::vec3>(i); }
   uint32_t index(size_t i) const {
-    if (!first) return 0;
-    const unsigned char* p = first + i * stride;
-    switch (componentType) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t x;
-        std::memcpy(&x, p, sizeof x);
-        return x;
-      }
-      default: {
-        uint32_t x;
-        std::memcpy(&x, p, sizeof x);
-        return x;
-      }
-    }
+    if (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) return get<uint8_t>(i);
+    if (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) return get<uint16_t>(i);
+    return get<uint32_t>(i);
   }
 };
 
