@@ -20,6 +20,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <span>
 #include <utility>
 
 namespace glossy {
@@ -44,14 +45,7 @@ std::string label(const char* kind, const std::string& name, int index) {
   return name.empty() ? std::string(kind) + " " + std::to_string(index) : std::string(kind) + " '" + name + "'";
 }
 
-bool isFinite(const glm::dmat4& m) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(m[c][r])) return false;
-  return true;
-}
-
-bool allFinite(const std::vector<double>& values) {
+bool allFinite(std::span<const double> values) {
   return std::all_of(values.begin(), values.end(), [](double x) { return std::isfinite(x); });
 }
 
@@ -151,7 +145,7 @@ class GltfReader {
           strength = s.GetNumberAsDouble();
         }
         out.emission = Rgb(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]) * strength;
-        if (!allFinite(std::vector<double>{out.emission.r, out.emission.g, out.emission.b}))
+        if (!allFinite({glm::value_ptr(out.emission), 3}))
           fail(where + ": emissiveFactor × emissiveStrength overflows");
       }
       if (m.extras.Has("glossy")) {
@@ -226,7 +220,7 @@ class GltfReader {
       visited_[size_t(index)] = 1;
 
       const glm::dmat4 world = parent * localMatrix(node, where);
-      if (!isFinite(world)) fail(where + ": its transform is not finite");
+      if (!allFinite({glm::value_ptr(world), 16})) fail(where + ": its transform is not finite");
       if (node.mesh >= 0) addMesh(node.mesh, world, where);
       if (node.camera >= 0) addCamera(node, index, world, where);
       for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.emplace_back(*c, world);
