@@ -39,13 +39,10 @@ int runRender(RenderOptions o) {
   }
 
   MaterialBinding binding = bindMaterials(description, override);
-  RenderScene scene{&description, nullptr, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, nullptr};
-  if (override) scene.defaultBrdf = override->brdf;
-
   const Environment environment = o.scene.environment();
   const EmbreeScene bvh(description);
-  scene.bvh = &bvh;
-  scene.environment = &environment;
+  const Brdf defaultBrdf = override ? override->brdf : Lambertian{Rgb(0.5)};
+  const RenderScene scene{&description, &bvh, std::move(binding.brdfs), defaultBrdf, &environment};
 
   const Camera& camera = o.scene.cameraOf(description);
 
