@@ -324,8 +324,7 @@ std::optional<std::filesystem::path> resolveMeasured(const std::string& measured
   std::error_code ec;
   for (const auto& c : candidates) {
     if (std::filesystem::is_regular_file(c, ec)) return c;
-    std::filesystem::path xz = c;
-    xz += ".xz";
+    const std::filesystem::path xz = c.string() + ".xz";
     if (std::filesystem::is_regular_file(xz, ec)) return xz;
   }
   return std::nullopt;

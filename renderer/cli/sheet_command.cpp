@@ -105,8 +105,7 @@ void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, co
   const Sheet sheet = renderSheet(scene, m, measured, note, o.settings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (exr.has_parent_path()) std::filesystem::create_directories(exr.parent_path());
-  std::filesystem::path png = exr;
-  png.replace_extension(".png");
+  const std::filesystem::path png = std::filesystem::path(exr).replace_extension(".png");
   // The PNG first: a sheet counts as complete (for glossy sheets' resuming) once its EXR exists.
   writeSheetPng(sheet, png, o.exposure, std::filesystem::exists(kFont) ? kFont : "");
   writeSheetExr(sheet, exr, sheetMetadata(m, stage, o, sheet, seconds), o.half ? PixelType::Half : PixelType::Float);
@@ -171,8 +170,7 @@ int runSheets(const SheetOptions& o) {
   for (size_t k = 0; k < files.size(); ++k) {
     const std::string name = loadMaterialFile(files[k]).name;
     const std::filesystem::path exr = std::filesystem::path(o.outDir) / (name + ".exr");
-    std::filesystem::path png = exr;
-    png.replace_extension(".png");
+    const std::filesystem::path png = std::filesystem::path(exr).replace_extension(".png");
     if (std::filesystem::exists(exr) && std::filesystem::exists(png)) {
       ++skipped;
       std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": complete, skipped\n";
