@@ -206,8 +206,7 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
 
 void Importer::addFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  std::error_code ec;
-  if (!in || std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": cannot open");
+  if (std::error_code ec; !in || std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": cannot open");
   std::ostringstream text;
   text << in.rdbuf();
   const std::string s = text.str();

@@ -33,8 +33,7 @@ std::string materialNameOf(const std::filesystem::path& table) {
 }
 
 MaterialFile loadOrStart(const std::filesystem::path& path, const std::filesystem::path& table) {
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec)) return loadMaterialFile(path);
+  if (std::error_code ec; std::filesystem::exists(path, ec)) return loadMaterialFile(path);
   return measuredMaterial(materialNameOf(table), "glossy fit to " + table.filename().string());
 }
 
@@ -74,8 +73,7 @@ int runSingle(const FitOptions& o) {
 }
 
 std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
-  std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec)) throw InputError(dir.string() + ": not a directory");
+  if (std::error_code ec; !std::filesystem::is_directory(dir, ec)) throw InputError(dir.string() + ": not a directory");
   std::map<std::string, std::filesystem::path> byName;  // a .binary wins over its .binary.xz
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     const std::string f = e.path().filename().string();

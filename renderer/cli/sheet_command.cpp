@@ -146,11 +146,9 @@ std::pair<int, int> parseShard(const std::string& text) {
 }
 
 int runSheets(const SheetOptions& o) {
-  for (const std::string& in : o.inputs) {
-    std::error_code ec;
-    if (!std::filesystem::is_directory(in, ec) && !std::filesystem::is_regular_file(in, ec))
+  for (const std::string& in : o.inputs)
+    if (std::error_code ec; !std::filesystem::is_directory(in, ec) && !std::filesystem::is_regular_file(in, ec))
       throw InputError(in + ": no such material file or folder");
-  }
   std::vector<std::filesystem::path> files = materialFiles(o.inputs);
   if (!o.shard.empty()) {
     const auto [index, count] = parseShard(o.shard);
