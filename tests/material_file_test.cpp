@@ -158,14 +158,14 @@ TEST(MaterialFile, MeasuredResolvesAgainstMerlDirThenEnvironmentAndAcceptsXz) {
   writeText(b / "y.binary.xz", "");
   MaterialFile m;
   m.measured = "x.binary";
-  EXPECT_EQ(resolveMeasured(m, a.path()), a / "x.binary");
+  EXPECT_EQ(resolveMeasured(m.measured, a.path()), a / "x.binary");
   m.measured = "y.binary";
-  EXPECT_EQ(resolveMeasured(m, a.path()), std::nullopt);
+  EXPECT_EQ(resolveMeasured(m.measured, a.path()), std::nullopt);
   setenv("GLOSSY_MERL_DIR", b.path().c_str(), 1);
-  EXPECT_EQ(resolveMeasured(m, a.path()), b / "y.binary.xz");
+  EXPECT_EQ(resolveMeasured(m.measured, a.path()), b / "y.binary.xz");
   unsetenv("GLOSSY_MERL_DIR");
   m.measured.clear();
-  EXPECT_EQ(resolveMeasured(m, a.path()), std::nullopt);
+  EXPECT_EQ(resolveMeasured(m.measured, a.path()), std::nullopt);
 }
 
 }  // namespace glossy::test

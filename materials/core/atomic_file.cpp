@@ -45,16 +45,10 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
   // mkstemp creates 0600; outputs are ordinary files.
   if (::fchmod(fd, 0644) != 0) throw fail("cannot set permissions");
   if (::fsync(fd) != 0) throw fail("cannot flush");
-  if (::close(fd) != 0) {
-    fd = -1;
-    throw fail("cannot close");
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    auto err = ioError(path, "cannot rename the temporary file into place");
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw err;
-  }
+  const int closed = ::close(fd);
+  fd = -1;  // closed either way: fail() must not close it again
+  if (closed != 0) throw fail("cannot close");
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw fail("cannot rename the temporary file into place");
 }
 
 }  // namespace glossy

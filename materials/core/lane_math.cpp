@@ -95,10 +95,12 @@ void sinCosSse2(const double* a, const double*, double* s, double* c) {
   _mm_storeu_pd(c, _ZGVbN2v_cos(v));
 }
 
-// n lanes as whole blocks of w: the last, partial one goes through arrays padded with harmless
-// arguments (0 and 1), and only its real lanes are copied back. in1 and out1 may be null where the
-// operation has no second argument or result.
-void forBlocks(Block block, int w, const double* in0, const double* in1, double* out0, double* out1, int n) {
+// n lanes as whole blocks of the ISA in use (avx2's 4 lanes or sse2's 2): the last, partial one goes
+// through arrays padded with harmless arguments (0 and 1), and only its real lanes are copied back. in1
+// and out1 may be null where the operation has no second argument or result.
+void forBlocks(Block avx2, Block sse2, const double* in0, const double* in1, double* out0, double* out1, int n) {
+  const Block block = useAvx2 ? avx2 : sse2;
+  const int w = useAvx2 ? 4 : 2;
   int i = 0;
   for (; i + w <= n; i += w) block(in0 + i, in1 ? in1 + i : nullptr, out0 + i, out1 ? out1 + i : nullptr);
   if (i == n) return;
@@ -120,33 +122,10 @@ bool setIsa(Isa isa) {
   return true;
 }
 
-void atan2(const double* y, const double* x, double* out, int n) {
-  if (useAvx2)
-    forBlocks(atan2Avx2, 4, y, x, out, nullptr, n);
-  else
-    forBlocks(atan2Sse2, 2, y, x, out, nullptr, n);
-}
-
-void sinCos(const double* a, double* s, double* c, int n) {
-  if (useAvx2)
-    forBlocks(sinCosAvx2, 4, a, nullptr, s, c, n);
-  else
-    forBlocks(sinCosSse2, 2, a, nullptr, s, c, n);
-}
-
-void exp(const double* a, double* out, int n) {
-  if (useAvx2)
-    forBlocks(expAvx2, 4, a, nullptr, out, nullptr, n);
-  else
-    forBlocks(expSse2, 2, a, nullptr, out, nullptr, n);
-}
-
-void log1p(const double* a, double* out, int n) {
-  if (useAvx2)
-    forBlocks(log1pAvx2, 4, a, nullptr, out, nullptr, n);
-  else
-    forBlocks(log1pSse2, 2, a, nullptr, out, nullptr, n);
-}
+void atan2(const double* y, const double* x, double* out, int n) { forBlocks(atan2Avx2, atan2Sse2, y, x, out, nullptr, n); }
+void sinCos(const double* a, double* s, double* c, int n) { forBlocks(sinCosAvx2, sinCosSse2, a, nullptr, s, c, n); }
+void exp(const double* a, double* out, int n) { forBlocks(expAvx2, expSse2, a, nullptr, out, nullptr, n); }
+void log1p(const double* a, double* out, int n) { forBlocks(log1pAvx2, log1pSse2, a, nullptr, out, nullptr, n); }
 
 }  // namespace glossy::lanes
 

@@ -215,28 +215,24 @@ FitReport fitWith(const MetricData& data, const FitSettings& settings) {
   for (const auto& p : data.points())
     pts.push_back({LobeGeometry(p.L, p.V), p.cosI, std::sqrt(p.weight), {p.target.r, p.target.g, p.target.b}});
 
-  // The scan: every combination of the shape parameters' starts.
-  std::vector<std::vector<double>> combos{{}};
-  std::vector<std::vector<size_t>> indices{{}};
-  for (int k = 0; k < K; ++k) {
-    std::vector<std::vector<double>> next;
-    std::vector<std::vector<size_t>> nextIdx;
-    for (size_t c = 0; c < combos.size(); ++c)
-      for (size_t s = 0; s < M::kShape[k].starts.size(); ++s) {
-        next.push_back(combos[c]), next.back().push_back(M::kShape[k].starts[s]);
-        nextIdx.push_back(indices[c]), nextIdx.back().push_back(s);
-      }
-    combos = std::move(next), indices = std::move(nextIdx);
-  }
+  // The scan: every combination of the shape parameters' starts, numbered with the last one varying fastest.
+  size_t combos = 1;
+  for (const ShapeParam& p : M::kShape) combos *= p.starts.size();
 
   const int threads = settings.threads > 0 ? settings.threads : int(tbb::this_task_arena::max_concurrency());
   tbb::task_arena arena(threads);
-  std::vector<Candidate> scanned(combos.size());
+  std::vector<Candidate> scanned(combos);
   arena.execute([&] {
-    tbb::parallel_for(size_t(0), combos.size(), [&](size_t i) {
+    tbb::parallel_for(size_t(0), combos, [&](size_t i) {
       Candidate c;
-      c.shape = combos[i];
-      c.width = indices[i][0];
+      c.shape.resize(K);
+      size_t rest = i;
+      for (int k = K - 1; k >= 0; --k) {
+        const std::span<const double> starts = M::kShape[k].starts;
+        c.width = rest % starts.size();  // left at the first parameter's start: the lobe width
+        c.shape[k] = starts[c.width];
+        rest /= starts.size();
+      }
       const std::vector<double> lobe = lobeValues(model, pts, c.shape);
       solveLinear(pts, metric, lobe, c);
       c.sum = weightedSquares(pts, metric, lobe, c.kd, c.scale);

@@ -61,10 +61,7 @@ class MetricData {
 
   Metric metric() const { return metric_; }
   const std::vector<Point>& points() const { return points_; }
-  double constant() const { return constant_; }
-  double weightSum() const { return weightSum_; }  // Σ sin θ_i over the valid pairs
   size_t validPairs() const { return validPairs_; }
-  size_t invalidPairs() const { return MetricGrid::kPairs - validPairs_; }
   const std::string& source() const { return source_; }
 
   // E from a sum of weighted squared residuals over the points: sqrt((sum + constant) / weightSum).
@@ -77,7 +74,7 @@ class MetricData {
  private:
   Metric metric_;
   std::vector<Point> points_;
-  double constant_ = 0.0, weightSum_ = 0.0;
+  double constant_ = 0.0, weightSum_ = 0.0;  // weightSum_: Σ sin θ_i over the valid pairs
   size_t validPairs_ = 0;
   std::string source_;
 };

@@ -68,8 +68,7 @@ MerlTable MerlTable::load(const std::filesystem::path& requested) {
   std::filesystem::path path = requested;
   std::error_code ec;
   if (!std::filesystem::exists(path, ec) && path.extension() != ".xz") {
-    std::filesystem::path xz = path;
-    xz += ".xz";
+    const std::filesystem::path xz = path.string() + ".xz";
     if (std::filesystem::exists(xz, ec)) path = xz;
   }
   std::vector<std::byte> bytes = readFile(path);

@@ -46,11 +46,7 @@ struct AshikhminShirley {
            (8.0 * kPi * g.h.cosVH * std::max(g.cosL, g.cosV));
   }
 
-  Rgb eval(const Vec3& L, const Vec3& V) const {
-    if (L.z <= 0.0 || V.z <= 0.0) return Rgb(0.0);
-    const double shape[] = {n, eta};
-    return kd * kInvPi + ks * lobe(LobeGeometry(L, V), shape);
-  }
+  Rgb eval(const Vec3& L, const Vec3& V) const { return evalLobeModel(*this, L, V, kd, ks, {n, eta}); }
 
   // Sampling: cos θ_h = ξ^(1/(n+1)), i.e. 1 − cos θ_h = −expm1(ln ξ / (n+1)); pdf_h = (n+1)/(2π) cosⁿθ_h.
   double specularProbability() const {

@@ -6,7 +6,6 @@
 // A template in eta so that the fitter can differentiate it (T = ceres::Jet); c is geometry, always double.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 
 namespace glossy {

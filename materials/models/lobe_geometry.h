@@ -24,4 +24,12 @@ struct LobeGeometry {
   }
 };
 
+// ρ = Kd/π + scale · lobe(shape), and 0 unless L and V are above the horizon: the eval() of a model with
+// a specular lobe.
+template <class M, size_t K>
+Rgb evalLobeModel(const M& model, const Vec3& L, const Vec3& V, const Rgb& kd, const Rgb& scale, const double (&shape)[K]) {
+  if (L.z <= 0.0 || V.z <= 0.0) return Rgb(0.0);
+  return kd * kInvPi + scale * model.lobe(LobeGeometry(L, V), shape);
+}
+
 }  // namespace glossy

@@ -43,11 +43,7 @@ struct Microfacet {
     return s * fresnelCookTorrance(g.h.cosVH, shape[2]) * (g.g / (kPi * g.cosL * g.cosV));
   }
 
-  Rgb eval(const Vec3& L, const Vec3& V) const {
-    if (L.z <= 0.0 || V.z <= 0.0) return Rgb(0.0);
-    const double shape[] = {b, c, eta};
-    return kd * kInvPi + a * lobe(LobeGeometry(L, V), shape);
-  }
+  Rgb eval(const Vec3& L, const Vec3& V) const { return evalLobeModel(*this, L, V, kd, a, {b, c, eta}); }
 
   // Sampling: x = 1 − cos θ_h with density ∝ (1 + Bx)^(−C) on [0, 1], φ_h uniform, L = reflect(V, H);
   // pdf(L) = pdf_h / (4⟨V,H⟩), pdf_h = S(x) / (2π ∫₀¹ S).

@@ -8,13 +8,9 @@ namespace glossy {
 
 namespace {
 
-template <class... M>
-std::deque<ModelInfo> infoOf(ModelList<M...>) {
-  return {modelInfo<M>()...};
-}
-
 std::deque<ModelInfo>& models() {
-  static std::deque<ModelInfo> all = infoOf(BuiltinModels{});  // a deque: findModel's pointers stay valid
+  // A deque: findModel's pointers stay valid as models are registered.
+  static std::deque<ModelInfo> all = []<class... M>(ModelList<M...>) { return std::deque<ModelInfo>{modelInfo<M>()...}; }(BuiltinModels{});
   return all;
 }
 

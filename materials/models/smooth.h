@@ -48,11 +48,7 @@ struct Smooth {
     return fresnelCookTorrance(cosThetaD, shape[2]) * exp(-shape[1] * log1p(shape[0] * g.dp2));
   }
 
-  Rgb eval(const Vec3& L, const Vec3& V) const {
-    if (L.z <= 0.0 || V.z <= 0.0) return Rgb(0.0);
-    const double shape[] = {b, c, eta};
-    return kd * kInvPi + a * lobe(LobeGeometry(L, V), shape);
-  }
+  Rgb eval(const Vec3& L, const Vec3& V) const { return evalLobeModel(*this, L, V, kd, a, {b, c, eta}); }
 
   // Sampling: the projected point L_p on the unit disk with density ∝ (1 + B|L_p − r_p|²)^(−C), r_p = −V_p:
   // d² = |L_p − r_p|² from the ABC profile on [0, (1 + |V_p|)²], the angle uniform, |L_p| ≥ 1 rejected;

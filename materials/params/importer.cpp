@@ -1,9 +1,9 @@
 #include "materials/params/importer.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 #include "materials/models/registry.h"
 
-#include <charconv>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -25,13 +25,9 @@ std::vector<std::string> splitLines(std::string_view text) {
   return lines;
 }
 
-double parseNumber(const std::string& s, const std::string& where) {
-  double v = 0.0;
-  const char* b = s.data();
-  if (!s.empty() && s[0] == '+') ++b;
-  auto [end, ec] = std::from_chars(b, s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size()) throw InputError(where + ": '" + s + "' is not a number");
-  return v;
+double requireNumber(const std::string& s, const std::string& where) {
+  if (const auto v = parseNumber(s)) return *v;
+  throw InputError(where + ": '" + s + "' is not a number");
 }
 
 // The supplement's row label → a registry model name.
@@ -45,23 +41,10 @@ std::string supplementModel(const std::string& label) {
 
 // The supplement's parameter symbols → parameter-file keys.
 std::string supplementKey(const std::string& symbol) {
-  if (symbol == "K_d") return "kd";
-  if (symbol == "K_s") return "ks";
-  if (symbol == "A") return "a";
-  if (symbol == "B") return "b";
-  if (symbol == "C") return "c";
-  if (symbol == "m") return "m";
-  if (symbol == "n") return "n";
-  if (symbol == "eta") return "eta";
-  return {};
-}
-
-MaterialFile newMaterial(const std::string& name, std::string_view source) {
-  MaterialFile m;
-  m.name = name;
-  m.measured = merlFileName(name);
-  m.source = std::string(source);
-  return m;
+  static const std::map<std::string, std::string> keys = {{"K_d", "kd"}, {"K_s", "ks"}, {"A", "a"}, {"B", "b"},
+                                                          {"C", "c"},   {"m", "m"},    {"n", "n"}, {"eta", "eta"}};
+  const auto key = keys.find(symbol);
+  return key == keys.end() ? std::string() : key->second;
 }
 
 void checkMaterialName(const std::string& name, const std::string& where) {
@@ -85,7 +68,7 @@ std::vector<MaterialFile> importSupplement(std::string_view text, const std::str
     if (std::regex_search(lines[ln], m, section)) {
       const std::string name = m[1];
       checkMaterialName(name, where);
-      out.push_back(newMaterial(name, kSupplementSource));
+      out.push_back(measuredMaterial(name, kSupplementSource));
       continue;
     }
     // Strip the LaTeX of the PDF's text: $…$, backslashes, braces.
@@ -123,7 +106,7 @@ std::vector<MaterialFile> importSupplement(std::string_view text, const std::str
         const std::string symbol = (*a)[1];
         const std::string key = supplementKey(symbol);
         if (key.empty()) throw InputError(context + ": unknown parameter '" + symbol + "'");
-        const double v = parseNumber((*a)[2], context + ": " + symbol);
+        const double v = requireNumber((*a)[2], context + ": " + symbol);
         if (c < 0) {
           if (fit.params.has(key)) throw InputError(context + ": parameter '" + symbol + "' given twice");
           fit.params.set(key, v);
@@ -168,18 +151,9 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
     throw InputError(source + ": cannot tell the metric (name the file *_E1.fit or *_E2.fit)");
 
   auto parseRgb = [](const std::string& list, const std::string& where) {
-    Rgb rgb;
-    std::istringstream in(list);
-    std::string item;
-    int c = 0;
-    while (std::getline(in, item, ',')) {
-      item.erase(0, item.find_first_not_of(" \t"));
-      item.erase(item.find_last_not_of(" \t") + 1);
-      if (c >= 3) throw InputError(where + ": expected 3 values");
-      rgb[c++] = parseNumber(item, where);
-    }
-    if (c != 3) throw InputError(where + ": expected 3 values");
-    return rgb;
+    const auto v = parseNumberList(list);
+    if (!v || v->size() != 3) throw InputError(where + ": expected 3 values, got '" + list + "'");
+    return Rgb((*v)[0], (*v)[1], (*v)[2]);
   };
 
   std::vector<MaterialFile> out;
@@ -217,10 +191,10 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
       if (value.front() == '[')
         fit.params.set(key->second, parseRgb(value.substr(1, value.size() - 2), context + ": " + arg));
       else
-        fit.params.set(key->second, parseNumber(value, context + ": " + arg));
+        fit.params.set(key->second, requireNumber(value, context + ": " + arg));
     }
     validateFit(fit, context);
-    MaterialFile mat = newMaterial(name, kFitLinesSource);
+    MaterialFile mat = measuredMaterial(name, kFitLinesSource);
     mat.put(std::move(fit));
     for (const MaterialFile& prev : out)
       if (prev.name == name) throw InputError(where + ": material '" + name + "' appears twice in this file");
@@ -232,8 +206,7 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
 
 void Importer::addFile(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  std::error_code ec;
-  if (!in || std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": cannot open");
+  if (std::error_code ec; !in || std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": cannot open");
   std::ostringstream text;
   text << in.rdbuf();
   const std::string s = text.str();
@@ -249,10 +222,7 @@ void Importer::add(std::vector<MaterialFile> materials, int precision) {
   for (MaterialFile& m : materials) {
     auto [it, fresh] = entries_.try_emplace(m.name);
     Entry& e = it->second;
-    if (fresh) {
-      e.material = newMaterial(m.name, m.source);
-      e.material.fits.clear();
-    }
+    if (fresh) e.material = measuredMaterial(m.name, m.source);
     for (Fit& fit : m.fits) {
       auto p = e.precision.find(fit.id.str());
       if (p != e.precision.end() && p->second > precision) continue;
@@ -265,7 +235,7 @@ void Importer::add(std::vector<MaterialFile> materials, int precision) {
 
 MaterialFile Importer::mergeInto(MaterialFile existing, const std::string& name) const {
   const Entry& e = entries_.at(name);
-  if (existing.name.empty()) existing = newMaterial(name, "");
+  if (existing.name.empty()) existing = measuredMaterial(name, "");
   // Make every fit's provenance explicit, merge, then let the material's source be the one most fits
   // share; a fit whose provenance differs keeps its own `source` key.
   for (Fit& f : existing.fits)

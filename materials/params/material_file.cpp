@@ -19,7 +19,9 @@ void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::stri
 
 namespace {
 
-constexpr std::string_view kMetrics[] = {"E1", "E2"};
+void checkMetric(const std::string& metric, const std::string& what) {
+  if (metric != "E1" && metric != "E2") throw InputError(what + " must be E1 or E2, got '" + metric + "'");
+}
 
 std::string quoteList(std::span<const std::string_view> items) {
   std::string s;
@@ -109,8 +111,7 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
   requireString(t, "model", where);
   requireString(t, "metric", where);
   const ModelInfo* model = &requireModel(fit.id.model, where + ": key 'model'");
-  if (std::find(std::begin(kMetrics), std::end(kMetrics), fit.id.metric) == std::end(kMetrics))
-    throw InputError(where + ": key 'metric': must be E1 or E2, got '" + fit.id.metric + "'");
+  checkMetric(fit.id.metric, where + ": key 'metric':");
 
   for (auto&& [k, node] : t) {
     const std::string key(k.str());
@@ -175,8 +176,7 @@ FitId FitId::parse(std::string_view text, std::string_view context) {
   id.model = std::string(text.substr(0, colon));
   id.metric = std::string(text.substr(colon + 1));
   requireModel(id.model, std::string(context));
-  if (std::find(std::begin(kMetrics), std::end(kMetrics), id.metric) == std::end(kMetrics))
-    throw InputError(std::string(context) + ": metric must be E1 or E2, got '" + id.metric + "'");
+  checkMetric(id.metric, std::string(context) + ": metric");
   return id;
 }
 
@@ -224,8 +224,7 @@ void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::stri
 
 void validateFit(const Fit& fit, const std::string& context) {
   const ModelInfo* model = &requireModel(fit.id.model, context);
-  if (std::find(std::begin(kMetrics), std::end(kMetrics), fit.id.metric) == std::end(kMetrics))
-    throw InputError(context + ": metric must be E1 or E2, got '" + fit.id.metric + "'");
+  checkMetric(fit.id.metric, context + ": metric");
   for (const auto& [key, value] : fit.params.values()) {
     auto spec = std::find_if(model->params.begin(), model->params.end(), [&](const ParamSpec& s) { return s.key == key; });
     if (spec == model->params.end()) throw InputError(context + ": key '" + key + "': unknown for the " + fit.id.model + " model");
@@ -314,9 +313,9 @@ Brdf makeBrdf(const Fit& fit) {
   return requireModel(fit.id.model, "fit " + fit.id.str()).make(fit.params);
 }
 
-std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& m, const std::filesystem::path& merlDir) {
-  if (m.measured.empty()) return std::nullopt;
-  const std::filesystem::path name = m.measured;
+std::optional<std::filesystem::path> resolveMeasured(const std::string& measured, const std::filesystem::path& merlDir) {
+  if (measured.empty()) return std::nullopt;
+  const std::filesystem::path name = measured;
   std::vector<std::filesystem::path> candidates;
   if (name.is_absolute()) candidates.push_back(name);
   if (!merlDir.empty()) candidates.push_back(merlDir / name);
@@ -325,8 +324,7 @@ std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& m, cons
   std::error_code ec;
   for (const auto& c : candidates) {
     if (std::filesystem::is_regular_file(c, ec)) return c;
-    std::filesystem::path xz = c;
-    xz += ".xz";
+    const std::filesystem::path xz = c.string() + ".xz";
     if (std::filesystem::is_regular_file(xz, ec)) return xz;
   }
   return std::nullopt;

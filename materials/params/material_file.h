@@ -34,7 +34,7 @@ struct Fit {
 
 struct MaterialFile {
   std::string name;
-  std::string measured;  // MERL file name, resolved by resolveMeasured(); empty if none
+  std::string measured;  // MERL file name, found by resolveMeasured(); empty if none
   std::string source;
   std::vector<Fit> fits;  // at most one per FitId, kept in the comparison grid's order
   std::filesystem::path path;  // where it was loaded from, for messages; empty if built in memory
@@ -56,12 +56,13 @@ std::string toToml(const MaterialFile& material);
 // The BRDF of one fit; the fit must have been validated.
 Brdf makeBrdf(const Fit& fit);
 
-// The measured table's path: as given if it exists, else under merlDir, else under $GLOSSY_MERL_DIR; each
-// also as NAME.xz. nullopt when the material names none or none exists.
-std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& material,
-                                                     const std::filesystem::path& merlDir = {});
+// The path of a measured table (a material's `measured`): as given if it exists, else under merlDir, else
+// under $GLOSSY_MERL_DIR; each also as NAME.xz. nullopt when `measured` is empty or none exists.
+std::optional<std::filesystem::path> resolveMeasured(const std::string& measured, const std::filesystem::path& merlDir = {});
 
-// The measured file name every MERL material has: "alum-bronze" -> "alum-bronze.binary".
-inline std::string merlFileName(const std::string& material) { return material + ".binary"; }
+// A new material measured by the MERL table of its name ("alum-bronze" by "alum-bronze.binary").
+inline MaterialFile measuredMaterial(const std::string& name, std::string_view source) {
+  return {.name = name, .measured = name + ".binary", .source = std::string(source), .fits = {}, .path = {}};
+}
 
 }  // namespace glossy

@@ -48,9 +48,7 @@ std::shared_ptr<const MerlTable> loadMerlTable(const std::filesystem::path& path
 }
 
 std::filesystem::path findMeasuredTable(const std::string& given, const std::filesystem::path& merlDir) {
-  MaterialFile named;
-  named.measured = given;
-  const auto path = resolveMeasured(named, merlDir);
+  const auto path = resolveMeasured(given, merlDir);
   if (!path) throw InputError(given + ": measured table not found (looked in --merl-dir, $GLOSSY_MERL_DIR, the working folder)");
   return *path;
 }

@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace glossy::cli {
 
@@ -25,5 +27,8 @@ Command addSheetsCommand(CLI::App& parent);
 
 // The committed material library: ./materials when run from a checkout, else the source tree's.
 std::filesystem::path defaultMaterialsDir();
+// The material files `paths` name, sorted and each once: a folder stands for its *.toml files, anything else
+// for itself. No paths: the library.
+std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>& paths);
 
 }  // namespace glossy::cli

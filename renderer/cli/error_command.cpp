@@ -1,14 +1,14 @@
 // glossy error: E1 and E2 of every fit of a material file against a measured table (docs/fitting.md).
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 #include "materials/fitting/metric.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/output.h"
 
 #include <nlohmann/json.hpp>
 
-#include <cstdio>
-#include <iostream>
 
 namespace glossy::cli {
 
@@ -23,7 +23,7 @@ int runError(const ErrorOptions& o) {
   const MaterialFile material = loadMaterialFile(o.material);
   std::filesystem::path tablePath;
   if (!o.measured.empty()) tablePath = findMeasuredTable(o.measured, o.merlDir);
-  else if (auto p = resolveMeasured(material, o.merlDir)) tablePath = *p;
+  else if (auto p = resolveMeasured(material.measured, o.merlDir)) tablePath = *p;
   else throw InputError(o.material + ": names no measured table that exists; pass --measured FILE");
   const auto table = loadMerlTable(tablePath);
   const MetricData e1(*table, Metric::E1), e2(*table, Metric::E2);
@@ -42,22 +42,16 @@ int runError(const ErrorOptions& o) {
                                 {"fits", std::move(fits)}};
     out = doc.dump() + "\n";
   } else {
-    char line[200];
-    std::snprintf(line, sizeof line, "%s against %s (%zu of %zu grid pairs measured)\n", material.name.c_str(),
-                  tablePath.filename().string().c_str(), e1.validPairs(), MetricGrid::kPairs);
-    out += line;
-    std::snprintf(line, sizeof line, "%-22s %12s %12s %12s\n", "fit", "E1", "E2", "stored");
-    out += line;
+    out += formatted("%s against %s (%zu of %zu grid pairs measured)\n", material.name.c_str(),
+                     tablePath.filename().string().c_str(), e1.validPairs(), MetricGrid::kPairs);
+    out += formatted("%-22s %12s %12s %12s\n", "fit", "E1", "E2", "stored");
     for (const Fit& fit : material.fits) {
       const Brdf brdf = makeBrdf(fit);
-      char stored[32] = "-";
-      if (fit.error) std::snprintf(stored, sizeof stored, "%.6g", *fit.error);
-      std::snprintf(line, sizeof line, "%-22s %12.6g %12.6g %12s\n", fit.id.str().c_str(), e1.error(brdf), e2.error(brdf), stored);
-      out += line;
+      const std::string stored = fit.error ? formatted("%.6g", *fit.error) : "-";
+      out += formatted("%-22s %12.6g %12.6g %12s\n", fit.id.str().c_str(), e1.error(brdf), e2.error(brdf), stored.c_str());
     }
   }
-  std::fwrite(out.data(), 1, out.size(), stdout);
-  return std::fflush(stdout) == 0 ? 0 : 1;
+  return writeStdout(out);
 }
 
 }  // namespace

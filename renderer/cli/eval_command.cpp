@@ -1,13 +1,12 @@
 // glossy eval: BRDF values for direction pairs read from stdin (shared/spec/interfaces.md).
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 #include "materials/models/brdf.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/number_format.h"
+#include "renderer/cli/output.h"
 
-#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -23,24 +22,11 @@ struct EvalOptions {
 
 // "Lx,Ly,Lz,Vx,Vy,Vz" → two unit vectors; throws InputError naming the stdin line.
 std::pair<Vec3, Vec3> parseDirections(const std::string& line, size_t number) {
-  double v[6];
-  const char* p = line.data();
-  const char* end = line.data() + line.size();
   const std::string where = "stdin line " + std::to_string(number);
-  for (int i = 0; i < 6; ++i) {
-    while (p < end && (*p == ' ' || *p == '\t')) ++p;
-    if (p < end && *p == '+') ++p;
-    auto [next, ec] = std::from_chars(p, end, v[i]);
-    if (ec != std::errc()) throw InputError(where + ": expected 6 comma-separated numbers Lx,Ly,Lz,Vx,Vy,Vz, got '" + line + "'");
-    p = next;
-    while (p < end && (*p == ' ' || *p == '\t')) ++p;
-    if (i < 5) {
-      if (p == end || *p != ',') throw InputError(where + ": expected 6 comma-separated numbers Lx,Ly,Lz,Vx,Vy,Vz, got '" + line + "'");
-      ++p;
-    }
-  }
-  if (p != end) throw InputError(where + ": trailing text after 6 numbers in '" + line + "'");
-  Vec3 L(v[0], v[1], v[2]), V(v[3], v[4], v[5]);
+  const auto v = parseNumberList(line);
+  if (v && v->size() > 6) throw InputError(where + ": trailing text after 6 numbers in '" + line + "'");
+  if (!v || v->size() != 6) throw InputError(where + ": expected 6 comma-separated numbers Lx,Ly,Lz,Vx,Vy,Vz, got '" + line + "'");
+  Vec3 L((*v)[0], (*v)[1], (*v)[2]), V((*v)[3], (*v)[4], (*v)[5]);
   for (Vec3* d : {&L, &V}) {
     const double len = std::sqrt(d->x * d->x + d->y * d->y + d->z * d->z);
     if (!std::isfinite(len) || len == 0.0) throw InputError(where + ": a direction is zero or not finite");
@@ -64,19 +50,12 @@ int runEval(const EvalOptions& o) {
   out.reserve(pairs.size() * 80);
   for (const auto& [L, V] : pairs) {
     const Rgb rho = eval(brdf, L, V);
-    appendNumber(out, rho.r);
-    out += ',';
-    appendNumber(out, rho.g);
-    out += ',';
-    appendNumber(out, rho.b);
-    if (o.pdf) {
-      out += ',';
-      appendNumber(out, pdf(brdf, L, V));
-    }
-    out += '\n';
+    if (o.pdf)
+      appendLine(out, {rho.r, rho.g, rho.b, pdf(brdf, L, V)});
+    else
+      appendLine(out, {rho.r, rho.g, rho.b});
   }
-  std::fwrite(out.data(), 1, out.size(), stdout);
-  return std::fflush(stdout) == 0 ? 0 : 1;
+  return writeStdout(out);
 }
 
 }  // namespace

@@ -2,13 +2,14 @@
 // material's parameter file; with --measured-dir, every model and metric for every table, resumably.
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 #include "materials/fitting/fitter.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/output.h"
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -32,21 +33,11 @@ std::string materialNameOf(const std::filesystem::path& table) {
 }
 
 MaterialFile loadOrStart(const std::filesystem::path& path, const std::filesystem::path& table) {
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec)) return loadMaterialFile(path);
-  MaterialFile m;
-  m.name = materialNameOf(table);
-  m.measured = merlFileName(m.name);
-  m.source = "glossy fit to " + table.filename().string();
-  return m;
+  if (std::error_code ec; std::filesystem::exists(path, ec)) return loadMaterialFile(path);
+  return measuredMaterial(materialNameOf(table), "glossy fit to " + table.filename().string());
 }
 
-std::string formatSeconds(double s) {
-  char buf[32];
-  if (s < 120) std::snprintf(buf, sizeof buf, "%.1f s", s);
-  else std::snprintf(buf, sizeof buf, "%.0f min", s / 60.0);
-  return buf;
-}
+std::string formatSeconds(double s) { return s < 120 ? formatted("%.1f s", s) : formatted("%.0f min", s / 60.0); }
 
 std::string describeFit(const FitReport& r) {
   std::ostringstream s;
@@ -63,18 +54,6 @@ std::string describeFit(const FitReport& r) {
   return s.str();
 }
 
-std::vector<Metric> metricsOf(const std::vector<std::string>& names) {
-  std::vector<Metric> out;
-  for (const auto& n : names) out.push_back(parseMetric(n, "--metric"));
-  return out;
-}
-
-std::vector<std::string> modelsOf(const std::vector<std::string>& names) {
-  if (!names.empty()) return names;
-  const auto all = fittableModels();
-  return {all.begin(), all.end()};
-}
-
 int runSingle(const FitOptions& o) {
   if (o.models.size() != 1 || o.metrics.size() != 1)
     throw InputError("glossy fit --measured needs one --model and one --metric (or use --measured-dir for all)");
@@ -88,17 +67,13 @@ int runSingle(const FitOptions& o) {
   report.fit.source = "glossy fit to " + tablePath.filename().string();
   std::cerr << tablePath.filename().string() << " " << describeFit(report) << "\n";
   material.put(report.fit);
-  if (o.output.empty()) {
-    std::cout << toToml(material);
-    return std::fflush(stdout) == 0 ? 0 : 1;
-  }
+  if (o.output.empty()) return writeStdout(toToml(material));
   writeFileAtomically(o.output, toToml(material));
   return 0;
 }
 
 std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
-  std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec)) throw InputError(dir.string() + ": not a directory");
+  if (std::error_code ec; !std::filesystem::is_directory(dir, ec)) throw InputError(dir.string() + ": not a directory");
   std::map<std::string, std::filesystem::path> byName;  // a .binary wins over its .binary.xz
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     const std::string f = e.path().filename().string();
@@ -115,8 +90,10 @@ std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
 int runBatch(const FitOptions& o) {
   if (o.outDir.empty()) throw InputError("glossy fit --measured-dir needs --out-dir");
   const auto tables = tablesIn(o.measuredDir);
-  const std::vector<std::string> models = modelsOf(o.models);
-  const std::vector<Metric> metrics = metricsOf(o.metrics.empty() ? std::vector<std::string>{"E1", "E2"} : o.metrics);
+  const auto fittable = fittableModels();
+  const std::vector<std::string> models = o.models.empty() ? std::vector<std::string>(fittable.begin(), fittable.end()) : o.models;
+  std::vector<Metric> metrics;
+  for (const std::string& m : o.metrics.empty() ? std::vector<std::string>{"E1", "E2"} : o.metrics) metrics.push_back(parseMetric(m, "--metric"));
   for (const auto& m : models) requireFittable(m);
   std::filesystem::create_directories(o.outDir);
   const std::string settings = o.settings.describe();

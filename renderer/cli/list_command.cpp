@@ -22,26 +22,9 @@ struct ListOptions {
 // A column per fit of the sheets' comparison grid.
 int width(const SheetPanel& column) { return std::max(9, int(column.label.size())); }
 
-std::vector<std::filesystem::path> collect(const std::vector<std::string>& paths) {
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for (const std::string& p : paths) {
-    if (std::filesystem::is_directory(p, ec)) {
-      for (const auto& e : std::filesystem::directory_iterator(p))
-        if (e.path().extension() == ".toml") files.push_back(e.path());
-    } else {
-      files.emplace_back(p);
-    }
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
-
 int runList(const ListOptions& o) {
-  std::vector<std::string> paths = o.paths;
-  if (paths.empty()) paths.push_back(defaultMaterialsDir().string());
-  const auto files = collect(paths);
-  if (files.empty()) throw InputError(paths.front() + ": no .toml material files");
+  const auto files = materialFiles(o.paths);
+  if (files.empty()) throw InputError((o.paths.empty() ? defaultMaterialsDir().string() : o.paths.front()) + ": no .toml material files");
 
   std::printf("Head-on directional albedo a(N) = ∫ρ(L,N) cos θ_L dω_L of each fit (mean of R, G, B);\n"
               "'measured' says whether the material's MERL table was found (--merl-dir, $GLOSSY_MERL_DIR).\n\n");
@@ -59,7 +42,7 @@ int runList(const ListOptions& o) {
       ++bad;
       continue;
     }
-    std::printf("%-26s %-9s", m.name.c_str(), m.measured.empty() ? "-" : resolveMeasured(m, o.merlDir) ? "found" : "missing");
+    std::printf("%-26s %-9s", m.name.c_str(), m.measured.empty() ? "-" : resolveMeasured(m.measured, o.merlDir) ? "found" : "missing");
     for (const SheetPanel& c : sheetPanels()) {
       if (c.fit.empty()) continue;
       const Fit* f = m.find(FitId::parse(c.fit, c.label));

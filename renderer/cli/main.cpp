@@ -3,6 +3,7 @@
 #include "materials/core/input_error.h"
 #include "renderer/cli/command.h"
 
+#include <algorithm>
 #include <iostream>
 #include <vector>
 
@@ -13,6 +14,22 @@ std::filesystem::path defaultMaterialsDir() {
   if (std::filesystem::is_directory("materials", ec) && std::filesystem::exists("materials/alum-bronze.toml", ec))
     return "materials";
   return std::filesystem::path(GLOSSY_SOURCE_DIR) / "materials";
+}
+
+std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>& paths) {
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const std::string& p : paths.empty() ? std::vector<std::string>{defaultMaterialsDir().string()} : paths) {
+    if (!std::filesystem::is_directory(p, ec)) {
+      files.emplace_back(p);
+      continue;
+    }
+    for (const auto& e : std::filesystem::directory_iterator(p))
+      if (e.path().extension() == ".toml") files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  files.erase(std::unique(files.begin(), files.end()), files.end());
+  return files;
 }
 
 }  // namespace glossy::cli
@@ -30,8 +47,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     std::string what = e.what();
-    for (char& c : what)
-      if (c == '\n') c = ' ';
+    std::replace(what.begin(), what.end(), '\n', ' ');
     std::cerr << "glossy: " << what << " (see glossy --help)\n";
     return 2;
   }

@@ -8,30 +8,23 @@
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/scene/material_binding.h"
 
-#include <cstdlib>
 #include <iostream>
-#include <map>
 #include <memory>
-#include <sstream>
 
 namespace glossy::cli {
 
 namespace {
 
 struct RenderOptions {
-  std::string scene, material, fit, measured, merlDir, env, envConstant, camera, output = "out/render.exr";
-  double envRotate = 0.0;
+  SceneOptions scene;
+  std::string material, fit, measured, merlDir, output = "out/render.exr";
   std::string brdfSampling = "lobe";
   RenderSettings settings;
   bool half = false;
 };
 
 int runRender(RenderOptions o) {
-  std::string scenePath = o.scene;
-  if (scenePath.empty()) {
-    const std::filesystem::path preview = std::filesystem::path(GLOSSY_SOURCE_DIR) / "scenes/preview.gltf";
-    scenePath = std::filesystem::exists(preview) ? preview.string() : (std::filesystem::path(GLOSSY_SOURCE_DIR) / "scenes/sphere.gltf").string();
-  }
+  const std::string scenePath = o.scene.scenePath();
   const SceneDescription description = loadGltf(scenePath);
 
   std::optional<BrdfChoice> override;
@@ -46,19 +39,16 @@ int runRender(RenderOptions o) {
   }
 
   MaterialBinding binding = bindMaterials(description, override);
-  RenderScene scene{&description, nullptr, std::move(binding.brdfs), Lambertian{Rgb(0.5)}, nullptr};
-  if (override) scene.defaultBrdf = override->brdf;
-
-  const Environment environment = environmentFromOptions(o.env, o.envConstant, o.envRotate);
+  const Environment environment = o.scene.environment();
   const EmbreeScene bvh(description);
-  scene.bvh = &bvh;
-  scene.environment = &environment;
+  const Brdf defaultBrdf = override ? override->brdf : Lambertian{Rgb(0.5)};
+  const RenderScene scene{&description, &bvh, std::move(binding.brdfs), defaultBrdf, &environment};
 
-  const Camera* camera = &cameraFromOptions(description, o.camera, scenePath);
+  const Camera& camera = o.scene.cameraOf(description);
 
   o.settings.cosineBrdfSampling = o.brdfSampling == "cosine";
   RenderStats stats;
-  const RgbImage image = render(scene, *camera, o.settings, stats);
+  const RgbImage image = render(scene, camera, o.settings, stats);
 
   std::string materialText = override ? override->material : "";
   if (!override)
@@ -98,14 +88,11 @@ Command addRenderCommand(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand("render",
       "Render a glTF scene under an environment into a linear EXR. With no options: the material-preview "
       "scene with its bound material under the built-in sky.");
-  app->add_option("--scene", o->scene, "glTF scene (.gltf or .glb); default: scenes/preview.gltf");
+  o->scene.addTo(app);
   auto* material = app->add_option("--material", o->material, "Material file for every non-emissive mesh");
   auto* fit = app->add_option("--fit", o->fit, "Fit of --material: MODEL:METRIC");
   auto* measured = app->add_option("--measured", o->measured, "MERL table for every non-emissive mesh instead");
   app->add_option("--merl-dir", o->merlDir, "Folder with MERL tables");
-  auto* env = app->add_option("--env", o->env, "Lat-long environment map (.exr, .hdr); default: the built-in sky");
-  auto* constant = app->add_option("--env-constant", o->envConstant, "Constant environment radiance: V or R,G,B");
-  app->add_option("--env-rotate", o->envRotate, "Rotate the environment about +Y, degrees");
   app->add_option("--spp", o->settings.spp, "Samples per pixel")->check(CLI::Range(1, INT32_MAX))->capture_default_str();
   app->add_option("--seed", o->settings.seed, "Random seed")->capture_default_str();
   app->add_option("--threads", o->settings.threads, "Threads (0 = all cores)")->check(CLI::NonNegativeNumber);
@@ -113,7 +100,6 @@ Command addRenderCommand(CLI::App& parent) {
   app->add_option("--height", o->settings.height, "Image height")->check(CLI::Range(1, 1 << 15))->capture_default_str();
   app->add_option("--max-depth", o->settings.maxDepth, "Path segments at most (1 = emitters only, 3 = one indirect bounce)")
       ->check(CLI::Range(1, 1000))->capture_default_str();
-  app->add_option("--camera", o->camera, "Camera by name (default: the scene's first)");
   app->add_flag("--half", o->half, "Write half-float EXR (default: float)");
   app->add_option("--brdf-sampling", o->brdfSampling,
                   "lobe: each model samples its own lobe (default); cosine: the cosine lobe, to see what lobe sampling is worth")
@@ -124,7 +110,6 @@ Command addRenderCommand(CLI::App& parent) {
   material->needs(fit);
   fit->needs(material);
   measured->excludes(material)->excludes(fit);
-  env->excludes(constant);
   return {app, [o] { return runRender(*o); }};
 }
 

@@ -1,15 +1,15 @@
 // glossy sample: directions drawn from a BRDF's sampler for one outgoing direction, with their pdf and
 // weight, so that anyone can check the sampler (shared/spec/interfaces.md).
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/number_format.h"
+#include "renderer/cli/output.h"
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
 #include <random>
-#include <sstream>
 
 namespace glossy::cli {
 
@@ -23,22 +23,9 @@ struct SampleOptions {
 };
 
 Vec3 parseDirection(const std::string& text) {
-  std::stringstream s(text);
-  std::string item;
-  double v[3];
-  int n = 0;
-  while (std::getline(s, item, ',')) {
-    size_t used = 0;
-    try {
-      if (n < 3) v[n] = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (n >= 3 || used != item.size()) throw InputError("--wo: '" + text + "' is not x,y,z");
-    ++n;
-  }
-  if (n != 3) throw InputError("--wo: '" + text + "' is not x,y,z");
-  const Vec3 d(v[0], v[1], v[2]);
+  const auto v = parseNumberList(text);
+  if (!v || v->size() != 3) throw InputError("--wo: '" + text + "' is not x,y,z");
+  const Vec3 d((*v)[0], (*v)[1], (*v)[2]);
   const double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
   if (!std::isfinite(len) || len == 0.0) throw InputError("--wo: '" + text + "' is zero or not finite");
   return d / len;
@@ -56,22 +43,16 @@ int runSample(const SampleOptions& o) {
   for (long long i = 0; i < o.count; ++i) {
     const double uLobe = uniform(rng), u1 = uniform(rng), u2 = uniform(rng);
     const BrdfSample s = sample(brdf, V, uLobe, Vec2(u1, u2));
-    if (!s.valid()) {
+    if (!s.valid())
       out += "0,0,0,0,0,0,0\n";
-    } else {
-      for (double x : {s.L.x, s.L.y, s.L.z, s.pdf, s.weight.r, s.weight.g, s.weight.b}) {
-        appendNumber(out, x);
-        out += ',';
-      }
-      out.back() = '\n';
-    }
+    else
+      appendLine(out, {s.L.x, s.L.y, s.L.z, s.pdf, s.weight.r, s.weight.g, s.weight.b});
     if (out.size() > (1u << 24)) {
       std::fwrite(out.data(), 1, out.size(), stdout);
       out.clear();
     }
   }
-  std::fwrite(out.data(), 1, out.size(), stdout);
-  return std::fflush(stdout) == 0 ? 0 : 1;
+  return writeStdout(out);
 }
 
 }  // namespace

@@ -1,19 +1,27 @@
-// What glossy render and glossy sheet take from the command line about the scene: the environment and the
-// camera.
+// What glossy render and glossy sheet take from the command line about the scene: the glTF file, the camera
+// and the environment.
 #pragma once
 
 #include "renderer/lights/environment.h"
 #include "renderer/scene/scene.h"
 
+#include <CLI/CLI.hpp>
+
 #include <string>
 
 namespace glossy::cli {
 
-// --env FILE (lat-long .exr/.hdr), --env-constant V or R,G,B, or the built-in sky; --env-rotate turns maps
-// and the sky about +Y. InputError naming the option or the file for anything malformed.
-Environment environmentFromOptions(const std::string& file, const std::string& constant, double rotateDegrees);
+struct SceneOptions {
+  std::string scene, camera, env, envConstant;
+  double envRotate = 0.0;
 
-// --camera NAME, or the scene's first camera; InputError naming the scene when there is none.
-const Camera& cameraFromOptions(const SceneDescription& scene, const std::string& name, const std::string& scenePath);
+  void addTo(CLI::App* app);
+  std::string scenePath() const;  // --scene, else the source tree's scenes/preview.gltf
+  // --env FILE (lat-long .exr/.hdr), --env-constant V or R,G,B, or the built-in sky; --env-rotate turns maps
+  // and the sky about +Y. InputError naming the option or the file for anything malformed.
+  Environment environment() const;
+  // --camera NAME, or the scene's first camera; InputError naming the scene when there is none.
+  const Camera& cameraOf(const SceneDescription& description) const;
+};
 
 }  // namespace glossy::cli

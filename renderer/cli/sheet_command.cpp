@@ -23,8 +23,9 @@ namespace {
 constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 
 struct SheetOptions {
-  std::string material, measured, merlDir, scene, env, envConstant, camera, output = "out/sheet.exr";
-  double envRotate = 0.0, exposure = 0.0;
+  SceneOptions scene;
+  std::string material, measured, merlDir, output = "out/sheet.exr";
+  double exposure = 0.0;
   bool half = false;
   SheetSettings settings;
   // glossy sheets
@@ -35,31 +36,20 @@ struct SheetOptions {
 // What every sheet of one run shares: the scene, its BVH, the environment, the camera.
 struct Stage {
   SceneDescription description;
-  std::unique_ptr<EmbreeScene> bvh;
-  std::unique_ptr<Environment> environment;
-  const Camera* camera = nullptr;
-  std::string scenePath;
+  const Camera& camera;
+  EmbreeScene bvh;
+  Environment environment;
 
-  explicit Stage(const SheetOptions& o) {
-    scenePath = o.scene;
-    if (scenePath.empty()) scenePath = (std::filesystem::path(GLOSSY_SOURCE_DIR) / "scenes/preview.gltf").string();
-    description = loadGltf(scenePath);
-    camera = &cameraFromOptions(description, o.camera, scenePath);
-    bvh = std::make_unique<EmbreeScene>(description);
-    environment = std::make_unique<Environment>(environmentFromOptions(o.env, o.envConstant, o.envRotate));
-  }
+  explicit Stage(const SceneOptions& o)
+      : description(loadGltf(o.scenePath())), camera(o.cameraOf(description)), bvh(description), environment(o.environment()) {}
 };
 
 // The measured table of a material: --measured, else the file's `measured` under --merl-dir or
 // $GLOSSY_MERL_DIR. Returns null with a note saying where to get the data when there is none.
 std::shared_ptr<const MerlTable> findMeasured(const MaterialFile& m, const SheetOptions& o, const std::string& explicitPath,
                                               std::string& note) {
-  std::optional<std::filesystem::path> path;
-  if (!explicitPath.empty()) {
-    path = findMeasuredTable(explicitPath, o.merlDir);
-  } else if (!m.measured.empty()) {
-    path = resolveMeasured(m, o.merlDir);
-  }
+  const std::optional<std::filesystem::path> path =
+      explicitPath.empty() ? resolveMeasured(m.measured, o.merlDir) : findMeasuredTable(explicitPath, o.merlDir);
   if (!path) {
     note = m.measured.empty() ? "the material names no measured table"
                               : "no " + m.measured + " in --merl-dir or $GLOSSY_MERL_DIR: get the MERL BRDF database "
@@ -93,8 +83,8 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       o.settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(o.settings.seed)}
                                              : ImageAttribute{"glossy:seed", std::to_string(o.settings.seed)},
       {"glossy:maxDepth", o.settings.maxDepth},
-      {"glossy:scene", stage.scenePath},
-      {"glossy:env", stage.environment->description()},
+      {"glossy:scene", stage.description.source.string()},
+      {"glossy:env", stage.environment.description()},
       {"glossy:smoothFresnel", smoothFresnel.empty() ? std::string("projected") : smoothFresnel},
       {"glossy:conventions", modelConventions()},
       {"glossy:pngExposure", float(o.exposure)},
@@ -111,12 +101,11 @@ void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, co
   std::string note;
   const auto measured = findMeasured(m, o, explicitMeasured, note);
   const auto start = std::chrono::steady_clock::now();
-  const SheetScene scene = makeSheetScene(stage.description, *stage.bvh, *stage.environment, *stage.camera);
+  const SheetScene scene = makeSheetScene(stage.description, stage.bvh, stage.environment, stage.camera);
   const Sheet sheet = renderSheet(scene, m, measured, note, o.settings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (exr.has_parent_path()) std::filesystem::create_directories(exr.parent_path());
-  std::filesystem::path png = exr;
-  png.replace_extension(".png");
+  const std::filesystem::path png = std::filesystem::path(exr).replace_extension(".png");
   // The PNG first: a sheet counts as complete (for glossy sheets' resuming) once its EXR exists.
   writeSheetPng(sheet, png, o.exposure, std::filesystem::exists(kFont) ? kFont : "");
   writeSheetExr(sheet, exr, sheetMetadata(m, stage, o, sheet, seconds), o.half ? PixelType::Half : PixelType::Float);
@@ -126,12 +115,7 @@ void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, co
 
 void addRenderOptions(CLI::App* app, SheetOptions& o) {
   app->add_option("--merl-dir", o.merlDir, "Folder with MERL tables (else $GLOSSY_MERL_DIR)");
-  app->add_option("--scene", o.scene, "glTF scene; default: scenes/preview.gltf");
-  app->add_option("--camera", o.camera, "Camera by name (default: the scene's first)");
-  auto* env = app->add_option("--env", o.env, "Lat-long environment map (.exr, .hdr); default: the built-in sky");
-  auto* constant = app->add_option("--env-constant", o.envConstant, "Constant environment radiance: V or R,G,B");
-  env->excludes(constant);
-  app->add_option("--env-rotate", o.envRotate, "Rotate the environment about +Y, degrees");
+  o.scene.addTo(app);
   app->add_option("--spp", o.settings.spp, "Samples per pixel of every panel")->check(CLI::Range(1, INT32_MAX))->capture_default_str();
   app->add_option("--time", o.settings.secondsPerPanel,
                   "Wall-clock seconds per panel instead of --spp: each panel renders progressively until its budget is spent")
@@ -146,7 +130,7 @@ void addRenderOptions(CLI::App* app, SheetOptions& o) {
 }
 
 int runSheet(const SheetOptions& o) {
-  const Stage stage(o);
+  const Stage stage(o.scene);
   SheetOptions single = o;
   single.settings.progress = isatty(STDERR_FILENO);
   makeSheet(stage, o.material, single, o.output, o.measured);
@@ -162,21 +146,10 @@ std::pair<int, int> parseShard(const std::string& text) {
 }
 
 int runSheets(const SheetOptions& o) {
-  std::vector<std::filesystem::path> files;
-  const std::vector<std::string> inputs = o.inputs.empty() ? std::vector<std::string>{defaultMaterialsDir().string()} : o.inputs;
-  for (const std::string& in : inputs) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(in, ec)) {
-      for (const auto& e : std::filesystem::directory_iterator(in))
-        if (e.path().extension() == ".toml") files.push_back(e.path());
-    } else if (std::filesystem::is_regular_file(in, ec)) {
-      files.push_back(in);
-    } else {
+  for (const std::string& in : o.inputs)
+    if (std::error_code ec; !std::filesystem::is_directory(in, ec) && !std::filesystem::is_regular_file(in, ec))
       throw InputError(in + ": no such material file or folder");
-    }
-  }
-  std::sort(files.begin(), files.end());
-  files.erase(std::unique(files.begin(), files.end()), files.end());
+  std::vector<std::filesystem::path> files = materialFiles(o.inputs);
   if (!o.shard.empty()) {
     const auto [index, count] = parseShard(o.shard);
     std::vector<std::filesystem::path> mine;
@@ -187,7 +160,7 @@ int runSheets(const SheetOptions& o) {
   // Validate every file before rendering any, so a typo fails in a second, not after an hour.
   for (const auto& f : files) loadMaterialFile(f);
 
-  const Stage stage(o);
+  const Stage stage(o.scene);
   SheetOptions batch = o;
   batch.settings.progress = false;
   const auto start = std::chrono::steady_clock::now();
@@ -195,8 +168,7 @@ int runSheets(const SheetOptions& o) {
   for (size_t k = 0; k < files.size(); ++k) {
     const std::string name = loadMaterialFile(files[k]).name;
     const std::filesystem::path exr = std::filesystem::path(o.outDir) / (name + ".exr");
-    std::filesystem::path png = exr;
-    png.replace_extension(".png");
+    const std::filesystem::path png = std::filesystem::path(exr).replace_extension(".png");
     if (std::filesystem::exists(exr) && std::filesystem::exists(png)) {
       ++skipped;
       std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": complete, skipped\n";

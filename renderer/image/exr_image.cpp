@@ -1,46 +1,37 @@
 #include "renderer/image/exr_image.h"
 
+#include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
-#include <cstdlib>
-#include <random>
 #include <stdexcept>
 
 namespace glossy {
 
 namespace {
 
-// Writes through a hidden temporary beside the target (OIIO picks the format from the extension, so it
-// keeps the target's), renamed into place; a random name keeps concurrent writers of one target apart.
+// Encodes the image in memory (OIIO picks the format from the extension), then writes it atomically.
 void writeAtomically(const std::filesystem::path& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc dataType,
                      const void* data) {
-  std::random_device rd;
-  std::string tmpName = ".";
-  tmpName.append(path.stem().string()).append(".tmp").append(std::to_string(rd() % 1000000)).append(path.extension().string());
-  const std::filesystem::path tmp = path.parent_path() / tmpName;
-  auto fail = [&](const std::string& why) {
-    std::error_code ec;
-    std::filesystem::remove(tmp, ec);
-    return std::runtime_error(path.string() + ": cannot write image: " + why);
-  };
-  auto out = OIIO::ImageOutput::create(tmp.string());
-  if (!out) throw fail(OIIO::geterror());
-  if (!out->open(tmp.string(), spec)) throw fail(out->geterror());
-  if (!out->write_image(dataType, data)) throw fail(out->geterror());
-  if (!out->close()) throw fail(out->geterror());
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw fail("rename: " + ec.message());
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  auto out = OIIO::ImageOutput::create(path.string(), &memory);
+  if (!out) throw std::runtime_error(path.string() + ": cannot write image: " + OIIO::geterror());
+  if (!out->open(path.string(), spec) || !out->write_image(dataType, data) || !out->close())
+    throw std::runtime_error(path.string() + ": cannot write image: " + out->geterror());
+  writeFileAtomically(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+}
+
+std::unique_ptr<OIIO::ImageInput> openImage(const std::filesystem::path& path) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
+  return in;
 }
 
 void addAttributes(OIIO::ImageSpec& spec, const std::vector<ImageAttribute>& attributes) {
-  for (const ImageAttribute& a : attributes) {
-    if (auto s = std::get_if<std::string>(&a.value)) spec.attribute(a.name, *s);
-    if (auto i = std::get_if<int>(&a.value)) spec.attribute(a.name, *i);
-    if (auto f = std::get_if<float>(&a.value)) spec.attribute(a.name, *f);
-  }
+  for (const ImageAttribute& a : attributes) std::visit([&](const auto& value) { spec.attribute(a.name, value); }, a.value);
 }
 
 }  // namespace
@@ -77,8 +68,7 @@ void writeRgb8(const std::filesystem::path& path, int width, int height, const s
 }
 
 RgbImage readRgbImage(const std::filesystem::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
+  const auto in = openImage(path);
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.nchannels < 3) throw InputError(path.string() + ": needs 3 channels, has " + std::to_string(spec.nchannels));
   RgbImage image(spec.width, spec.height);
@@ -88,19 +78,13 @@ RgbImage readRgbImage(const std::filesystem::path& path) {
 }
 
 std::string readImageAttribute(const std::filesystem::path& path, const std::string& name) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
+  const auto in = openImage(path);
   const OIIO::ParamValue* p = in->spec().find_attribute(name);
   return p ? p->get_string() : std::string();
 }
 
-}  // namespace glossy
-
-namespace glossy {
-
 RgbImage readImageLayer(const std::filesystem::path& path, const std::string& prefix) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
+  const auto in = openImage(path);
   const OIIO::ImageSpec& spec = in->spec();
   const int first = spec.channelindex(prefix + ".R");
   if (first < 0 || spec.channelindex(prefix + ".B") != first + 2)

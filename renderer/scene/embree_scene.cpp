@@ -27,28 +27,16 @@ void recordEmbreeError(void* userPtr, RTCError code, const char* message) {
     error = message && *message ? std::string(message) : "error code " + std::to_string(int(code));
 }
 
-
 }  // namespace
 
-static float toFloatDistance(double t) {
-  return t >= double(std::numeric_limits<float>::max()) ? std::numeric_limits<float>::infinity() : float(t);
-}
-
 RTCRay toRtcRay(const Ray& ray) {
-  RTCRay r;
-  r.org_x = float(ray.origin.x);
-  r.org_y = float(ray.origin.y);
-  r.org_z = float(ray.origin.z);
-  r.dir_x = float(ray.dir.x);
-  r.dir_y = float(ray.dir.y);
-  r.dir_z = float(ray.dir.z);
-  r.tnear = float(std::max(ray.tnear, 0.0));
-  r.tfar = toFloatDistance(ray.tfar);
-  r.time = 0.0f;
-  r.mask = ~0u;
-  r.id = 0;
-  r.flags = 0;
-  return r;
+  constexpr float kMax = std::numeric_limits<float>::max(), kInf = std::numeric_limits<float>::infinity();
+  return {.org_x = float(ray.origin.x), .org_y = float(ray.origin.y), .org_z = float(ray.origin.z),
+          .tnear = float(std::max(ray.tnear, 0.0)),
+          .dir_x = float(ray.dir.x), .dir_y = float(ray.dir.y), .dir_z = float(ray.dir.z),
+          .time = 0.0f,
+          .tfar = ray.tfar >= double(kMax) ? kInf : float(ray.tfar),
+          .mask = ~0u, .id = 0, .flags = 0};
 }
 
 EmbreeScene::EmbreeScene(const SceneDescription& scene) : scene_(scene) {
@@ -134,18 +122,13 @@ bool EmbreeScene::intersect(const Ray& ray, Hit& hit) const {
   rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(rtcScene_, &context, &rayHit);
   if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-
-  hit.t = rayHit.ray.tfar;
-  hit.mesh = rayHit.hit.geomID;
-  hit.triangle = rayHit.hit.primID;
-  hit.u = rayHit.hit.u;
-  hit.v = rayHit.hit.v;
-  completeHit(ray, hit);
+  hit = completeHit(ray, rayHit.hit.geomID, rayHit.hit.primID, rayHit.ray.tfar, rayHit.hit.u, rayHit.hit.v);
   return true;
 }
 
-void EmbreeScene::completeHit(const Ray& ray, Hit& hit) const {
-  const Mesh& mesh = scene_.meshes[hit.mesh];
+Hit EmbreeScene::completeHit(const Ray& ray, uint32_t meshIndex, uint32_t triangle, double t, double u, double v) const {
+  Hit hit{.t = t, .mesh = meshIndex, .triangle = triangle, .u = u, .v = v};
+  const Mesh& mesh = scene_.meshes[meshIndex];
   const uint32_t* corner = &mesh.indices[3 * size_t(hit.triangle)];
   const Vec3 p0(mesh.positions[corner[0]]), p1(mesh.positions[corner[1]]), p2(mesh.positions[corner[2]]);
   // The ray against the triangle again, in double (Möller–Trumbore): Embree's float t, u, v depend on
@@ -169,6 +152,7 @@ void EmbreeScene::completeHit(const Ray& ray, Hit& hit) const {
     const double len = glm::length(n);
     if (len > 1e-12 && std::isfinite(len)) hit.shadingNormal = n / len;
   }
+  return hit;
 }
 
 void EmbreeScene::intersect(const bool* valid, const Ray* rays, Hit* hits, bool* found) const {
@@ -176,31 +160,19 @@ void EmbreeScene::intersect(const bool* valid, const Ray* rays, Hit* hits, bool*
     recorder_->recordPacket(rays, valid, false);
   alignas(32) int mask[kPacketSize];
   alignas(32) RTCRayHit8 packet;
-  bool any = false;
   for (int i = 0; i < kPacketSize; ++i) {
-    if (!valid[i]) {
-      setPacketHitLane(packet, mask, i, nullptr);
-      continue;
-    }
-    const RTCRay ray = toRtcRay(rays[i]);
-    setPacketHitLane(packet, mask, i, &ray);
-    any = true;
+    const RTCRay ray = valid[i] ? toRtcRay(rays[i]) : RTCRay{};
+    setPacketHitLane(packet, mask, i, valid[i] ? &ray : nullptr);
   }
-  if (!any) return;
+  if (std::none_of(valid, valid + kPacketSize, [](bool v) { return v; })) return;
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   rtcIntersect8(mask, rtcScene_, &context, &packet);
   for (int i = 0; i < kPacketSize; ++i) {
     if (!valid[i]) continue;
     found[i] = packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
-    if (!found[i]) continue;
-    Hit& hit = hits[i];
-    hit.t = packet.ray.tfar[i];
-    hit.mesh = packet.hit.geomID[i];
-    hit.triangle = packet.hit.primID[i];
-    hit.u = packet.hit.u[i];
-    hit.v = packet.hit.v[i];
-    completeHit(rays[i], hit);
+    if (found[i])
+      hits[i] = completeHit(rays[i], packet.hit.geomID[i], packet.hit.primID[i], packet.ray.tfar[i], packet.hit.u[i], packet.hit.v[i]);
   }
 }
 

@@ -110,9 +110,9 @@ class EmbreeScene {
 
  private:
   void throwIfEmbreeFailed(const char* doing) const;
-  // Hit geometry in double from the mesh and the primitive Embree found: the same hit whether Embree
-  // answered a one-ray or a packet query.
-  void completeHit(const Ray& ray, Hit& hit) const;
+  // The hit on primitive `triangle` of mesh `mesh` that Embree found at (t, u, v), in double from the mesh:
+  // the same hit whether Embree answered a one-ray or a packet query.
+  Hit completeHit(const Ray& ray, uint32_t mesh, uint32_t triangle, double t, double u, double v) const;
   void release();
 
   const SceneDescription& scene_;

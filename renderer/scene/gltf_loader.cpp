@@ -19,6 +19,8 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <span>
 #include <utility>
 
 namespace glossy {
@@ -43,42 +45,26 @@ std::string label(const char* kind, const std::string& name, int index) {
   return name.empty() ? std::string(kind) + " " + std::to_string(index) : std::string(kind) + " '" + name + "'";
 }
 
-bool isFinite(const glm::dmat4& m) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(m[c][r])) return false;
-  return true;
-}
-
-bool allFinite(const std::vector<double>& values) {
+bool allFinite(std::span<const double> values) {
   return std::all_of(values.begin(), values.end(), [](double x) { return std::isfinite(x); });
 }
 
+// glTF's names of an accessor's component type and type, for messages.
 const char* componentTypeName(int componentType) {
-  switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
-    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
-    case TINYGLTF_COMPONENT_TYPE_INT: return "INT";
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "FLOAT";
-    case TINYGLTF_COMPONENT_TYPE_DOUBLE: return "DOUBLE";
-    default: return "an unknown component type";
-  }
+  static const std::map<int, const char*> names = {
+      {TINYGLTF_COMPONENT_TYPE_BYTE, "BYTE"},   {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, "UNSIGNED_BYTE"},
+      {TINYGLTF_COMPONENT_TYPE_SHORT, "SHORT"}, {TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, "UNSIGNED_SHORT"},
+      {TINYGLTF_COMPONENT_TYPE_INT, "INT"},     {TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, "UNSIGNED_INT"},
+      {TINYGLTF_COMPONENT_TYPE_FLOAT, "FLOAT"}, {TINYGLTF_COMPONENT_TYPE_DOUBLE, "DOUBLE"}};
+  const auto name = names.find(componentType);
+  return name == names.end() ? "an unknown component type" : name->second;
 }
-
 const char* typeName(int type) {
-  switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    case TINYGLTF_TYPE_MAT2: return "MAT2";
-    case TINYGLTF_TYPE_MAT3: return "MAT3";
-    case TINYGLTF_TYPE_MAT4: return "MAT4";
-    default: return "an unknown type";
-  }
+  static const std::map<int, const char*> names = {
+      {TINYGLTF_TYPE_SCALAR, "SCALAR"}, {TINYGLTF_TYPE_VEC2, "VEC2"}, {TINYGLTF_TYPE_VEC3, "VEC3"}, {TINYGLTF_TYPE_VEC4, "VEC4"},
+      {TINYGLTF_TYPE_MAT2, "MAT2"},     {TINYGLTF_TYPE_MAT3, "MAT3"}, {TINYGLTF_TYPE_MAT4, "MAT4"}};
+  const auto name = names.find(type);
+  return name == names.end() ? "an unknown type" : name->second;
 }
 
 // The renderer uses no textures: skipping their decoding saves time and keeps image formats stb cannot
@@ -96,27 +82,18 @@ struct AccessorData {
   size_t count = 0;
   int componentType = 0;
 
-  glm::vec3 vec3(size_t i) const {
-    glm::vec3 v(0.0f);
-    if (first) std::memcpy(&v, first + i * stride, sizeof v);
-    return v;
+  // Element i as a T (zero without a buffer view), read unaligned.
+  template <class T>
+  T get(size_t i) const {
+    T x{};
+    if (first) std::memcpy(&x, first + i * stride, sizeof x);
+    return x;
   }
+  glm::vec3 vec3(size_t i) const { return get<glm::vec3>(i); }
   uint32_t index(size_t i) const {
-    if (!first) return 0;
-    const unsigned char* p = first + i * stride;
-    switch (componentType) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return *p;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-        uint16_t x;
-        std::memcpy(&x, p, sizeof x);
-        return x;
-      }
-      default: {
-        uint32_t x;
-        std::memcpy(&x, p, sizeof x);
-        return x;
-      }
-    }
+    if (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) return get<uint8_t>(i);
+    if (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) return get<uint16_t>(i);
+    return get<uint32_t>(i);
   }
 };
 
@@ -168,7 +145,7 @@ class GltfReader {
           strength = s.GetNumberAsDouble();
         }
         out.emission = Rgb(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]) * strength;
-        if (!allFinite(std::vector<double>{out.emission.r, out.emission.g, out.emission.b}))
+        if (!allFinite({glm::value_ptr(out.emission), 3}))
           fail(where + ": emissiveFactor × emissiveStrength overflows");
       }
       if (m.extras.Has("glossy")) {
@@ -243,7 +220,7 @@ class GltfReader {
       visited_[size_t(index)] = 1;
 
       const glm::dmat4 world = parent * localMatrix(node, where);
-      if (!isFinite(world)) fail(where + ": its transform is not finite");
+      if (!allFinite({glm::value_ptr(world), 16})) fail(where + ": its transform is not finite");
       if (node.mesh >= 0) addMesh(node.mesh, world, where);
       if (node.camera >= 0) addCamera(node, index, world, where);
       for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.emplace_back(*c, world);

@@ -1,5 +1,6 @@
 #include "renderer/sheet/sheet.h"
 
+#include "materials/core/text.h"
 #include "materials/fitting/metric.h"
 #include "materials/models/registry.h"
 #include "renderer/camera/camera_rays.h"
@@ -35,13 +36,8 @@ PanelRender renderPanel(const SheetScene& scene, const SheetPanel& panel, const 
   for (size_t m = 0; m < brdfs.size(); ++m)
     if (scene.isObject[m]) brdfs[m] = brdf;
   const RenderScene rs{scene.description, scene.bvh, std::move(brdfs), brdf, scene.environment};
-  RenderSettings r;
-  r.width = s.width;
-  r.height = s.height;
-  r.seed = s.seed;
-  r.threads = s.threads;
-  r.maxDepth = s.maxDepth;
-  r.progress = s.progress && s.secondsPerPanel <= 0.0;
+  RenderSettings r{.width = s.width, .height = s.height, .maxDepth = s.maxDepth, .seed = s.seed, .threads = s.threads,
+                   .progress = s.progress && s.secondsPerPanel <= 0.0};
   const auto start = std::chrono::steady_clock::now();
   if (s.secondsPerPanel <= 0.0) {
     r.spp = s.spp;
@@ -83,12 +79,6 @@ std::string fitted(std::string text, int width, int fontSize, const std::string&
     while (!text.empty() && (static_cast<unsigned char>(text.back()) & 0xC0) == 0x80) text.pop_back();  // whole UTF-8 characters
   }
   return text;
-}
-
-std::string formatted(const char* format, double value) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, value);
-  return buf;
 }
 
 }  // namespace
@@ -149,20 +139,15 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
 
   for (const SheetPanel& panel : settings.panels) {
     PanelRender r;
+    r.panel = panel;
     if (panel.fit.empty()) {
-      if (measured) {
-        r = renderPanel(scene, panel, Measured(measured), settings);
-        r.note = measuredNote;
-      } else {
-        r.panel = panel;
-        r.note = measuredNote;
-      }
+      if (measured) r = renderPanel(scene, panel, Measured(measured), settings);
+      r.note = measuredNote;
     } else if (const Fit* fit = material.find(FitId::parse(panel.fit, material.path.string()))) {
       const Brdf brdf = makeBrdf(*fit);
       r = renderPanel(scene, panel, brdf, settings);
       if (measured) r.brdfE1 = e1->error(brdf), r.brdfE2 = e2->error(brdf);
     } else {
-      r.panel = panel;
       r.note = "no " + panel.fit + " fit in " + material.name;
     }
     if (r.empty) r.image = RgbImage(w, h);
@@ -218,9 +203,7 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
     placed.push_back(std::move(img));
     names += (names.empty() ? "" : ",") + p.panel.layer;
     const std::string key = "glossy:panel." + p.panel.layer;
-    std::ostringstream box;
-    box << int(k) * w << " 0 " << w << " " << h;
-    metadata.push_back({key + ".box", box.str()});
+    metadata.push_back({key + ".box", std::to_string(int(k) * w) + " 0 " + std::to_string(w) + " " + std::to_string(h)});
     metadata.push_back({key + ".label", p.panel.label});
     metadata.push_back({key + ".fit", p.panel.fit.empty() ? std::string("measured") : p.panel.fit});
     metadata.push_back({key + ".empty", int(p.empty)});
@@ -272,31 +255,25 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
       }
   }
   const float white[3] = {0.95f, 0.95f, 0.95f}, grey[3] = {0.7f, 0.7f, 0.7f};
+  const int small = std::max(8, fontSize - 2);
   for (int k = 0; k < n; ++k) {
     const PanelRender& p = sheet.panels[size_t(k)];
+    auto label = [&](const std::string& text, int y, int size, OIIO::cspan<float> colour) {
+      OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + y, fitted(text, w - 6, size, fontPath), size, fontPath, colour);
+    };
     std::string second;
-    const int small = std::max(8, fontSize - 2);
     if (p.empty)
       second = p.panel.fit.empty() ? "no MERL data (--merl-dir)" : "no fit";
     else if (p.relativeRmse >= 0.0)
       // Narrow panels get the figures without their names.
-      second = w >= 120 ? formatted("rRMSE %.3f", p.relativeRmse) + formatted("  lum x%.2f", p.luminanceRatio)
-                        : formatted("%.3f", p.relativeRmse) + formatted(" x%.2f", p.luminanceRatio);
+      second = formatted(w >= 120 ? "rRMSE %.3f  lum x%.2f" : "%.3f x%.2f", p.relativeRmse, p.luminanceRatio);
     else if (!p.panel.fit.empty())
       second = "no measured panel";
     else
       second = p.note.find("NBRDF") != std::string::npos ? "MERL (NBRDF reconstr.)" : "MERL";
-    OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + fontSize + 2, fitted(p.panel.label, w - 6, fontSize, fontPath), fontSize,
-                                    fontPath, white);
-    if (!second.empty())
-      OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + 2 * fontSize + 5, fitted(second, w - 6, small, fontPath), small,
-                                      fontPath, grey);
-    if (p.brdfE1 >= 0.0) {
-      const std::string third = w >= 120 ? formatted("E1 %.3g", p.brdfE1) + formatted("  E2 %.3g", p.brdfE2)
-                                         : formatted("%.2g", p.brdfE1) + formatted(" %.2g", p.brdfE2);
-      OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + 3 * fontSize + 7, fitted(third, w - 6, small, fontPath), small,
-                                      fontPath, grey);
-    }
+    label(p.panel.label, fontSize + 2, fontSize, white);
+    if (!second.empty()) label(second, 2 * fontSize + 5, small, grey);
+    if (p.brdfE1 >= 0.0) label(formatted(w >= 120 ? "E1 %.3g  E2 %.3g" : "%.2g %.2g", p.brdfE1, p.brdfE2), 3 * fontSize + 7, small, grey);
   }
   if (buf.has_error()) std::fprintf(stderr, "glossy: %s: labels not drawn: %s\n", path.string().c_str(), buf.geterror().c_str());
   std::vector<unsigned char> rgb(size_t(w * n) * size_t(h + strip) * 3);
@@ -308,22 +285,19 @@ std::string errorTable(const Sheet& sheet) {
   std::ostringstream s;
   s << sheet.material << ": ";
   const std::string note = sheet.measured() ? sheet.measured()->note : "none in the grid";
-  if (!sheet.hasMeasured()) {
-    s << "no measured panel (" << note << "), so no errors against it\n";
-  } else {
+  if (sheet.hasMeasured())
     s << "error of each model against the measured panel (" << note << "), over the object's pixels\n";
-  }
+  else
+    s << "no measured panel (" << note << "), so no errors against it\n";
   s << "  panel           spp   rel. RMSE   luminance ratio   BRDF E1   BRDF E2\n";
   for (const PanelRender& p : sheet.panels) {
-    char line[160];
     if (p.empty)
-      std::snprintf(line, sizeof line, "  %-14s    -   %s\n", p.panel.label.c_str(), p.note.c_str());
+      s << formatted("  %-14s    -   %s\n", p.panel.label.c_str(), p.note.c_str());
     else if (p.relativeRmse >= 0.0)
-      std::snprintf(line, sizeof line, "  %-14s %5d   %9.4f   %15.4f   %7.4f   %7.4f\n", p.panel.label.c_str(), p.spp,
-                    p.relativeRmse, p.luminanceRatio, p.brdfE1, p.brdfE2);
+      s << formatted("  %-14s %5d   %9.4f   %15.4f   %7.4f   %7.4f\n", p.panel.label.c_str(), p.spp, p.relativeRmse,
+                     p.luminanceRatio, p.brdfE1, p.brdfE2);
     else
-      std::snprintf(line, sizeof line, "  %-14s %5d   %9s   %15s\n", p.panel.label.c_str(), p.spp, "-", "-");
-    s << line;
+      s << formatted("  %-14s %5d   %9s   %15s\n", p.panel.label.c_str(), p.spp, "-", "-");
   }
   // Which model is closest: the smallest relative RMSE.
   const PanelRender* best = nullptr;

@@ -32,13 +32,11 @@ void Progress::draw(size_t done, bool final) {
   const double fraction = std::min(1.0, double(done) / double(total_));
   constexpr int kWidth = 30;
   const int filled = int(fraction * kWidth);
-  char bar[kWidth + 1];
-  for (int i = 0; i < kWidth; ++i) bar[i] = i < filled ? '#' : '.';
-  bar[kWidth] = '\0';
+  const std::string bar = std::string(filled, '#') + std::string(kWidth - filled, '.');
   if (final)
-    std::fprintf(stderr, "\r%s [%s] %3.0f%%  %.1fs          \n", label_.c_str(), bar, fraction * 100.0, elapsed);
+    std::fprintf(stderr, "\r%s [%s] %3.0f%%  %.1fs          \n", label_.c_str(), bar.c_str(), fraction * 100.0, elapsed);
   else
-    std::fprintf(stderr, "\r%s [%s] %3.0f%%  %.1fs, ETA %.1fs   ", label_.c_str(), bar, fraction * 100.0, elapsed,
+    std::fprintf(stderr, "\r%s [%s] %3.0f%%  %.1fs, ETA %.1fs   ", label_.c_str(), bar.c_str(), fraction * 100.0, elapsed,
                  fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0);
   std::fflush(stderr);
 }

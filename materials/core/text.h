@@ -1,0 +1,47 @@
+// Numbers in text. Read (imported parameters, command-line options, stdin): what std::from_chars reads
+// (decimal or scientific, "inf", "nan"), with an optional leading '+', and nothing else around it.
+// Written: printf's formats, into a std::string (GCC 12 has no std::format).
+#pragma once
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace glossy {
+
+template <class... T>
+std::string formatted(const char* format, T... values) {
+  std::string s(size_t(std::max(0, std::snprintf(nullptr, 0, format, values...))), '\0');
+  std::snprintf(s.data(), s.size() + 1, format, values...);
+  return s;
+}
+
+inline std::optional<double> parseNumber(std::string_view text) {
+  if (text.starts_with('+')) text.remove_prefix(1);
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return v;
+}
+
+// "x, y,z": comma-separated numbers, each with optional spaces or tabs around it; nullopt if any is not one.
+inline std::optional<std::vector<double>> parseNumberList(std::string_view text) {
+  std::vector<double> values;
+  for (size_t start = 0;;) {
+    const size_t comma = std::min(text.find(',', start), text.size());
+    std::string_view item = text.substr(start, comma - start);
+    item.remove_prefix(std::min(item.find_first_not_of(" \t"), item.size()));
+    item.remove_suffix(item.size() - (item.find_last_not_of(" \t") + 1));
+    const auto v = parseNumber(item);
+    if (!v) return std::nullopt;
+    values.push_back(*v);
+    if (comma == text.size()) return values;
+    start = comma + 1;
+  }
+}
+
+}  // namespace glossy
