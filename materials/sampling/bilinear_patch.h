@@ -15,9 +15,11 @@
 
 namespace glossy {
 
-// The corner values, non-negative: f(x, y) = (1−x)(1−y)·v00 + x(1−y)·v10 + (1−x)y·v01 + xy·v11.
+// The corner values, non-negative: f(x, y) = (1−x)(1−y)·v00 + x(1−y)·v10 + (1−x)y·v01 + xy·v11. A plain
+// aggregate, always built whole (BilinearPatch{} is all zeros): batch callers keep arrays of them that
+// are not zeroed per call.
 struct BilinearPatch {
-  double v00 = 0.0, v10 = 0.0, v01 = 0.0, v11 = 0.0;
+  double v00, v10, v01, v11;
 
   double mean() const { return 0.25 * (v00 + v10 + v01 + v11); }
   double value(Vec2 p) const {
@@ -32,9 +34,14 @@ struct BilinearPatch {
 
   // The point of density density(p) at u in [0,1]².
   Vec2 sample(Vec2 u) const {
-    if (!(mean() > 0.0)) return u;
-    const double y = sampleLinear(u.y, v00 + v10, v01 + v11);
-    return {sampleLinear(u.x, (1.0 - y) * v00 + y * v01, (1.0 - y) * v10 + y * v11), y};
+    const double y = sampleY(u.y);
+    return {sampleX(u.x, y), y};
+  }
+  // Its two steps, for callers that take many patches one step at a time: y from the marginal, then x
+  // from the conditional at that y.
+  double sampleY(double uy) const { return mean() > 0.0 ? sampleLinear(uy, v00 + v10, v01 + v11) : uy; }
+  double sampleX(double ux, double y) const {
+    return mean() > 0.0 ? sampleLinear(ux, (1.0 - y) * v00 + y * v01, (1.0 - y) * v10 + y * v11) : ux;
   }
 
   // The t in [0, 1] at which the CDF of the density ∝ (1−t)·a + t·b reaches u. The CDF is the quadratic

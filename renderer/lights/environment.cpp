@@ -274,15 +274,15 @@ void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) co
     lane[count++] = i;
   }
   env.map.prefetch(at, count);
-  // The point's place in its cell, uniform so far, drawn again by the cell's bilinear function.
+  // The point's place in its cell, uniform so far, drawn again by the cell's bilinear function: step by
+  // step for all lanes, so that the lanes' square roots and divisions overlap, where a lane at a time
+  // would wait on each in turn.
+  BilinearPatch patch[kMaxBatch];
   double density[kMaxBatch];
-  for (int k = 0; k < count; ++k) {
-    const BilinearPatch patch = env.patchAt(at[k]);
-    const Vec2 p = patch.sample({at[k].fx, at[k].fy});
-    at[k].fx = p.x;
-    at[k].fy = p.y;
-    density[k] = env.densityAt(at[k], patch);
-  }
+  for (int k = 0; k < count; ++k) patch[k] = env.patchAt(at[k]);
+  for (int k = 0; k < count; ++k) at[k].fy = patch[k].sampleY(at[k].fy);
+  for (int k = 0; k < count; ++k) at[k].fx = patch[k].sampleX(at[k].fx, at[k].fy);
+  for (int k = 0; k < count; ++k) density[k] = env.densityAt(at[k], patch[k]);
   Vec3 dirs[kMaxBatch];
   double sinTheta[kMaxBatch];
   env.grid.directions(at, dirs, sinTheta, count);
