@@ -1,7 +1,7 @@
 // The path tracer's two forms and its lights: the wave gives the reference's image bit for bit; an
-// environment and emitters together match their analytic irradiance (both sides of MIS); the light
-// chooser draws by power; a scene renders alike at 1e-3 and 1e3 of its size; a light 1e-5 above a surface
-// lights it.
+// environment (constant, or a map of bright panels) and emitters together match their irradiance (both
+// sides of MIS, the emitter hiding part of the sky); the light chooser draws by power; a scene renders
+// alike at 1e-3 and 1e3 of its size; a light 1e-5 above a surface lights it.
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/lights/light_set.h"
 #include "tests/support/image_regression.h"
@@ -14,6 +14,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <functional>
 
 namespace glossy::test {
 
@@ -68,6 +69,58 @@ void expectIdentical(const RgbImage& wave, const RgbImage& reference, const std:
   EXPECT_GT(sum, 0.0) << what << ": a black image proves nothing";
 }
 
+// A Lambertian floor (albedo 0.5) and a square lamp 1 above it, facing down, seen from above by a 40 × 40
+// orthographic camera over x, z in [−2, 2].
+struct LampOverFloor {
+  static constexpr int kSize = 40;
+  static constexpr double kHalf = 0.2;  // the lamp's half width
+  SceneDescription description;
+  std::vector<Brdf> brdfs = {Lambertian{Rgb(0.5)}, Lambertian{Rgb(0.0)}};
+  Camera camera = orthographicDown(2.0, {0, 5, 0}, {0, 0, 0}, {0, 0, -1});
+  glm::dvec3 lamp[4] = {{-kHalf, 1, -kHalf}, {kHalf, 1, -kHalf}, {kHalf, 1, kHalf}, {-kHalf, 1, kHalf}};
+
+  explicit LampOverFloor(Rgb emission) {
+    description.materials = {material("floor"), material("lamp", Rgb(0.0), emission)};
+    description.meshes.push_back(quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0));
+    description.meshes.push_back(quad({-float(kHalf), 1, -float(kHalf)}, {2 * float(kHalf), 0, 0}, {0, 0, 2 * float(kHalf)}, 1));
+  }
+  // The floor point seen at film position (px, py), in pixels.
+  static glm::dvec3 floorPoint(double px, double py) {
+    return {(2.0 * px / kSize - 1.0) * 2.0, 0.0, -(1.0 - 2.0 * py / kSize) * 2.0};
+  }
+  // Every other pixel, less those whose floor the lamp's back hides from the camera.
+  static bool checked(int x, int y) {
+    const glm::dvec3 p = floorPoint(x + 0.5, y + 0.5);
+    return x % 2 == 1 && y % 2 == 1 && !(std::abs(p.x) < kHalf + 0.3 && std::abs(p.z) < kHalf + 0.3);
+  }
+};
+
+// Two independent renders a, b against the expected value want(x, y, channel) of the checked pixels: the
+// summed error against the summed variance (a uniform bias), and the squared errors against the variances
+// (a bias in some pixels), with the variance of each pixel's mean estimated from the halves, ((a − b)/2)².
+void expectUnbiased(const RgbImage& a, const RgbImage& b, const std::function<bool(int, int)>& checked,
+                    const std::function<double(int, int, int)>& want) {
+  for (int c = 0; c < 3; ++c) {
+    double error = 0.0, squared = 0.0, variance = 0.0;
+    int count = 0;
+    for (int y = 0; y < a.height; ++y)
+      for (int x = 0; x < a.width; ++x) {
+        if (!checked(x, y)) continue;
+        const double expected = want(x, y, c);
+        const double mean = 0.5 * (a.at(x, y)[c] + b.at(x, y)[c]), half = 0.5 * (a.at(x, y)[c] - b.at(x, y)[c]);
+        error += mean - expected;
+        squared += (mean - expected) * (mean - expected);
+        variance += half * half;
+        ++count;
+      }
+    ASSERT_GT(count, 300);
+    EXPECT_LT(std::abs(error) / std::sqrt(variance), 4.0) << "channel " << c << ": mean error " << error / count;
+    // E[squared] = E[variance]; their ratio over ~370 pixels is 1 ± 0.1 (both are sums of χ²-like terms).
+    EXPECT_LT(squared / variance, 1.5) << "channel " << c;
+    ::testing::Test::RecordProperty(std::string("relativeBias") + "RGB"[c], std::to_string(error / count));
+  }
+}
+
 }  // namespace
 
 // Every configuration the wave batches differently: the environment alone (its batch lookups), with
@@ -109,49 +162,76 @@ TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
 // E = Le·Ω⊥(lamp) + L_env·(π − Ω⊥(lamp)), Ω⊥ the lamp's projected solid angle (Lambert's polygon formula).
 // Light samples of either light and BSDF samples that find either are weighted by MIS against each other.
 TEST(Integrator, AnEnvironmentAndAnEmitterTogetherGiveTheirAnalyticIrradiance) {
-  SceneDescription description;
-  description.materials = {material("floor"), material("lamp", Rgb(0.0), Rgb(10.0, 5.0, 2.0))};
-  description.meshes.push_back(quad({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 0));
-  description.meshes.push_back(quad({-0.2f, 1, -0.2f}, {0.4f, 0, 0}, {0, 0, 0.4f}, 1));  // facing down
-  const std::vector<Brdf> brdfs = {Lambertian{Rgb(0.5)}, Lambertian{Rgb(0.0)}};
-  const Rgb sky(0.3, 0.6, 0.9);
+  const Rgb emission(10.0, 5.0, 2.0), sky(0.3, 0.6, 0.9);
+  const LampOverFloor stage(emission);
   const Environment environment = Environment::constant(sky);
   // Two independent halves: their difference measures each pixel's noise, which here is mostly the
   // lamp's (the sky's power, over the scene's bounds, is chosen far more often).
-  RenderSettings settings = quiet(40, 40, 2048, 1);
+  RenderSettings settings = quiet(LampOverFloor::kSize, LampOverFloor::kSize, 2048, 1);
   settings.maxDepth = 2;
-  const Camera camera = orthographicDown(2.0, {0, 5, 0}, {0, 0, 0}, {0, 0, -1});
-  const RgbImage a = renderScene(description, brdfs, &environment, camera, settings);
+  const RgbImage a = renderScene(stage.description, stage.brdfs, &environment, stage.camera, settings);
   settings.seed = 2;
-  const RgbImage b = renderScene(description, brdfs, &environment, camera, settings);
-  const Vec3 lamp[4] = {{-0.2, 1, -0.2}, {0.2, 1, -0.2}, {0.2, 1, 0.2}, {-0.2, 1, 0.2}};
-  auto floorX = [](double px) { return (2.0 * px / 40 - 1.0) * 2.0; };
-  auto floorZ = [](double py) { return -(1.0 - 2.0 * py / 40) * 2.0; };
-  for (int c = 0; c < 3; ++c) {
-    // Over the checked pixels: the summed error against the summed variance (a uniform bias), and the
-    // squared errors against the variances (a bias in some pixels), with the variance of each pixel's
-    // mean estimated from the halves, ((a − b)/2)².
-    double error = 0.0, squared = 0.0, variance = 0.0;
-    int checked = 0;
-    for (int x = 1; x < 40; x += 2)
-      for (int y = 1; y < 40; y += 2) {
-        if (std::abs(floorX(x + 0.5)) < 0.5 && std::abs(floorZ(y + 0.5)) < 0.5) continue;  // the lamp's back hides it
-        double omega = 0.0;
-        for (int i = 0; i < 8; ++i)
-          for (int j = 0; j < 8; ++j) omega += projectedSolidAngle(lamp, Vec3(floorX(x + (i + 0.5) / 8), 0, floorZ(y + (j + 0.5) / 8))) / 64;
-        const double want = (Rgb(10.0, 5.0, 2.0)[c] * omega + sky[c] * (kPi - omega)) * (0.5 / kPi);
-        const double mean = 0.5 * (a.at(x, y)[c] + b.at(x, y)[c]), half = 0.5 * (a.at(x, y)[c] - b.at(x, y)[c]);
-        error += mean - want;
-        squared += (mean - want) * (mean - want);
-        variance += half * half;
-        ++checked;
-      }
-    ASSERT_GT(checked, 300);
-    EXPECT_LT(std::abs(error) / std::sqrt(variance), 4.0) << "channel " << c << ": mean error " << error / checked;
-    // E[squared] = E[variance]; their ratio over ~370 pixels is 1 ± 0.1 (both are sums of χ²-like terms).
-    EXPECT_LT(squared / variance, 1.5) << "channel " << c;
-    RecordProperty(std::string("relativeBias") + "RGB"[c], std::to_string(error / checked));
+  const RgbImage b = renderScene(stage.description, stage.brdfs, &environment, stage.camera, settings);
+  expectUnbiased(a, b, LampOverFloor::checked, [&](int x, int y, int c) {
+    double omega = 0.0;
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j)
+        omega += projectedSolidAngle(stage.lamp, LampOverFloor::floorPoint(x + (i + 0.5) / 8, y + (j + 0.5) / 8)) / 64;
+    return (emission[c] * omega + sky[c] * (kPi - omega)) * (0.5 / kPi);
+  });
+}
+
+// The same floor and lamp under a map of small bright panels (render_fixtures.h), whose light samples are
+// drawn within each cell by its bilinear function: E = Le·Ω⊥(lamp) + ∫ L_env cos θ dω over the sky the
+// lamp leaves, that is the map's whole upper hemisphere (a fine midpoint rule in u, v) less what lies
+// behind the lamp (a midpoint rule over the lamp's area, dω cos θ = dA / r⁴ for a lamp at height 1 facing
+// down). One half from the wave, the other from the reference path tracer.
+TEST(Integrator, AMapOfBrightPanelsAndAnOccludingEmitterGiveTheirIrradiance) {
+  const Rgb emission(2.0, 3.0, 4.0);
+  const LampOverFloor stage(emission);
+  const TempDir dir;
+  writePanelsMap(dir / "panels.exr", 48, 25);
+  const Environment environment = Environment::load(dir / "panels.exr");
+
+  Rgb hemisphere(0.0);
+  const int nu = 48 * 16, nv = 24 * 16;
+  for (int j = 0; j < nv / 2; ++j) {
+    const double theta = kPi * (j + 0.5) / nv, dOmega = 2.0 * kPi * kPi * std::sin(theta) / (double(nu) * nv);
+    for (int i = 0; i < nu; ++i) {
+      const double phi = 2.0 * kPi * (i + 0.5) / nu;
+      const Vec3 d(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
+      hemisphere += environment.radiance(d) * (d.y * dOmega);
+    }
   }
+  const auto behindLamp = [&](const glm::dvec3& p) {
+    constexpr int n = 32;
+    const double side = 2.0 * LampOverFloor::kHalf / n;
+    Rgb sum(0.0);
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < n; ++k) {
+        const glm::dvec3 q(-LampOverFloor::kHalf + (i + 0.5) * side, 1.0, -LampOverFloor::kHalf + (k + 0.5) * side);
+        const double r2 = glm::dot(q - p, q - p);
+        sum += environment.radiance(glm::normalize(q - p)) * (side * side / (r2 * r2));
+      }
+    return sum;
+  };
+
+  RenderSettings settings = quiet(LampOverFloor::kSize, LampOverFloor::kSize, 1024, 3);
+  settings.maxDepth = 2;
+  const RgbImage a = renderScene(stage.description, stage.brdfs, &environment, stage.camera, settings);
+  settings.seed = 4;
+  settings.reference = true;
+  const RgbImage b = renderScene(stage.description, stage.brdfs, &environment, stage.camera, settings);
+  expectUnbiased(a, b, LampOverFloor::checked, [&](int x, int y, int c) {
+    double omega = 0.0, hidden = 0.0;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) {
+        const glm::dvec3 p = LampOverFloor::floorPoint(x + (i + 0.5) / 4, y + (j + 0.5) / 4);
+        omega += projectedSolidAngle(stage.lamp, p) / 16;
+        hidden += behindLamp(p)[c] / 16;
+      }
+    return (emission[c] * omega + hemisphere[c] - hidden) * (0.5 / kPi);
+  });
 }
 
 TEST(Integrator, TheLightChooserDrawsByPower) {

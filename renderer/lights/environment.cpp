@@ -1,10 +1,12 @@
 // The environment light: loading lat-long maps, the constant and default skies, and importance sampling
-// of the bilinearly interpolated map.
+// of the bilinearly interpolated map: a cell (bilinear patch) by its share of the light, then a point in it
+// by the bilinear function of its corners (bilinear_patch.h), so that a sample's L/pdf barely varies.
 #include "renderer/lights/environment.h"
 
 #include "materials/core/input_error.h"
 #include "renderer/lights/default_sky.h"
 #include "renderer/lights/latlong.h"
+#include "materials/sampling/bilinear_patch.h"
 #include "materials/sampling/blocked_distribution.h"
 
 #include <OpenImageIO/imageio.h>
@@ -99,10 +101,16 @@ struct Environment::Impl {
   // Rotation about +Y by α shifts every feature's u by −α/(2π) (φ ↦ φ − α for a right-handed turn):
   // the map is looked up at u_world + uOffset.
   double uOffset = 0.0;
-  // Over (s, v) with s = u_map − ½/W: its cells are the bilinear patches between adjacent texel centres,
-  // W × (H − 1) of them, so each cell's value can bound the interpolated function exactly. Cell (i, j) is
-  // patch (i, j) of the map. Blocked (blocked_distribution.h): a tenth of the memory of full CDFs, and a
-  // sample reads one cache line of it per level, the top ones cached.
+  // The sampling density over (s, v), s = u_map − ½/W, is proportional to the bilinear interpolation of
+  // the texels' luminance × sin θ of their row: nearly the light the lookup finds there (whose luminance
+  // is the bilinear one, times the lat-long Jacobian's sin θ), and a function the patch warp can invert.
+  // rowSin[j] is row j's sin θ, except that the poles' rows, where it is 0, take that of a quarter row
+  // in: light at a pole keeps a positive density.
+  std::vector<double> rowSin;
+  // The cells: the bilinear patches between adjacent texel centres, W × (H − 1) of them, each weighted by
+  // the mean of its corners' weights (the integral of the patch's function). Cell (i, j) is patch (i, j)
+  // of the map. Blocked (blocked_distribution.h): a tenth of the memory of full CDFs, and a sample reads
+  // one cache line of it per level, the top ones cached.
   BlockedDistribution2D distribution;
 
   // Directions to cells and back (the rotation included).
@@ -112,19 +120,30 @@ struct Environment::Impl {
   // Jacobian is dω = 2π² sin θ ds dv.
   static double solidAngleDensity(double cellValue, double sinTheta) { return cellValue / (2.0 * kPi * kPi * sinTheta); }
 
-  // The solid-angle density of sample() at dir, whose lookup position is at: the distribution's density at
-  // (s, v) = (u_map − ½/W, v), whose cell is the patch the lookup falls in, as the map keeps it (in float,
-  // beside the cell's texel; sample() reports the same value).
+  // The weights of the corners of the cell a lookup falls in.
+  BilinearPatch patchAt(const LatLongPosition& at) const {
+    double l[4];
+    map.cornerLuminances(at, l);
+    const double top = rowSin[std::size_t(at.r0)], bottom = rowSin[std::size_t(at.r0) + 1];
+    return {l[0] * top, l[1] * top, l[2] * bottom, l[3] * bottom};
+  }
+
+  // The density on the (s, v) square at the lookup position `at`: its cell's, as the map keeps it (in
+  // float, beside the cell's texel), times the patch warp's density at the position's weights.
+  double densityAt(const LatLongPosition& at, const BilinearPatch& patch) const {
+    return map.cellValue(at) * patch.density({at.fx, at.fy});
+  }
+
+  // The solid-angle density of sample() at dir, whose lookup position is at.
   double pdfAt(const Vec3& dir, const LatLongPosition& at) const {
     const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
     if (!(sinTheta > 0.0)) return 0.0;
-    return solidAngleDensity(map.cellValue(at), sinTheta);
+    return solidAngleDensity(densityAt(at, patchAt(at)), sinTheta);
   }
 
-  // The sample of the map in direction dir (with its sin θ), at the lookup position `at` of the cell
-  // the distribution drew.
-  Sample sampleAt(const LatLongPosition& at, const Vec3& dir, double sinTheta) const {
-    const double density = map.cellValue(at);
+  // The sample of the map in direction dir (with its sin θ), at the lookup position `at` the warp chose,
+  // where the density on the square is `density`.
+  Sample sampleAt(const LatLongPosition& at, double density, const Vec3& dir, double sinTheta) const {
     // At a pole the lat-long Jacobian vanishes and the solid-angle density is unbounded: no usable sample.
     if (density <= 0.0 || sinTheta <= 0.0) return {};
     return {dir, map.interpolate(at), solidAngleDensity(density, sinTheta)};
@@ -137,25 +156,31 @@ struct Environment::Impl {
       for (int column = 0; column < width; ++column)
         rowLuminance[std::size_t(row) * width + column] = luminance(image.texel(column, row));
 
+    rowSin.resize(std::size_t(image.height));
+    for (int row = 0; row < image.height; ++row)
+      rowSin[std::size_t(row)] = std::sin(kPi * std::clamp(double(row), 0.25, cells - 0.25) / cells);
+
     std::vector<double> weights(std::size_t(width) * cells);
+    double radiance = 0.0;  // Σ over the cells of mean luminance × mean sin θ
     for (int cell = 0; cell < cells; ++cell) {
       // Mean of sin θ over the cell's latitude band: the Jacobian of (u, v) ↦ direction, up to 2π².
       const double v0 = double(cell) / cells, v1 = double(cell + 1) / cells;
       const double meanSinTheta = (std::cos(kPi * v0) - std::cos(kPi * v1)) / (kPi * (v1 - v0));
       const double* top = &rowLuminance[std::size_t(cell) * width];
       const double* bottom = top + width;
+      const double sinTop = rowSin[std::size_t(cell)], sinBottom = rowSin[std::size_t(cell) + 1];
       for (int column = 0; column < width; ++column) {
         const int next = column + 1 == width ? 0 : column + 1;
-        // The corners' mean is the bilinear function's mean over the patch; it is zero only where the
-        // whole patch is black, so every direction with radiance keeps a non-zero pdf (needed by MIS).
-        const double meanLuminance = 0.25 * (top[column] + top[next] + bottom[column] + bottom[next]);
-        weights[std::size_t(cell) * width + column] = meanLuminance * meanSinTheta;
+        // The patch's integral is its corners' mean; it is zero only where the whole patch is black, so
+        // every direction with radiance keeps a non-zero pdf (needed by MIS).
+        const BilinearPatch patch{top[column] * sinTop, top[next] * sinTop, bottom[column] * sinBottom,
+                                  bottom[next] * sinBottom};
+        weights[std::size_t(cell) * width + column] = patch.mean();
+        radiance += 0.25 * (top[column] + top[next] + bottom[column] + bottom[next]) * meanSinTheta;
       }
     }
-    // Σ weights × (the cells' area, 2π²/(W·cells)), over 4π.
-    double sum = 0.0;
-    for (double w : weights) sum += w;
-    meanLuminance = sum * kPi / (2.0 * width * cells);
+    // Σ mean luminance × mean sin θ × (the cells' area, 2π²/(W·cells)), over 4π.
+    meanLuminance = radiance * kPi / (2.0 * width * cells);
     distribution = BlockedDistribution2D(weights, std::size_t(width), std::size_t(cells));
     std::vector<float> densities(weights.size());
     for (int cell = 0; cell < cells; ++cell)
@@ -249,10 +274,19 @@ void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) co
     lane[count++] = i;
   }
   env.map.prefetch(at, count);
+  // The point's place in its cell, uniform so far, drawn again by the cell's bilinear function: step by
+  // step for all lanes, so that the lanes' square roots and divisions overlap, where a lane at a time
+  // would wait on each in turn.
+  BilinearPatch patch[kMaxBatch];
+  double density[kMaxBatch];
+  for (int k = 0; k < count; ++k) patch[k] = env.patchAt(at[k]);
+  for (int k = 0; k < count; ++k) at[k].fy = patch[k].sampleY(at[k].fy);
+  for (int k = 0; k < count; ++k) at[k].fx = patch[k].sampleX(at[k].fx, at[k].fy);
+  for (int k = 0; k < count; ++k) density[k] = env.densityAt(at[k], patch[k]);
   Vec3 dirs[kMaxBatch];
   double sinTheta[kMaxBatch];
   env.grid.directions(at, dirs, sinTheta, count);
-  for (int k = 0; k < count; ++k) out[lane[k]] = env.sampleAt(at[k], dirs[k], sinTheta[k]);
+  for (int k = 0; k < count; ++k) out[lane[k]] = env.sampleAt(at[k], density[k], dirs[k], sinTheta[k]);
 }
 
 void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const {

@@ -100,6 +100,12 @@ class LatLongMap {
   }
   // The value given for the cell the lookup falls in.
   float cellValue(const LatLongPosition& p) const { return texel(p.c0, p.r0)[3]; }
+  // The luminance of each of the lookup's corners: (c0, r0), (c1, r0), (c0, r0 + 1), (c1, r0 + 1).
+  void cornerLuminances(const LatLongPosition& p, double (&out)[4]) const {
+    const float* corner[4];
+    corners(p, corner);
+    for (int k = 0; k < 4; ++k) out[k] = luminance(Rgb(corner[k][0], corner[k][1], corner[k][2]));
+  }
   // The lines interpolate(at[k]) and cellValue(at[k]) will read, k < n. Always inlined: GCC 12 finds a
   // function of nothing but prefetches free of side effects and deletes calls to it before inlining, so a
   // call would prefetch nothing.

@@ -1,5 +1,7 @@
 #include "tests/support/render_fixtures.h"
 
+#include "renderer/image/exr_image.h"
+
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -23,6 +25,25 @@ double projectedSolidAngle(const glm::dvec3 (&corners)[4], const glm::dvec3& p) 
     e += std::acos(glm::dot(a, b)) * glm::normalize(glm::cross(a, b)).y;
   }
   return 0.5 * std::abs(e);
+}
+
+void writePanelsMap(const std::filesystem::path& path, int width, int height) {
+  RgbImage map(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const double sky = 0.05 + 0.15 * double(y) / (height - 1);
+      for (int c = 0; c < 3; ++c) map.at(x, y)[c] = float(sky * (1.0 + 0.2 * c));
+    }
+  const auto panel = [&](int x, int y, Rgb radiance) {
+    for (int c = 0; c < 3; ++c) map.at(x, y)[c] = float(radiance[c]);
+  };
+  panel(width / 8, height / 4, Rgb(400.0, 300.0, 200.0));
+  panel(width / 2, height / 3, Rgb(100.0, 200.0, 400.0));
+  panel(3 * width / 4, 2 * height / 3, Rgb(300.0, 300.0, 300.0));
+  for (int dy = 0; dy < 2; ++dy)
+    for (int dx = 0; dx < 2; ++dx) panel(width / 3 + dx, height / 5 + dy, Rgb(50.0, 60.0, 70.0));
+  panel(width / 5, 0, Rgb(80.0, 80.0, 80.0));
+  writeExr(path, map, {});
 }
 
 SceneMaterial material(const char* name, Rgb baseColor, Rgb emission) {

@@ -1,11 +1,14 @@
 // Scene pieces the renderer tests build in memory (a UV sphere, an orthographic camera looking down an
-// axis) and an independent reference for what a convex object under radiance 1 shows: the directional albedo.
+// axis, a lat-long map of small bright panels) and an independent reference for what a convex object under
+// radiance 1 shows: the directional albedo.
 #pragma once
 
 #include "materials/models/brdf.h"
 #include "renderer/scene/scene.h"
 
 #include <glm/vec3.hpp>
+
+#include <filesystem>
 
 namespace glossy::test {
 
@@ -20,6 +23,10 @@ double projectedSolidAngle(const glm::dvec3 (&corners)[4], const glm::dvec3& p);
 Mesh uvSphere(double radius, int segments, int rings, int material);
 // An orthographic camera at eye looking at target, half-extent halfExtent in both axes.
 Camera orthographicDown(double halfExtent, glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up);
+// A width × height lat-long map (float EXR at path) of small bright panels on a dim gradient: single
+// texels, a 2 × 2 block and one on the top row (a pole), in three colours: where the light a sample of a
+// cell finds varies most within the cell.
+void writePanelsMap(const std::filesystem::path& path, int width, int height);
 // ∫ρ(L,V) cos θ_L dω_L by a midpoint rule in (cos θ_L, φ_L) with nMu × nPhi points: independent of the
 // renderer and of albedo.cpp, accurate for broad lobes and for tabulated (piecewise-constant) data.
 Rgb directionalAlbedo(const Brdf& brdf, const Vec3& V, int nMu = 400, int nPhi = 800);
