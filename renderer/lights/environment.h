@@ -16,10 +16,11 @@ namespace glossy {
 
 class Environment {
  public:
+  // No member initialisers: a batch's array of them is filled lane by lane, never cleared ({} zeroes one).
   struct Sample {
-    Vec3 dir{0.0};     // world direction toward the light (away from the scene)
-    Rgb radiance{0.0};
-    double pdf = 0.0;  // solid angle; 0 = invalid
+    Vec3 dir;  // world direction toward the light (away from the scene)
+    Rgb radiance;
+    double pdf;  // solid angle; 0 = invalid
   };
 
   // .exr or .hdr via OpenImageIO. Throws InputError naming the file (unreadable, not RGB(A), non-finite
