@@ -35,7 +35,7 @@ import mitsuba as mi  # noqa: E402
 
 mi.set_variant("llvm_ad_rgb")
 import cook_torrance  # noqa: E402  (needs the variant)
-from compare import regions, read_exr  # noqa: E402
+from compare import mitsuba_scene, regions, read_exr  # noqa: E402
 
 cook_torrance.register()
 
@@ -49,24 +49,10 @@ def glossy_image(exe, scene, env, size, spp, seed, threads, max_depth, out):
     return read_exr(out)
 
 
-def mitsuba_scene(work, env, size, max_depth, bsdf, sampler, spp):
+def emitter_dict(env):
     if env.startswith("constant:"):
-        emitter = {"type": "constant", "radiance": {"type": "rgb", "value": float(env.split(":", 1)[1])}}
-    else:
-        emitter = {"type": "envmap", "filename": env}
-    return mi.load_dict({
-        "type": "scene",
-        "integrator": {"type": "path", "max_depth": max_depth, "hide_emitters": False},
-        "sensor": {
-            "type": "perspective", "fov": bench_scene.YFOV_DEGREES, "fov_axis": "y",
-            "to_world": mi.ScalarTransform4f().look_at(origin=list(bench_scene.EYE), target=list(bench_scene.TARGET),
-                                                       up=list(bench_scene.UP)),
-            "film": {"type": "hdrfilm", "width": size, "height": size, "rfilter": {"type": "box"}, "pixel_format": "rgb"},
-            "sampler": {"type": sampler, "sample_count": spp},
-        },
-        "sky": emitter,
-        "sphere": {"type": "ply", "filename": str(work / "sphere.ply"), "bsdf": bsdf},
-    })
+        return {"type": "constant", "radiance": {"type": "rgb", "value": float(env.split(":", 1)[1])}}
+    return {"type": "envmap", "filename": env}
 
 
 def variance(images, mask):
@@ -107,7 +93,7 @@ def main():
         runs = [("glossy", lambda seed: glossy_image(exe, work / "sphere.gltf", a.env, a.size, a.spp, seed, a.threads,
                                                      a.max_depth, work / "glossy.exr"))]
         for sampler in a.samplers.split(","):
-            scene = mitsuba_scene(work, a.env, a.size, a.max_depth, cook_torrance.bsdf_dict(fit), sampler, a.spp)
+            scene = mitsuba_scene(work, a.size, a.max_depth, cook_torrance.bsdf_dict(fit), sampler, emitter_dict(a.env))
             runs.append((f"mitsuba {sampler}",
                          lambda seed, scene=scene: np.array(mi.render(scene, spp=a.spp, seed=seed), dtype=np.float64)))
         for name, render in runs:
