@@ -71,17 +71,47 @@ class HalfVector:
         self.g = dr.select(self.cos_vh > 0.0, dr.minimum(1.0, dr.minimum(s * V.z, s * L.z)), 0.0)
 
 
-class CookTorranceBSDF(mi.BSDF):
+class MixtureBSDF(mi.BSDF):
+    """What glossy's one-sample mixtures share in Mitsuba: a subclass gives _eval_pdf(V, L, active), the
+    value rho * L_z and the mixture density, and sample_direction(V, sample1, sample2), the direction
+    drawn, whether from the specular lobe, and whether the lobe's draw is usable."""
+
     def __init__(self, props):
         mi.BSDF.__init__(self, props)
+        self.m_flags = mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide
+        self.m_components = [mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.FrontSide,
+                             mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide]
+
+    def eval(self, ctx, si, wo, active=True):
+        return self._eval_pdf(si.wi, wo, active)[0]
+
+    def pdf(self, ctx, si, wo, active=True):
+        return self._eval_pdf(si.wi, wo, active)[1]
+
+    def eval_pdf(self, ctx, si, wo, active=True):
+        return self._eval_pdf(si.wi, wo, active)
+
+    def sample(self, ctx, si, sample1, sample2, active=True):
+        V = si.wi
+        L, specular, lobe_ok = self.sample_direction(V, sample1, sample2)
+        value, pdf = self._eval_pdf(V, L, active)
+        return make_sample(L, specular, active & lobe_ok & (V.z > 0.0) & (L.z > 0.0), value, pdf)
+
+    def traverse(self, callback):
+        pass
+
+    def parameters_changed(self, keys):
+        pass
+
+
+class CookTorranceBSDF(MixtureBSDF):
+    def __init__(self, props):
+        MixtureBSDF.__init__(self, props)
         self.kd = [props["kd_r"], props["kd_g"], props["kd_b"]]
         self.ks = [props["ks_r"], props["ks_g"], props["ks_b"]]
         self.m = float(props["m"])
         self.eta = float(props["eta"])
         self.p_spec = lobe_probability(4.0 * (sum(self.ks) / 3.0) * fresnel_scalar(1.0, self.eta), self.kd)
-        self.m_flags = mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide
-        self.m_components = [mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.FrontSide,
-                             mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide]
 
     # rho(L, V) * L_z and the mixture pdf, sharing the half-vector terms.
     def _eval_pdf(self, V, L, active):
@@ -99,15 +129,6 @@ class CookTorranceBSDF(mi.BSDF):
         pdf = self.p_spec * lobe_pdf + (1.0 - self.p_spec) * L.z / dr.pi
         return dr.select(valid, value, 0.0), dr.select(valid, pdf, 0.0)
 
-    def eval(self, ctx, si, wo, active=True):
-        return self._eval_pdf(si.wi, wo, active)[0]
-
-    def pdf(self, ctx, si, wo, active=True):
-        return self._eval_pdf(si.wi, wo, active)[1]
-
-    def eval_pdf(self, ctx, si, wo, active=True):
-        return self._eval_pdf(si.wi, wo, active)
-
     def sample_direction(self, V, sample1, sample2):
         """L drawn from the mixture (also the measured plugin's proposal): (L, specular lobe?, lobe ok)."""
         specular = sample1 < self.p_spec
@@ -123,18 +144,6 @@ class CookTorranceBSDF(mi.BSDF):
         L_spec = 2.0 * vh * H - V
         L_diff = mi.warp.square_to_cosine_hemisphere(sample2)
         return dr.select(specular, L_spec, L_diff), specular, ~specular | (vh > 0.0)
-
-    def sample(self, ctx, si, sample1, sample2, active=True):
-        V = si.wi
-        L, specular, lobe_ok = self.sample_direction(V, sample1, sample2)
-        value, pdf = self._eval_pdf(V, L, active)
-        return make_sample(L, specular, active & lobe_ok & (V.z > 0.0) & (L.z > 0.0), value, pdf)
-
-    def traverse(self, callback):
-        pass
-
-    def parameters_changed(self, keys):
-        pass
 
     def to_string(self):
         return f"CookTorranceBSDF[kd={self.kd}, ks={self.ks}, m={self.m}, eta={self.eta}, p_spec={self.p_spec:.4f}]"

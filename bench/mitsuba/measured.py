@@ -30,7 +30,7 @@ import drjit as dr
 import mitsuba as mi
 import numpy as np
 
-from cook_torrance import CookTorranceBSDF, make_sample
+from cook_torrance import CookTorranceBSDF
 
 BINS = 90 * 90 * 180
 SCALE = (1.0 / 1500.0, 1.15 / 1500.0, 1.66 / 1500.0)
@@ -97,23 +97,9 @@ class MeasuredBSDF(CookTorranceBSDF):
         rho = mi.Color3f(*(dr.gather(mi.Float, self.table, i + c, valid) for c in range(3)))
         return dr.select(valid, rho * L.z, 0.0)
 
-    def _eval_pdf_measured(self, V, L, active):
-        return self._value(V, L, active), self._eval_pdf(V, L, active)[1]
-
-    def eval(self, ctx, si, wo, active=True):
-        return self._value(si.wi, wo, active)
-
-    def pdf(self, ctx, si, wo, active=True):
-        return self._eval_pdf(si.wi, wo, active)[1]
-
-    def eval_pdf(self, ctx, si, wo, active=True):
-        return self._eval_pdf_measured(si.wi, wo, active)
-
-    def sample(self, ctx, si, sample1, sample2, active=True):
-        V = si.wi
-        L, specular, lobe_ok = self.sample_direction(V, sample1, sample2)
-        value, pdf = self._eval_pdf_measured(V, L, active)
-        return make_sample(L, specular, active & lobe_ok & (V.z > 0.0) & (L.z > 0.0), value, pdf)
+    # The table's value, the proposal's density.
+    def _eval_pdf(self, V, L, active):
+        return self._value(V, L, active), CookTorranceBSDF._eval_pdf(self, V, L, active)[1]
 
     def to_string(self):
         return f"MeasuredBSDF[{self.filename}, {self.unmeasured} unmeasured bins, proposal p_spec={self.p_spec:.4f}]"

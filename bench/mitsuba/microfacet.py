@@ -24,7 +24,7 @@ import math
 import drjit as dr
 import mitsuba as mi
 
-from cook_torrance import HalfVector, fresnel_cook_torrance, fresnel_scalar, lobe_probability, make_sample
+from cook_torrance import HalfVector, MixtureBSDF, fresnel_cook_torrance, fresnel_scalar, lobe_probability
 
 
 def log1p(y):
@@ -73,9 +73,9 @@ class AbcProfile:
         return expm1(log1p(xi * math.expm1(k * l_max)) / k) / b
 
 
-class MicrofacetBSDF(mi.BSDF):
+class MicrofacetBSDF(MixtureBSDF):
     def __init__(self, props):
-        mi.BSDF.__init__(self, props)
+        MixtureBSDF.__init__(self, props)
         self.kd = [props["kd_r"], props["kd_g"], props["kd_b"]]
         self.a = [props["a_r"], props["a_g"], props["a_b"]]
         self.eta = float(props["eta"])
@@ -85,9 +85,6 @@ class MicrofacetBSDF(mi.BSDF):
         head_on = self.profile.integral(1.0 - math.sqrt(0.5))
         specular = 8.0 * (sum(self.a) / 3.0) * fresnel_scalar(1.0, self.eta) * head_on
         self.p_spec = lobe_probability(specular, self.kd)
-        self.m_flags = mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide
-        self.m_components = [mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.FrontSide,
-                             mi.BSDFFlags.DiffuseReflection | mi.BSDFFlags.FrontSide]
 
     # rho(L, V) * L_z and the mixture pdf, sharing the half-vector terms.
     def _eval_pdf(self, V, L, active):
@@ -101,17 +98,7 @@ class MicrofacetBSDF(mi.BSDF):
         pdf = self.p_spec * lobe_pdf + (1.0 - self.p_spec) * L.z / dr.pi
         return dr.select(valid, value, 0.0), dr.select(valid, pdf, 0.0)
 
-    def eval(self, ctx, si, wo, active=True):
-        return self._eval_pdf(si.wi, wo, active)[0]
-
-    def pdf(self, ctx, si, wo, active=True):
-        return self._eval_pdf(si.wi, wo, active)[1]
-
-    def eval_pdf(self, ctx, si, wo, active=True):
-        return self._eval_pdf(si.wi, wo, active)
-
-    def sample(self, ctx, si, sample1, sample2, active=True):
-        V = si.wi
+    def sample_direction(self, V, sample1, sample2):
         specular = sample1 < self.p_spec
         x = self.profile.invert_unit(sample2.x)
         cos_t = 1.0 - x
@@ -120,14 +107,7 @@ class MicrofacetBSDF(mi.BSDF):
         H = mi.Vector3f(sin_t * cos_p, sin_t * sin_p, cos_t)
         vh = dr.dot(V, H)
         L = dr.select(specular, 2.0 * vh * H - V, mi.warp.square_to_cosine_hemisphere(sample2))
-        value, pdf = self._eval_pdf(V, L, active)
-        return make_sample(L, specular, active & (V.z > 0.0) & (L.z > 0.0) & (~specular | (vh > 0.0)), value, pdf)
-
-    def traverse(self, callback):
-        pass
-
-    def parameters_changed(self, keys):
-        pass
+        return L, specular, ~specular | (vh > 0.0)
 
     def to_string(self):
         return (f"MicrofacetBSDF[kd={self.kd}, a={self.a}, b={self.profile.b}, c={self.profile.c}, "
