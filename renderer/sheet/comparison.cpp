@@ -1,0 +1,288 @@
+#include "renderer/sheet/comparison.h"
+
+#include "materials/core/types.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+namespace glossy {
+
+namespace {
+
+using Rgb3 = std::array<double, 3>;
+
+double dot(const Rgb3& a, const Rgb3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// z with P(|Z| ≤ z) = confidence for a standard normal Z: erfc(z / √2) = 1 − confidence, by bisection
+// (erfc is decreasing; 200 halvings reach double precision).
+double twoSidedQuantile(double confidence) {
+  double lo = 0.0, hi = 40.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (std::erfc(mid / std::numbers::sqrt2) > 1.0 - confidence)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// Sums over the compared pixels of per-pixel statistics. Series 0 is the measured panel, series 1 + f the
+// f-th panel that has images: its difference from the measured panel in the U-statistics, the panel itself
+// in the luminance sums.
+struct Totals {
+  size_t series;
+  std::vector<double> u;         // Σ U: B, then each A
+  std::vector<double> uCov;      // Σ Cov(U_s, U_t), series × series (K ≥ 4)
+  std::vector<double> squared;   // Σ |m̄|², then each Σ |p̄ − m̄|²
+  std::vector<double> lum;       // Σ lum(m̄), then each Σ lum(p̄)
+  std::vector<double> lumVar;    // Σ Var lum(·̄), in the same order
+  std::vector<double> lumCov;    // Σ Cov(lum(·̄), lum(m̄)), in the same order
+  explicit Totals(size_t s)
+      : series(s), u(s), uCov(s * s), squared(s), lum(s), lumVar(s), lumCov(s) {}
+  double cov(size_t s, size_t t) const { return uCov[s * series + t]; }
+};
+
+// One pixel: x(s, j) is series s in replicate j (measured value or difference), l(s, j) the luminance of
+// the panel's value.
+class PixelReplicates {
+ public:
+  PixelReplicates(size_t series, int replicates)
+      : series_(series), k_(replicates), x_(series * replicates), l_(series * replicates),
+        gram_(series * replicates * replicates), rowSum_(series * replicates), total_(series), u_(series) {}
+  Rgb3& x(size_t s, int j) { return x_[s * k_ + j]; }
+  double& l(size_t s, int j) { return l_[s * k_ + j]; }
+  bool finite() const {
+    return std::all_of(x_.begin(), x_.end(), [](const Rgb3& v) {
+      return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+    });
+  }
+
+  void addTo(Totals& t) {
+    addMeans(t);
+    if (k_ < 2) return;
+    addUStatistics(t);
+    if (k_ < 4) return;
+    addUCovariances(t);
+  }
+
+ private:
+  // The replicate means, for the plain figures, and the variance of the luminance means: sample
+  // (co)variance / K, as for any mean of K independent values.
+  void addMeans(Totals& t) const {
+    const double k = k_;
+    double lum0 = 0.0;
+    for (int j = 0; j < k_; ++j) lum0 += l_[j] / k;
+    for (size_t s = 0; s < series_; ++s) {
+      Rgb3 mean{};
+      double lum = 0.0;
+      for (int j = 0; j < k_; ++j) {
+        for (int c = 0; c < 3; ++c) mean[c] += x_[s * k_ + j][c] / k;
+        lum += l_[s * k_ + j] / k;
+      }
+      t.squared[s] += dot(mean, mean);
+      t.lum[s] += lum;
+      if (k_ < 2) continue;
+      double var = 0.0, cov = 0.0;
+      for (int j = 0; j < k_; ++j) {
+        var += (l_[s * k_ + j] - lum) * (l_[s * k_ + j] - lum);
+        cov += (l_[s * k_ + j] - lum) * (l_[j] - lum0);
+      }
+      t.lumVar[s] += var / (k * (k - 1.0));
+      t.lumCov[s] += cov / (k * (k - 1.0));
+    }
+  }
+
+  // U_s = Σ_{j≠k} x_j · x_k / (K (K − 1)), from the Gram matrix of the replicates, kept for the covariances.
+  void addUStatistics(Totals& t) {
+    const double k = k_;
+    for (size_t s = 0; s < series_; ++s) {
+      total_[s] = 0.0;
+      for (int j = 0; j < k_; ++j) {
+        double row = 0.0;
+        for (int i = 0; i < k_; ++i) {
+          gram(s, j, i) = dot(x_[s * k_ + j], x_[s * k_ + i]);
+          if (i != j) row += gram(s, j, i);
+        }
+        rowSum_[s * k_ + j] = row;
+        total_[s] += row;
+      }
+      u_[s] = total_[s] / (k * (k - 1.0));
+      t.u[s] += u_[s];
+    }
+  }
+
+  // Cov(U_f, U_g) = E[U_f U_g] − θ_f θ_g, with θ_f θ_g estimated by the mean of f(a, b) g(c, d) over the
+  // K (K − 1) (K − 2) (K − 3) ordered quadruples of distinct replicates. With F_a = Σ_{b≠a} f(a, b) and
+  // F = Σ_a F_a, their sum is F G − 4 Σ_a F_a G_a + 2 Σ_{a≠b} f(a, b) g(a, b): all ordered pairs of pairs,
+  // less those sharing a replicate.
+  void addUCovariances(Totals& t) {
+    const double k = k_, quadruples = k * (k - 1.0) * (k - 2.0) * (k - 3.0);
+    for (size_t s = 0; s < series_; ++s)
+      for (size_t r = s; r < series_; ++r) {
+        double rows = 0.0, pairs = 0.0;
+        for (int a = 0; a < k_; ++a) {
+          rows += rowSum_[s * k_ + a] * rowSum_[r * k_ + a];
+          for (int b = 0; b < k_; ++b)
+            if (b != a) pairs += gram(s, a, b) * gram(r, a, b);
+        }
+        const double products = total_[s] * total_[r] - 4.0 * rows + 2.0 * pairs;
+        const double cov = u_[s] * u_[r] - products / quadruples;
+        t.uCov[s * series_ + r] += cov;
+        if (r != s) t.uCov[r * series_ + s] += cov;
+      }
+  }
+
+  double& gram(size_t s, int j, int i) { return gram_[(s * k_ + j) * k_ + i]; }
+
+  size_t series_;
+  int k_;
+  std::vector<Rgb3> x_;
+  std::vector<double> l_;
+  std::vector<double> gram_, rowSum_, total_, u_;
+};
+
+std::string percent(double confidence) {
+  std::ostringstream s;
+  s << confidence * 100.0 << " %";
+  return s.str();
+}
+
+// fitted[f]: the panel of series 1 + f.
+Verdict decide(const Comparison& out, const std::vector<size_t>& fitted, const Totals& t, double z, double confidence) {
+  if (out.pixels == 0) return {{}, "no verdict: no pixels to compare"};
+  if (fitted.empty()) return {{}, "no verdict: no model panel"};
+  if (!out.panels[fitted.front()].compared) return {{}, "no verdict: the measured panel is black over the mask"};
+  if (out.replicates < 4) return {{}, "no verdict: fewer than 4 replicates"};
+  if (!out.panels[fitted.front()].available) return {{}, "no verdict: the measured panel is below its noise"};
+  if (fitted.size() == 1) return {{fitted.front()}, "closest: the only model panel"};
+
+  size_t best = 0;
+  for (size_t f = 1; f < fitted.size(); ++f)
+    if (t.u[1 + f] < t.u[1 + best]) best = f;
+  std::vector<size_t> tied = {best};
+  for (size_t f = 0; f < fitted.size(); ++f) {
+    if (f == best) continue;
+    const size_t q = 1 + f, b = 1 + best;
+    const double sd = std::sqrt(std::max(0.0, t.cov(q, q) + t.cov(b, b) - 2.0 * t.cov(q, b)));
+    if (!(t.u[q] - t.u[b] > z * sd)) tied.push_back(f);
+  }
+  std::sort(tied.begin() + 1, tied.end(), [&](size_t f, size_t g) { return t.u[1 + f] < t.u[1 + g]; });
+
+  std::ostringstream zText;
+  zText.precision(3);
+  zText << z;
+  Verdict v;
+  for (size_t f : tied) v.models.push_back(fitted[f]);
+  v.why = tied.size() == 1 ? "closest: every other model's squared error is larger by more than " + zText.str() +
+                                 " standard errors (" + percent(confidence) + " confidence)"
+                           : "tie: these models' squared errors are within " + zText.str() +
+                                 " standard errors of the smallest (" + percent(confidence) + " confidence)";
+  return v;
+}
+
+}  // namespace
+
+double Comparison::widestHalfWidth() const {
+  double widest = -1.0;
+  for (const PanelFigures& p : panels)
+    if (p.hasCi) widest = std::max(widest, p.relativeRmseCi.halfWidth());
+  return widest < 0.0 ? std::numeric_limits<double>::infinity() : widest;
+}
+
+Comparison compareToMeasured(const std::vector<std::vector<RgbImage>>& panels, const std::vector<RgbImage>& measured,
+                             const std::vector<char>& mask, double confidence) {
+  if (!(confidence > 0.0 && confidence < 1.0))
+    throw std::invalid_argument("compareToMeasured: confidence must be in (0, 1)");
+  Comparison out;
+  out.panels.resize(panels.size());
+  if (measured.empty()) {
+    out.verdict.why = "no verdict: no measured panel";
+    return out;
+  }
+  const int k = int(measured.size());
+  const auto checkSize = [&](const RgbImage& image) {
+    if (image.pixels.size() != 3 * mask.size())
+      throw std::invalid_argument("compareToMeasured: an image's size differs from the mask's");
+  };
+  std::vector<size_t> fitted;
+  for (size_t p = 0; p < panels.size(); ++p) {
+    if (panels[p].empty()) continue;
+    if (int(panels[p].size()) != k)
+      throw std::invalid_argument("compareToMeasured: panel " + std::to_string(p) + " has " +
+                                  std::to_string(panels[p].size()) + " replicates, the measured panel " +
+                                  std::to_string(k));
+    for (const RgbImage& image : panels[p]) checkSize(image);
+    fitted.push_back(p);
+  }
+  for (const RgbImage& image : measured) checkSize(image);
+  out.replicates = k;
+
+  const size_t series = 1 + fitted.size();
+  Totals totals(series);
+  PixelReplicates pixel(series, k);
+  const auto rgb = [](const RgbImage& image, size_t i) {
+    return Rgb3{image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]};
+  };
+  const auto lum = [](const Rgb3& v) { return luminance(Rgb(v[0], v[1], v[2])); };
+  for (size_t i = 0; i < mask.size(); ++i) {
+    if (!mask[i]) continue;
+    for (int j = 0; j < k; ++j) {
+      const Rgb3 m = rgb(measured[j], i);
+      pixel.x(0, j) = m;
+      pixel.l(0, j) = lum(m);
+      for (size_t f = 0; f < fitted.size(); ++f) {
+        const Rgb3 p = rgb(panels[fitted[f]][j], i);
+        pixel.x(1 + f, j) = {p[0] - m[0], p[1] - m[1], p[2] - m[2]};
+        pixel.l(1 + f, j) = lum(p);
+      }
+    }
+    // Finite floats give finite differences, products and sums in double: checking the inputs suffices.
+    if (!pixel.finite()) {
+      ++out.skippedPixels;
+      continue;
+    }
+    ++out.pixels;
+    pixel.addTo(totals);
+  }
+
+  const double z = twoSidedQuantile(confidence);
+  const double b = totals.u[0];
+  const bool signal = out.pixels > 0 && totals.squared[0] > 0.0 && totals.lum[0] > 0.0;
+  out.measuredSquared = b;
+  for (size_t f = 0; f < fitted.size(); ++f) {
+    const size_t s = 1 + f;
+    PanelFigures& fig = out.panels[fitted[f]];
+    fig.compared = signal;
+    if (!fig.compared) continue;
+    fig.noisyRelativeRmse = std::sqrt(totals.squared[s] / totals.squared[0]);
+    fig.luminanceRatio = totals.lum[s] / totals.lum[0];
+
+    fig.available = k >= 2 && b > 0.0;
+    if (!fig.available) continue;
+    const double a = totals.u[s], ratio = a / b;
+    fig.squaredError = a;
+    fig.clamped = a < 0.0;
+    fig.relativeRmse = std::sqrt(std::max(0.0, ratio));
+
+    fig.hasCi = k >= 4;
+    if (!fig.hasCi) continue;
+    const double varRatio = (totals.cov(s, s) - 2.0 * ratio * totals.cov(s, 0) + ratio * ratio * totals.cov(0, 0)) / (b * b);
+    // An unbiased variance estimate can come out negative where the true variance is tiny: a point interval.
+    const double halfRatio = z * std::sqrt(std::max(0.0, varRatio));
+    fig.relativeRmseCi = {std::sqrt(std::max(0.0, ratio - halfRatio)), std::sqrt(std::max(0.0, ratio + halfRatio))};
+    const double l = fig.luminanceRatio, lumTotal = totals.lum[0];
+    const double varL = (totals.lumVar[s] - 2.0 * l * totals.lumCov[s] + l * l * totals.lumVar[0]) / (lumTotal * lumTotal);
+    const double halfL = z * std::sqrt(std::max(0.0, varL));
+    fig.luminanceRatioCi = {l - halfL, l + halfL};
+  }
+  out.verdict = decide(out, fitted, totals, z, confidence);
+  return out;
+}
+
+}  // namespace glossy
