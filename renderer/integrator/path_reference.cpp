@@ -9,13 +9,15 @@
 
 namespace glossy {
 
-Rgb tracePath(const PathContext& context, Ray ray, CmjSampler& sampler) {
+namespace {
+
+// Follows a path from `ray`, its depth-th segment, adding what it gathers to radiance, until it ends. With
+// `stop`, a path that reaches the object stops at that vertex before its BRDF acts, and walk returns true.
+bool walk(const PathContext& context, Ray ray, CmjSampler& sampler, PathState& path, int depth, Rgb& radiance,
+          ObjectVertex* stop) {
   const RenderScene& scene = context.scene;
   const LightSet& lights = context.lights;
-  Rgb radiance(0.0);
-  PathState path;
-  path.from = ray.origin;
-  for (int depth = 1;; ++depth) {
+  for (;; ++depth) {
     Hit hit;
     if (!scene.bvh->intersect(ray, hit)) {
       // Left the scene: the distant lights.
@@ -24,33 +26,52 @@ Rgb tracePath(const PathContext& context, Ray ray, CmjSampler& sampler) {
         const Rgb arriving = distant.light->arriving(ray.dir, pdf);
         radiance += path.throughput * weightedEmission(path, arriving, distant.probability * pdf);
       }
-      return radiance;
+      return false;
     }
     if (const ChosenLight light = lights.at(hit)) {
       // Emitters are black bodies: they shine and reflect nothing.
       double pdf = 0.0;
       const Rgb emitted = light.light->emitted(hit, path.from, pdf);
       radiance += path.throughput * weightedEmission(path, emitted, light.probability * pdf);
-      return radiance;
+      return false;
     }
     ShadingPoint sp;
-    if (depth >= context.settings.maxDepth || !shade(scene, ray, hit, sp)) return radiance;
+    if (depth >= context.settings.maxDepth || !shade(scene, ray, hit, sp)) return false;
     const VertexDraws u = drawVertex(sampler, DrawsUsed(context, depth));
-
-    // A light sample, traced to the light unless the BRDF sends nothing toward it.
-    if (const ChosenLight chosen = lights.choose(u.lightChoice)) {
-      LightPath light;
-      Rgb contribution;
-      if (toLight(sp, chosen, chosen.light->sample(sp.position, u.light), light) &&
-          lightContribution(light, valueToward(context.settings, sp, light.wiLocal), contribution) &&
-          !scene.bvh->occluded(light.shadow))
-        radiance += path.throughput * contribution;
+    // A light sample, its shadow ray traced: the same whatever the BRDF.
+    const VertexLight light = sampleLight(context, sp, u);
+    if (stop && scene.isObject(hit.mesh)) {
+      *stop = ObjectVertex{depth, hit.mesh, path, radiance, sp, u, light, sampler};
+      return true;
     }
-
-    // A BSDF sample continues the path.
-    if (!continuePath(depth, context.settings, sp, sampleBsdf(context.settings, sp, u), u.roulette, path, ray))
-      return radiance;
+    // The BRDF weighs the light sample, and its sample continues the path.
+    if (!reflect(context, depth, sp, u, light, path, radiance, ray)) return false;
   }
+}
+
+}  // namespace
+
+Rgb tracePath(const PathContext& context, Ray ray, CmjSampler& sampler) {
+  Rgb radiance(0.0);
+  PathState path;
+  path.from = ray.origin;
+  walk(context, ray, sampler, path, 1, radiance, nullptr);
+  return radiance;
+}
+
+bool traceToObject(const PathContext& context, Ray ray, CmjSampler& sampler, Rgb& radiance, ObjectVertex& vertex) {
+  radiance = Rgb(0.0);
+  PathState path;
+  path.from = ray.origin;
+  return walk(context, ray, sampler, path, 1, radiance, &vertex);
+}
+
+Rgb continueFromObject(const PathContext& panel, ObjectVertex v) {
+  v.point.brdf = &panel.scene.brdfOf(v.mesh);
+  Ray ray;
+  if (reflect(panel, v.depth, v.point, v.draws, v.light, v.path, v.radiance, ray))
+    walk(panel, ray, v.sampler, v.path, v.depth + 1, v.radiance, nullptr);
+  return v.radiance;
 }
 
 }  // namespace glossy

@@ -1,6 +1,7 @@
 // Rendering an image by path tracing (path_reference.cpp says what a path does; path_wave.cpp does the
-// same for many paths at once, the default). Depth follows Mitsuba 3: maxDepth counts path segments, so 1
-// shows only directly visible emitters, 2 adds direct lighting, 3 one indirect bounce, and so on.
+// same for many paths at once, the default), or the panels of a sheet together. Depth follows Mitsuba 3:
+// maxDepth counts path segments, so 1 shows only directly visible emitters, 2 adds direct lighting, 3 one
+// indirect bounce, and so on.
 #pragma once
 
 #include "materials/models/brdf.h"
@@ -9,6 +10,7 @@
 #include "renderer/scene/embree_scene.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace glossy {
@@ -37,18 +39,33 @@ struct RenderScene {
   std::vector<Brdf> brdfs;  // per SceneDescription::materials entry
   Brdf defaultBrdf = Lambertian{Rgb(0.5)};
   const Environment* environment;
+  // Per SceneDescription::meshes entry: part of a sheet's object, the meshes whose BRDF differs from panel
+  // to panel (renderPanels). Empty outside sheets.
+  std::vector<bool> objectMeshes = {};
 
   const Brdf& brdfOf(uint32_t mesh) const {
     const int m = description->meshes[mesh].material;
     return m < 0 ? defaultBrdf : brdfs[size_t(m)];
   }
+  bool isObject(uint32_t mesh) const { return mesh < objectMeshes.size() && objectMeshes[mesh]; }
 };
 
 struct RenderStats {
-  uint64_t droppedSamples = 0;  // non-finite path contributions, discarded
+  uint64_t droppedSamples = 0;  // non-finite path contributions, discarded (per panel, summed)
+  uint64_t objectPaths = 0;     // renderPanels: paths that reached the object, where the panels part ways
   double seconds = 0.0;
 };
 
 RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSettings& settings, RenderStats& stats);
+
+// The panels of a sheet, rendered together: panels[p] is the scene with panel p's BRDF on the object
+// (RenderScene::objectMeshes, the same in every panel). Sample j of pixel i follows one path in every
+// panel up to its first vertex on the object: the camera ray, the backdrop's vertices, their light samples
+// and shadow rays, and that vertex's own draws, light sample and shadow ray are computed once. From there
+// each panel continues with its own BRDF and the same draws, dimension for dimension. So each panel is,
+// sample for sample, the image render() makes of its scene, while a path that never meets the object is
+// traced once and shared whole.
+std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Camera& camera, const RenderSettings& settings,
+                                   RenderStats& stats);
 
 }  // namespace glossy

@@ -153,6 +153,19 @@ inline bool toLight(const ShadingPoint& sp, const ChosenLight& chosen, const Lig
   return true;
 }
 
+// The light sample of a vertex with its shadow ray's verdict: none of it depends on the vertex's BRDF, so
+// the panels of a sheet share it (ObjectVertex).
+struct VertexLight {
+  LightPath path;
+  bool visible = false;  // a sample arrived from above the surface and nothing blocks it
+};
+inline VertexLight sampleLight(const PathContext& context, const ShadingPoint& sp, const VertexDraws& u) {
+  VertexLight v;
+  if (const ChosenLight chosen = context.lights.choose(u.lightChoice))
+    v.visible = toLight(sp, chosen, chosen.light->sample(sp.position, u.light), v.path) && !context.scene.bvh->occluded(v.path.shadow);
+  return v;
+}
+
 // What the light sample brings if nothing blocks it, MIS-weighted against the BRDF's own sampling, before
 // the path's throughput. False when that is nothing.
 inline bool lightContribution(const LightPath& light, const BrdfValue& value, Rgb& contribution) {
@@ -192,18 +205,59 @@ inline bool continuePath(int depth, const RenderSettings& settings, const Shadin
   return true;
 }
 
+// What a vertex's BRDF does with its draws: weighs the light sample (adding it when nothing blocks it) and
+// samples the path's next direction. False ends the path.
+inline bool reflect(const PathContext& context, int depth, const ShadingPoint& sp, const VertexDraws& u,
+                    const VertexLight& light, PathState& path, Rgb& radiance, Ray& ray) {
+  Rgb contribution;
+  if (light.visible && lightContribution(light.path, valueToward(context.settings, sp, light.path.wiLocal), contribution))
+    radiance += path.throughput * contribution;
+  return continuePath(depth, context.settings, sp, sampleBsdf(context.settings, sp, u), u.roulette, path, ray);
+}
+
+// A path at its first vertex on a sheet's object (RenderScene::objectMeshes), before the vertex's BRDF is
+// used: all that the panels share, from which each continues with its own BRDF.
+struct ObjectVertex {
+  int depth = 0;           // 0: the path never reached the object
+  uint32_t mesh = 0;
+  PathState path;
+  Rgb radiance{0.0};       // gathered before the vertex
+  ShadingPoint point;      // its brdf is the first panel's; each panel sets its own
+  VertexDraws draws;
+  VertexLight light;
+  CmjSampler sampler;      // past the vertex's draws
+};
+
 // The reference path tracer: the radiance arriving along a camera ray, whose sampler has drawn the film
 // position.
 Rgb tracePath(const PathContext& context, Ray ray, CmjSampler& sampler);
+// The same, but a path that reaches the object stops there (returning true, the radiance so far in
+// vertex.radiance); continueFromObject then finishes it for a panel, whose context differs only in the
+// object's BRDF. The two make exactly tracePath's radiance.
+bool traceToObject(const PathContext& context, Ray ray, CmjSampler& sampler, Rgb& radiance, ObjectVertex& vertex);
+Rgb continueFromObject(const PathContext& panel, ObjectVertex vertex);
 
-// The same for up to kWaveSize camera rays at once: radiance[i] for the lanes with start[i]. Its lanes'
-// state lives in the tracer, made once per thread and reused, as it is too large to clear per wave.
+// A list of a wave's lanes.
+struct Lanes {
+  int lane[kWaveSize];
+  int n = 0;
+  void add(int i) { lane[n++] = i; }
+};
+
+// tracePath for up to kWaveSize camera rays at once: radiance[i] for the lanes with start[i]. With stops,
+// traceToObject instead: a lane whose path reaches the object stops there, stops[i] its vertex (depth 0 for
+// the others). continueFromObject for n vertices of one depth: resume. Its lanes' state lives in the
+// tracer, made once per thread and reused, as it is too large to clear per wave.
 class WaveTracer {
  public:
   explicit WaveTracer(const PathContext& context) : context_(context) {}
-  void trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* radiance);
+  void trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* radiance, ObjectVertex* stops = nullptr);
+  void resume(const ObjectVertex* vertices, int n, Rgb* radiance);
 
  private:
+  void walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, Rgb* radiance, ObjectVertex* stops);
+  void sampleLights(const Lanes& lanes);
+  void reflectAll(int depth, const Lanes& lanes, Ray* rays, bool* alive, Rgb* radiance);
   void sampleBrdf(const Brdf& brdf, const int* lanes, int n);
   void evalBrdf(const Brdf& brdf, const int* lanes, int n);
 
@@ -221,11 +275,12 @@ class WaveTracer {
   Vec2 uLight_[kWaveSize];
   LightSample lightSample_[kWaveSize];
   BrdfSample bsdfSample_[kWaveSize];
-  LightPath lightPath_[kWaveSize];
+  VertexLight light_[kWaveSize];
   BrdfValue value_[kWaveSize];
-  Rgb contribution_[kWaveSize];
   Ray shadow_[kWaveSize];
   bool shadowed_[kWaveSize], occluded_[kWaveSize];
+  Ray resumeRays_[kWaveSize];
+  CmjSampler resumeSamplers_[kWaveSize];
 };
 
 }  // namespace glossy

@@ -14,13 +14,6 @@ namespace {
 
 static_assert(kWaveSize % kPacketSize == 0, "a wave is whole Embree packets");
 
-// A list of a wave's lanes.
-struct Lanes {
-  int lane[kWaveSize];
-  int n = 0;
-  void add(int i) { lane[n++] = i; }
-};
-
 // f(key, lanes, count) for each distinct key(i) among the lanes, its lanes in increasing order. A wave
 // mostly has one BRDF and one or two lights, so this is one or two passes.
 template <class Key, class F>
@@ -42,24 +35,48 @@ void forEachGroup(const Lanes& lanes, Key key, F&& f) {
 
 }  // namespace
 
-void WaveTracer::trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* radiance) {
-  const RenderScene& scene = context_.scene;
-  const RenderSettings& settings = context_.settings;
-  const LightSet& lights = context_.lights;
+void WaveTracer::trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* radiance, ObjectVertex* stops) {
   bool alive[kWaveSize];
   for (int i = 0; i < kWaveSize; ++i) {
     alive[i] = start[i];
     radiance[i] = Rgb(0.0);
     path_[i] = PathState{};
     path_[i].from = rays[i].origin;
+    if (stops) stops[i].depth = 0;
   }
+  walk(1, rays, samplers, alive, radiance, stops);
+}
 
-  for (int depth = 1;; ++depth) {
+void WaveTracer::resume(const ObjectVertex* vertices, int n, Rgb* radiance) {
+  bool alive[kWaveSize] = {};
+  Lanes lanes;
+  for (int i = 0; i < n; ++i) {
+    const ObjectVertex& v = vertices[i];
+    path_[i] = v.path;
+    radiance[i] = v.radiance;
+    point_[i] = v.point;
+    point_[i].brdf = &context_.scene.brdfOf(v.mesh);
+    draws_[i] = v.draws;
+    light_[i] = v.light;
+    resumeSamplers_[i] = v.sampler;
+    lanes.add(i);
+  }
+  if (n == 0) return;
+  reflectAll(vertices[0].depth, lanes, resumeRays_, alive, radiance);
+  walk(vertices[0].depth + 1, resumeRays_, resumeSamplers_, alive, radiance, nullptr);
+}
+
+void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, Rgb* radiance, ObjectVertex* stops) {
+  const RenderScene& scene = context_.scene;
+  const LightSet& lights = context_.lights;
+  for (;; ++depth) {
     if (std::none_of(alive, alive + kWaveSize, [](bool a) { return a; })) return;
     for (int p = 0; p < kWaveSize; p += kPacketSize) scene.bvh->intersect(alive + p, rays + p, hit_ + p, found_ + p);
 
-    // Rays that left the scene see the distant lights; rays that hit a light see it; the others shade.
-    Lanes escaped, shading;
+    // Rays that left the scene see the distant lights; rays that hit a light see it; the others shade, and
+    // with stops those on the object stop there once their light sample is taken.
+    Lanes escaped, shading, reflecting;
+    bool stopping[kWaveSize] = {};
     for (int i = 0; i < kWaveSize; ++i) {
       if (!alive[i]) continue;
       alive[i] = false;
@@ -70,8 +87,10 @@ void WaveTracer::trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* 
         double pdf = 0.0;
         const Rgb emitted = light.light->emitted(hit_[i], path_[i].from, pdf);
         radiance[i] += path_[i].throughput * weightedEmission(path_[i], emitted, light.probability * pdf);
-      } else if (depth < settings.maxDepth && shade(scene, rays[i], hit_[i], point_[i])) {
+      } else if (depth < context_.settings.maxDepth && shade(scene, rays[i], hit_[i], point_[i])) {
         shading.add(i);
+        stopping[i] = stops && scene.isObject(hit_[i].mesh);
+        if (!stopping[i]) reflecting.add(i);
       }
     }
     for (const ChosenLight& distant : lights.distant()) {
@@ -82,47 +101,61 @@ void WaveTracer::trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* 
       }
     }
     drawVertices(samplers, shading.lane, shading.n, DrawsUsed(context_, depth), draws_);
-
-    // The light samples, a batch per light.
-    Lanes sampled;
+    sampleLights(shading);
     for (int k = 0; k < shading.n; ++k) {
       const int i = shading.lane[k];
-      chosen_[i] = lights.choose(draws_[i].lightChoice);
-      if (!chosen_[i]) continue;
-      sampled.add(i);
-      position_[i] = point_[i].position;
-      uLight_[i] = draws_[i].light;
+      if (stopping[i]) stops[i] = ObjectVertex{depth, hit_[i].mesh, path_[i], radiance[i], point_[i], draws_[i], light_[i], samplers[i]};
     }
-    forEachGroup(sampled, [&](int i) { return chosen_[i].light; },
-                 [&](const Light* light, const int* lanes, int n) { light->sample(position_, uLight_, lanes, n, lightSample_); });
+    reflectAll(depth, reflecting, rays, alive, radiance);
+  }
+}
 
-    // The BSDF samples and the BRDF's values toward the light samples, a batch per BRDF.
-    forEachGroup(shading, [&](int i) { return point_[i].brdf; },
-                 [&](const Brdf* brdf, const int* lanes, int n) { sampleBrdf(*brdf, lanes, n); });
-    Lanes lit;
-    for (int k = 0; k < sampled.n; ++k) {
-      const int i = sampled.lane[k];
-      if (toLight(point_[i], chosen_[i], lightSample_[i], lightPath_[i])) lit.add(i);
-    }
-    forEachGroup(lit, [&](int i) { return point_[i].brdf; },
-                 [&](const Brdf* brdf, const int* lanes, int n) { evalBrdf(*brdf, lanes, n); });
+// light_ of the lanes: sampleLight, as batches per light and shadow-ray packets.
+void WaveTracer::sampleLights(const Lanes& lanes) {
+  const LightSet& lights = context_.lights;
+  Lanes sampled;
+  for (int k = 0; k < lanes.n; ++k) {
+    const int i = lanes.lane[k];
+    light_[i].visible = false;
+    chosen_[i] = lights.choose(draws_[i].lightChoice);
+    if (!chosen_[i]) continue;
+    sampled.add(i);
+    position_[i] = point_[i].position;
+    uLight_[i] = draws_[i].light;
+  }
+  forEachGroup(sampled, [&](int i) { return chosen_[i].light; },
+               [&](const Light* light, const int* group, int n) { light->sample(position_, uLight_, group, n, lightSample_); });
+  std::fill(shadowed_, shadowed_ + kWaveSize, false);
+  for (int k = 0; k < sampled.n; ++k) {
+    const int i = sampled.lane[k];
+    shadowed_[i] = toLight(point_[i], chosen_[i], lightSample_[i], light_[i].path);
+    shadow_[i] = light_[i].path.shadow;
+  }
+  for (int p = 0; p < kWaveSize; p += kPacketSize) context_.scene.bvh->occluded(shadowed_ + p, shadow_ + p, occluded_ + p);
+  for (int k = 0; k < sampled.n; ++k) {
+    const int i = sampled.lane[k];
+    light_[i].visible = shadowed_[i] && !occluded_[i];
+  }
+}
 
-    // The shadow rays, as packets; then the paths go on.
-    std::fill(shadowed_, shadowed_ + kWaveSize, false);
-    for (int k = 0; k < lit.n; ++k) {
-      const int i = lit.lane[k];
-      shadowed_[i] = lightContribution(lightPath_[i], value_[i], contribution_[i]);
-      shadow_[i] = lightPath_[i].shadow;
-    }
-    for (int p = 0; p < kWaveSize; p += kPacketSize) scene.bvh->occluded(shadowed_ + p, shadow_ + p, occluded_ + p);
-    for (int k = 0; k < lit.n; ++k) {
-      const int i = lit.lane[k];
-      if (shadowed_[i] && !occluded_[i]) radiance[i] += path_[i].throughput * contribution_[i];
-    }
-    for (int k = 0; k < shading.n; ++k) {
-      const int i = shading.lane[k];
-      alive[i] = continuePath(depth, settings, point_[i], bsdfSample_[i], draws_[i].roulette, path_[i], rays[i]);
-    }
+// reflect for the lanes: the BSDF samples and the BRDF's values toward the visible light samples, a batch
+// per BRDF; then the paths go on (alive).
+void WaveTracer::reflectAll(int depth, const Lanes& lanes, Ray* rays, bool* alive, Rgb* radiance) {
+  forEachGroup(lanes, [&](int i) { return point_[i].brdf; },
+               [&](const Brdf* brdf, const int* group, int n) { sampleBrdf(*brdf, group, n); });
+  Lanes lit;
+  for (int k = 0; k < lanes.n; ++k)
+    if (light_[lanes.lane[k]].visible) lit.add(lanes.lane[k]);
+  forEachGroup(lit, [&](int i) { return point_[i].brdf; },
+               [&](const Brdf* brdf, const int* group, int n) { evalBrdf(*brdf, group, n); });
+  for (int k = 0; k < lit.n; ++k) {
+    const int i = lit.lane[k];
+    Rgb contribution;
+    if (lightContribution(light_[i].path, value_[i], contribution)) radiance[i] += path_[i].throughput * contribution;
+  }
+  for (int k = 0; k < lanes.n; ++k) {
+    const int i = lanes.lane[k];
+    alive[i] = continuePath(depth, context_.settings, point_[i], bsdfSample_[i], draws_[i].roulette, path_[i], rays[i]);
   }
 }
 
@@ -149,13 +182,13 @@ void WaveTracer::sampleBrdf(const Brdf& brdf, const int* lanes, int n) {
 // value_ of the lanes: valueToward their light samples, as one batch.
 void WaveTracer::evalBrdf(const Brdf& brdf, const int* lanes, int n) {
   if (context_.settings.cosineBrdfSampling) {
-    for (int k = 0; k < n; ++k) value_[lanes[k]] = valueToward(context_.settings, point_[lanes[k]], lightPath_[lanes[k]].wiLocal);
+    for (int k = 0; k < n; ++k) value_[lanes[k]] = valueToward(context_.settings, point_[lanes[k]], light_[lanes[k]].path.wiLocal);
     return;
   }
   Vec3 wi[kWaveSize] = {}, wo[kWaveSize] = {};  // zeroed for GCC, as in sampleBrdf
   BrdfValue values[kWaveSize];
   for (int k = 0; k < n; ++k) {
-    wi[k] = lightPath_[lanes[k]].wiLocal;
+    wi[k] = light_[lanes[k]].path.wiLocal;
     wo[k] = point_[lanes[k]].woLocal;
   }
   evalPdfBatch(brdf, wi, wo, values, n);
