@@ -1,6 +1,6 @@
 // glossy sheet and glossy sheets through the command line: the layered EXR (grid + 7 panels) and the PNG,
-// the error table and metadata, labelled empty panels, the smooth fit's Fresnel angle, --time, batch
-// resuming and sharding, bad input.
+// the error table and metadata, labelled empty panels, the smooth fit's Fresnel angle, --time,
+// --target-error, batch resuming and sharding, bad input.
 #include "renderer/image/exr_image.h"
 #include "tests/support/test_support.h"
 
@@ -78,7 +78,10 @@ TEST(CliSheet, EverySupplementMaterialGivesTheLayeredExrAndThePngWithNoNonFinite
     const RgbImage png = readRgbImage(tmp / (std::string(name) + ".png"));
     EXPECT_EQ(png.width, 7 * 16);
     EXPECT_GT(png.height, 16) << "a label strip under the panels";
-    EXPECT_NE(r.out.find("closest:"), std::string::npos) << r.out;
+    // 2 spp are 2 replicates: a noise-free figure, but no interval and so no verdict, said so.
+    EXPECT_NE(r.out.find("no verdict: fewer than 4 replicates"), std::string::npos) << r.out;
+    EXPECT_EQ(readImageAttribute(exr, "glossy:verdict"), "no verdict: fewer than 4 replicates");
+    EXPECT_TRUE(readImageAttribute(exr, "glossy:error.cook_torrance_E2.relativeRmseCi").empty());
     EXPECT_NE(r.out.find("CT E2"), std::string::npos) << r.out;
   }
 }
@@ -148,9 +151,43 @@ TEST(CliSheet, TimeBudgetRendersProgressively) {
                                  tmp.path().string(), "--width", "16", "--height", "16", "--time", "0.3", "-o",
                                  (tmp / "t.exr").string()});
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(readImageAttribute(tmp / "t.exr", "glossy:spp"), "progressive");
-  EXPECT_GE(std::stoi(readImageAttribute(tmp / "t.exr", "glossy:panel.smooth_E2.spp")), 16)
-      << "a 16² panel gets far more than a few samples in 0.3 s";
+  EXPECT_GE(std::stoi(readImageAttribute(tmp / "t.exr", "glossy:spp")), 16) << "a 16² panel gets far more than a few samples in 0.3 s";
+  EXPECT_GE(std::stoi(readImageAttribute(tmp / "t.exr", "glossy:passes")), 2);
+  EXPECT_EQ(readImageAttribute(tmp / "t.exr", "glossy:panel.smooth_E2.spp"), readImageAttribute(tmp / "t.exr", "glossy:spp"));
+}
+
+TEST(CliSheet, TargetErrorRendersUntilEveryIntervalIsThatNarrow) {
+  GLOSSY_REQUIRE_SHARED("merl/gold-paint.binary.xz");
+  TempDir tmp;
+  const double target = 0.01;
+  const RunResult r = runGlossy({"sheet", "--material", (materialsDir() / "gold-paint.toml").string(), "--merl-dir",
+                                 (sharedDir() / "merl").string(), "--width", "32", "--height", "32", "--target-error", "0.01",
+                                 "-o", (tmp / "t.exr").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto attr = [&](const std::string& name) { return readImageAttribute(tmp / "t.exr", name); };
+  const int spp = std::stoi(attr("glossy:spp"));
+  EXPECT_GT(spp, 16) << "a 32² gold-paint sheet needs more than the first pass for ±0.01";
+  EXPECT_GE(std::stoi(attr("glossy:passes")), 2);
+  EXPECT_EQ(spp % 4, 0) << "every replicate has as many samples";
+  for (const char* layer : {"microfacet_E2", "smooth_E2", "ashikhmin_shirley_E1", "ashikhmin_shirley_E2", "cook_torrance_E1",
+                            "cook_torrance_E2"}) {
+    double lo = 0.0, hi = 0.0;
+    ASSERT_EQ(std::sscanf(attr(std::string("glossy:error.") + layer + ".relativeRmseCi").c_str(), "%lf %lf", &lo, &hi), 2) << layer;
+    EXPECT_LE(0.5 * (hi - lo), target * (1 + 1e-6)) << layer;
+  }
+  EXPECT_FALSE(attr("glossy:verdict").empty());
+
+  // Capped by --spp; without a measured panel there is no interval to aim at: one pass.
+  const RunResult capped = runGlossy({"sheet", "--material", (materialsDir() / "gold-paint.toml").string(), "--merl-dir",
+                                      (sharedDir() / "merl").string(), "--width", "32", "--height", "32", "--target-error",
+                                      "0.0001", "--spp", "32", "-o", (tmp / "c.exr").string()});
+  ASSERT_EQ(capped.status, 0) << capped.err;
+  EXPECT_EQ(readImageAttribute(tmp / "c.exr", "glossy:spp"), "32");
+  const RunResult blind = runGlossy({"sheet", "--material", (materialsDir() / "gold-paint.toml").string(), "--merl-dir",
+                                     tmp.path().string(), "--width", "16", "--height", "16", "--target-error", "0.0001", "-o",
+                                     (tmp / "b.exr").string()});
+  ASSERT_EQ(blind.status, 0) << blind.err;
+  EXPECT_EQ(readImageAttribute(tmp / "b.exr", "glossy:passes"), "1");
 }
 
 TEST(CliSheets, RendersEachMaterialOnceResumesAndShards) {
@@ -188,6 +225,11 @@ TEST(CliSheet, BadInputExitsTwoWithOneLine) {
                      "absent.binary");
   expectOneLineError(runGlossy({"sheets", (tmp / "nothing").string(), "-o", (tmp / "out").string()}), "nothing");
   expectOneLineError(runGlossy({"sheets", "--shard", "2/2", "-o", (tmp / "out").string()}), "--shard");
+  for (const char* option : {"--target-error", "--time"})
+    for (const char* bad : {"0", "-0.1", "nan", "inf", "x"})
+      expectOneLineError(runGlossy({"sheet", "--material", (materialsDir() / "chrome.toml").string(), option, bad, "-o",
+                                    (tmp / "x.exr").string()}),
+                         option);
   EXPECT_FALSE(std::filesystem::exists(tmp / "x.exr"));
 }
 

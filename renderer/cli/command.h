@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -24,6 +25,15 @@ Command addRenderCommand(CLI::App& parent);
 Command addSampleCommand(CLI::App& parent);
 Command addSheetCommand(CLI::App& parent);
 Command addSheetsCommand(CLI::App& parent);
+
+// A number > 0 and finite (CLI::PositiveNumber lets "inf" through, and an infinite budget never ends).
+inline const CLI::Validator kFinitePositive(
+    [](std::string& text) {
+      double v = 0.0;
+      return CLI::detail::lexical_cast(text, v) && std::isfinite(v) && v > 0.0 ? std::string()
+                                                                               : "must be a finite number > 0, not '" + text + "'";
+    },
+    "FINITE > 0");
 
 // The committed material library: ./materials when run from a checkout, else the source tree's.
 std::filesystem::path defaultMaterialsDir();

@@ -28,6 +28,7 @@ struct SheetOptions {
   double exposure = 0.0;
   bool half = false;
   SheetSettings settings;
+  CLI::Option* spp = nullptr;
   // glossy sheets
   std::vector<std::string> inputs;
   std::string outDir = "out/sheets", shard;
@@ -66,10 +67,8 @@ std::shared_ptr<const MerlTable> findMeasured(const MaterialFile& m, const Sheet
 
 std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& stage, const SheetOptions& o, const Sheet& sheet,
                                           double seconds) {
-  uint64_t dropped = 0;
   std::string smoothFresnel;  // as the file's smooth fits say, like render's for its binding
   for (const PanelRender& p : sheet.panels) {
-    dropped += p.droppedSamples;
     const Fit* fit = p.empty || p.panel.fit.empty() ? nullptr : m.find(FitId::parse(p.panel.fit, m.path.string()));
     const std::string f = fit ? smoothFresnelOf(*fit) : "";
     if (!f.empty() && smoothFresnel.find(f) == std::string::npos) smoothFresnel.append(smoothFresnel.empty() ? "" : ", ").append(f);
@@ -78,8 +77,9 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       {"glossy:material", m.path.string()},
       {"glossy:fit", std::string("sheet")},
       {"glossy:measured", sheet.measured()->note},
-      {"glossy:spp", o.settings.secondsPerPanel > 0.0 ? std::string("progressive") : std::to_string(o.settings.spp)},
+      {"glossy:spp", std::to_string(sheet.spp)},
       {"glossy:secondsPerPanel", float(o.settings.secondsPerPanel)},
+      {"glossy:targetError", float(o.settings.targetError)},
       o.settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(o.settings.seed)}
                                              : ImageAttribute{"glossy:seed", std::to_string(o.settings.seed)},
       {"glossy:maxDepth", o.settings.maxDepth},
@@ -88,7 +88,7 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       {"glossy:smoothFresnel", smoothFresnel.empty() ? std::string("projected") : smoothFresnel},
       {"glossy:conventions", modelConventions()},
       {"glossy:pngExposure", float(o.exposure)},
-      {"glossy:droppedSamples", int(std::min<uint64_t>(dropped, INT32_MAX))},
+      {"glossy:droppedSamples", int(std::min<uint64_t>(sheet.droppedSamples, INT32_MAX))},
       {"glossy:renderSeconds", float(seconds)},
       {"glossy:version", std::string(GLOSSY_VERSION)},
   };
@@ -116,10 +116,18 @@ void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, co
 void addRenderOptions(CLI::App* app, SheetOptions& o) {
   app->add_option("--merl-dir", o.merlDir, "Folder with MERL tables (else $GLOSSY_MERL_DIR)");
   o.scene.addTo(app);
-  app->add_option("--spp", o.settings.spp, "Samples per pixel of every panel")->check(CLI::Range(1, INT32_MAX))->capture_default_str();
+  o.spp = app->add_option("--spp", o.settings.spp,
+                  "Samples per pixel of every panel, in 4 independent replicates (rounded up to a multiple of 4); with "
+                  "--target-error or --time: at most this many")
+      ->check(CLI::Range(1, 1 << 24))
+      ->capture_default_str();
   app->add_option("--time", o.settings.secondsPerPanel,
-                  "Wall-clock seconds per panel instead of --spp: each panel renders progressively until its budget is spent")
-      ->check(CLI::PositiveNumber);
+                  "Wall-clock seconds per panel instead of --spp: the panels render in passes until their budget is spent")
+      ->check(kFinitePositive);
+  app->add_option("--target-error", o.settings.targetError,
+                  "Render in passes until every model's relative-RMSE 95 % interval has at most this half-width (capped by "
+                  "--spp if given, and --time)")
+      ->check(kFinitePositive);
   app->add_option("--width", o.settings.width, "Panel width")->check(CLI::Range(8, 1 << 14))->capture_default_str();
   app->add_option("--height", o.settings.height, "Panel height")->check(CLI::Range(8, 1 << 14))->capture_default_str();
   app->add_option("--seed", o.settings.seed, "Random seed (the same for every panel)")->capture_default_str();
@@ -129,7 +137,15 @@ void addRenderOptions(CLI::App* app, SheetOptions& o) {
   app->add_flag("--half", o.half, "Write half-float EXR (default: float)");
 }
 
-int runSheet(const SheetOptions& o) {
+// --time and --target-error render until they are met; --spp caps them only when given.
+SheetOptions withPassLimits(const SheetOptions& o) {
+  SheetOptions out = o;
+  if ((o.settings.targetError > 0.0 || o.settings.secondsPerPanel > 0.0) && o.spp->count() == 0) out.settings.spp = 1 << 24;
+  return out;
+}
+
+int runSheet(const SheetOptions& options) {
+  const SheetOptions o = withPassLimits(options);
   const Stage stage(o.scene);
   SheetOptions single = o;
   single.settings.progress = isatty(STDERR_FILENO);
@@ -145,7 +161,8 @@ std::pair<int, int> parseShard(const std::string& text) {
   return {i, n};
 }
 
-int runSheets(const SheetOptions& o) {
+int runSheets(const SheetOptions& options) {
+  const SheetOptions o = withPassLimits(options);
   for (const std::string& in : o.inputs)
     if (std::error_code ec; !std::filesystem::is_directory(in, ec) && !std::filesystem::is_regular_file(in, ec))
       throw InputError(in + ": no such material file or folder");

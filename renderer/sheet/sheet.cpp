@@ -28,46 +28,47 @@ float srgbEncode(double v) {
   return float(v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055);
 }
 
-PanelRender renderPanel(const SheetScene& scene, const SheetPanel& panel, const Brdf& brdf, const SheetSettings& s) {
-  PanelRender out;
-  out.panel = panel;
-  out.empty = false;
-  std::vector<Brdf> brdfs = scene.baseBrdfs;
-  for (size_t m = 0; m < brdfs.size(); ++m)
-    if (scene.isObject[m]) brdfs[m] = brdf;
-  const RenderScene rs{scene.description, scene.bvh, std::move(brdfs), brdf, scene.environment};
-  RenderSettings r{.width = s.width, .height = s.height, .maxDepth = s.maxDepth, .seed = s.seed, .threads = s.threads,
-                   .progress = s.progress && s.secondsPerPanel <= 0.0};
-  const auto start = std::chrono::steady_clock::now();
-  if (s.secondsPerPanel <= 0.0) {
-    r.spp = s.spp;
-    RenderStats stats;
-    out.image = render(rs, *scene.camera, r, stats);
-    out.spp = s.spp;
-    out.droppedSamples = stats.droppedSamples;
-  } else {
-    // Progressive: passes of 1, 2, 4, … samples, each its own sample pattern (seeded by its first sample),
-    // until the next pass would overrun the budget (it takes about twice the last one).
-    out.image = RgbImage(s.width, s.height);
-    int pass = 1;
-    for (;;) {
-      r.firstSample = out.spp;
-      r.spp = pass;
-      RenderStats stats;
-      const RgbImage img = render(rs, *scene.camera, r, stats);
-      const double wOld = double(out.spp) / (out.spp + pass), wNew = double(pass) / (out.spp + pass);
-      for (size_t i = 0; i < img.pixels.size(); ++i)
-        out.image.pixels[i] = float(wOld * out.image.pixels[i] + wNew * img.pixels[i]);
-      out.spp += pass;
-      out.droppedSamples += stats.droppedSamples;
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (elapsed + 2.0 * stats.seconds > s.secondsPerPanel) break;
-      pass *= 2;
+// The replicates' sample counts, pass after pass: fixed (one pass), equal time (1, 2, 4, … per replicate
+// until the next would overrun the budget) or a target error (as many as the intervals' widths say).
+class PassPlan {
+ public:
+  PassPlan(const SheetSettings& s, int panelsRendered)
+      : s_(s), replicates_(s.secondsPerPanel > 0.0 || s.targetError > 0.0 ? kReplicates : std::clamp(s.spp, 1, kReplicates)),
+        budget_(s.secondsPerPanel * panelsRendered) {}
+  int replicates() const { return replicates_; }
+
+  // Samples per replicate of the next pass, given those done and the figures so far; 0: stop.
+  int next(int done, double seconds, double lastPassSeconds, double widest) {
+    const int cap = (s_.spp + replicates_ - 1) / replicates_;
+    if (s_.targetError > 0.0) {
+      if (done == 0) return std::min(cap, 4);
+      // No interval to refine (no measured panel, or it is black over the object): nothing to aim at.
+      if (!std::isfinite(widest) || widest <= s_.targetError || done >= cap) return 0;
+      // Half-widths shrink as 1/√samples: aim a little past the estimate, at most quadrupling.
+      const double ratio = widest / s_.targetError;
+      const double wanted = std::min(4.0 * done, std::ceil(1.1 * done * ratio * ratio));
+      int n = std::clamp(int(wanted) - done, 1, cap - done);
+      if (budget_ > 0.0) {
+        const double perSample = lastPassSeconds / std::max(1, lastPass_);
+        n = std::min(n, int((budget_ - seconds) / std::max(perSample, 1e-9)));
+      }
+      lastPass_ = n;
+      return std::max(n, 0);
     }
+    if (budget_ > 0.0) {
+      if (done == 0) return lastPass_ = 1;
+      if (seconds + 2.0 * lastPassSeconds > budget_) return 0;
+      return lastPass_ = done;  // doubling
+    }
+    return done == 0 ? cap : 0;
   }
-  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return out;
-}
+
+ private:
+  const SheetSettings& s_;
+  int replicates_;
+  double budget_;
+  int lastPass_ = 0;  // samples per replicate of the last pass
+};
 
 // The text shortened (from the end) until it fits `width` pixels at that size: labels never run into the
 // next panel.
@@ -137,58 +138,110 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
   std::optional<MetricData> e1, e2;
   if (measured) e1.emplace(*measured, Metric::E1), e2.emplace(*measured, Metric::E2);
 
+  // Each panel with a BRDF becomes a scene that differs from the others only on the object.
+  std::vector<bool> objectMeshes;
+  for (const Mesh& mesh : scene.description->meshes) objectMeshes.push_back(mesh.material < 0 || scene.isObject[size_t(mesh.material)]);
+  std::vector<RenderScene> scenes;
+  std::vector<size_t> rendered;  // the panel of each scene
   for (const SheetPanel& panel : settings.panels) {
     PanelRender r;
     r.panel = panel;
+    std::optional<Brdf> brdf;
     if (panel.fit.empty()) {
-      if (measured) r = renderPanel(scene, panel, Measured(measured), settings);
+      if (measured) brdf = Measured(measured);
       r.note = measuredNote;
     } else if (const Fit* fit = material.find(FitId::parse(panel.fit, material.path.string()))) {
-      const Brdf brdf = makeBrdf(*fit);
-      r = renderPanel(scene, panel, brdf, settings);
-      if (measured) r.brdfE1 = e1->error(brdf), r.brdfE2 = e2->error(brdf);
+      brdf = makeBrdf(*fit);
+      if (measured) r.brdfE1 = e1->error(*brdf), r.brdfE2 = e2->error(*brdf);
     } else {
       r.note = "no " + panel.fit + " fit in " + material.name;
     }
-    if (r.empty) r.image = RgbImage(w, h);
+    r.image = RgbImage(w, h);
+    if (brdf) {
+      r.empty = false;
+      std::vector<Brdf> brdfs = scene.baseBrdfs;
+      for (size_t m = 0; m < brdfs.size(); ++m)
+        if (scene.isObject[m]) brdfs[m] = *brdf;
+      scenes.push_back({scene.description, scene.bvh, std::move(brdfs), *brdf, scene.environment, objectMeshes});
+      rendered.push_back(sheet.panels.size());
+    }
     sheet.panels.push_back(std::move(r));
   }
 
-  if (sheet.hasMeasured())
-    for (PanelRender& p : sheet.panels) {
-      if (p.empty || p.panel.fit.empty()) continue;
-      p.relativeRmse = relativeRmse(p.image, sheet.measured()->image, sheet.objectMask);
-      p.luminanceRatio = luminanceRatio(p.image, sheet.measured()->image, sheet.objectMask);
+  // The passes: each renders every replicate, each replicate its own pattern (a pass's first sample index,
+  // unique per replicate and pass, seeds it), all panels of a replicate together.
+  PassPlan plan(settings, int(scenes.size()));
+  sheet.replicates = plan.replicates();
+  for (size_t k : rendered) sheet.panels[k].replicates.assign(size_t(sheet.replicates), RgbImage(w, h));
+  const auto start = std::chrono::steady_clock::now();
+  int done = 0;  // samples per replicate so far
+  uint64_t objectPaths = 0;
+  double lastPass = 0.0, widest = std::numeric_limits<double>::infinity();
+  Comparison figures;
+  const auto compare = [&] {
+    std::vector<std::vector<RgbImage>> analytic;
+    const PanelRender* m = sheet.measured();
+    for (const PanelRender& p : sheet.panels)
+      if (!p.panel.fit.empty()) analytic.push_back(p.replicates);
+    figures = m && !m->empty ? compareToMeasured(analytic, m->replicates, sheet.objectMask) : Comparison{};
+    widest = figures.widestHalfWidth();
+  };
+  for (int n; !scenes.empty() && (n = plan.next(done, sheet.seconds, lastPass, widest)) > 0;) {
+    const auto passStart = std::chrono::steady_clock::now();
+    for (int j = 0; j < sheet.replicates; ++j) {
+      RenderSettings r{.width = w, .height = h, .spp = n, .firstSample = sheet.replicates * done + j * n,
+                       .maxDepth = settings.maxDepth, .seed = settings.seed, .threads = settings.threads,
+                       .progress = settings.progress && settings.secondsPerPanel <= 0.0 && settings.targetError <= 0.0};
+      RenderStats stats;
+      const std::vector<RgbImage> images = renderPanels(scenes, *scene.camera, r, stats);
+      sheet.droppedSamples += stats.droppedSamples;
+      objectPaths += stats.objectPaths;
+      const double wOld = double(done) / (done + n), wNew = double(n) / (done + n);
+      for (size_t k = 0; k < rendered.size(); ++k) {
+        std::vector<float>& acc = sheet.panels[rendered[k]].replicates[size_t(j)].pixels;
+        for (size_t i = 0; i < acc.size(); ++i) acc[i] = float(wOld * acc[i] + wNew * images[k].pixels[i]);
+      }
     }
+    done += n;
+    ++sheet.passes;
+    sheet.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    lastPass = std::chrono::duration<double>(std::chrono::steady_clock::now() - passStart).count();
+    if (settings.targetError > 0.0) {
+      compare();
+      if (settings.progress)
+        std::fprintf(stderr, "glossy: %s: %d spp, widest interval ±%.4f (target ±%.4f), %.1f s\n", material.name.c_str(),
+                     sheet.replicates * done, widest, settings.targetError, sheet.seconds);
+    }
+  }
+  if (settings.targetError <= 0.0 || sheet.passes == 0) compare();
+  sheet.spp = sheet.replicates * done;
+  sheet.objectShare = sheet.spp > 0 ? double(objectPaths) / (double(sheet.spp) * w * h) : 0.0;
+  sheet.verdict = figures.verdict;
+  sheet.skippedPixels = figures.skippedPixels;
+
+  // Panel images; the figures go to the analytic panels in order, the verdict's indices to the grid's.
+  size_t analytic = 0;
+  std::vector<size_t> analyticPanel;
+  for (size_t k = 0; k < sheet.panels.size(); ++k) {
+    PanelRender& p = sheet.panels[k];
+    if (!p.replicates.empty())
+      for (size_t i = 0; i < p.image.pixels.size(); ++i) {
+        double sum = 0.0;
+        for (const RgbImage& r : p.replicates) sum += r.pixels[i];
+        p.image.pixels[i] = float(sum / double(p.replicates.size()));
+      }
+    if (p.panel.fit.empty()) continue;
+    if (analytic < figures.panels.size()) p.figures = figures.panels[analytic];
+    analyticPanel.push_back(k);
+    ++analytic;
+  }
+  for (size_t& model : sheet.verdict.models) model = analyticPanel[model];
 
   sheet.grid = RgbImage(w * int(sheet.panels.size()), h);
   for (size_t k = 0; k < sheet.panels.size(); ++k)
     for (int y = 0; y < h; ++y)
       std::copy_n(sheet.panels[k].image.at(0, y), 3 * w, sheet.grid.at(int(k) * w, y));
   return sheet;
-}
-
-double relativeRmse(const RgbImage& panel, const RgbImage& reference, const std::vector<char>& mask) {
-  double err = 0.0, norm = 0.0;
-  for (size_t i = 0; i < mask.size(); ++i) {
-    if (!mask[i]) continue;
-    for (int c = 0; c < 3; ++c) {
-      const double d = double(panel.pixels[3 * i + c]) - reference.pixels[3 * i + c];
-      err += d * d;
-      norm += double(reference.pixels[3 * i + c]) * reference.pixels[3 * i + c];
-    }
-  }
-  return norm > 0.0 ? std::sqrt(err / norm) : -1.0;
-}
-
-double luminanceRatio(const RgbImage& panel, const RgbImage& reference, const std::vector<char>& mask) {
-  double a = 0.0, b = 0.0;
-  for (size_t i = 0; i < mask.size(); ++i)
-    if (mask[i]) {
-      a += luminance(&panel.pixels[3 * i]);
-      b += luminance(&reference.pixels[3 * i]);
-    }
-  return b > 0.0 ? a / b : -1.0;
 }
 
 void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::vector<ImageAttribute> metadata, PixelType type) {
@@ -208,25 +261,39 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
     metadata.push_back({key + ".fit", p.panel.fit.empty() ? std::string("measured") : p.panel.fit});
     metadata.push_back({key + ".empty", int(p.empty)});
     if (!p.note.empty()) metadata.push_back({key + ".note", p.note});
-    if (!p.empty) {
-      metadata.push_back({key + ".spp", p.spp});
-      metadata.push_back({key + ".seconds", float(p.seconds)});
-      metadata.push_back({key + ".droppedSamples", int(std::min<uint64_t>(p.droppedSamples, INT32_MAX))});
+    if (!p.empty) metadata.push_back({key + ".spp", sheet.spp});
+    const PanelFigures& f = p.figures;
+    const std::string error = "glossy:error." + p.panel.layer;
+    if (f.compared) {
+      metadata.push_back({error + ".relativeRmseNoisy", float(f.noisyRelativeRmse)});
+      metadata.push_back({error + ".luminanceRatio", float(f.luminanceRatio)});
     }
-    if (p.relativeRmse >= 0.0) {
-      metadata.push_back({"glossy:error." + p.panel.layer + ".relativeRmse", float(p.relativeRmse)});
-      metadata.push_back({"glossy:error." + p.panel.layer + ".luminanceRatio", float(p.luminanceRatio)});
+    if (f.available) {
+      metadata.push_back({error + ".relativeRmse", float(f.relativeRmse)});
+      metadata.push_back({error + ".noiseFree", f.clamped ? std::string("clamped at 0: the estimate of the squared error was negative")
+                                                          : std::string("yes")});
+    }
+    if (f.hasCi) {
+      metadata.push_back({error + ".relativeRmseCi", formatted("%.6g %.6g", f.relativeRmseCi.lo, f.relativeRmseCi.hi)});
+      metadata.push_back({error + ".luminanceRatioCi", formatted("%.6g %.6g", f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)});
     }
     if (p.brdfE1 >= 0.0) {
-      metadata.push_back({"glossy:error." + p.panel.layer + ".E1", float(p.brdfE1)});
-      metadata.push_back({"glossy:error." + p.panel.layer + ".E2", float(p.brdfE2)});
+      metadata.push_back({error + ".E1", float(p.brdfE1)});
+      metadata.push_back({error + ".E2", float(p.brdfE2)});
     }
   }
   metadata.push_back({"glossy:panels", names});
   metadata.push_back({"glossy:panelSize", std::to_string(w) + "x" + std::to_string(h)});
-  metadata.push_back({"glossy:errors", sheet.hasMeasured() ? std::string("relativeRmse, luminanceRatio: against the measured panel, over the object's pixels; "
-                                                                       "E1, E2: the fit against the measured table on the grid ") + MetricGrid::describe()
-                                                           : std::string("none: no measured panel")});
+  metadata.push_back({"glossy:errors",
+                       sheet.hasMeasured()
+                           ? std::string("against the measured panel, over the object's pixels: relativeRmse with the render noise taken out "
+                                         "(cross-products of independent replicates), relativeRmseNoisy without, luminanceRatio; *Ci: 95 % "
+                                         "intervals; E1, E2: the fit against the measured table on the grid ") + MetricGrid::describe()
+                           : std::string("none: no measured panel")});
+  metadata.push_back({"glossy:verdict", verdictText(sheet)});
+  metadata.push_back({"glossy:replicates", sheet.replicates});
+  metadata.push_back({"glossy:passes", sheet.passes});
+  metadata.push_back({"glossy:objectShare", float(sheet.objectShare)});
   std::vector<ExrLayer> layers = {{"", &sheet.grid}};
   for (size_t k = 0; k < sheet.panels.size(); ++k) layers.push_back({sheet.panels[k].panel.layer, &placed[k]});
   writeLayeredExr(path, layers, metadata, type);
@@ -264,9 +331,14 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
     std::string second;
     if (p.empty)
       second = p.panel.fit.empty() ? "no MERL data (--merl-dir)" : "no fit";
-    else if (p.relativeRmse >= 0.0)
-      // Narrow panels get the figures without their names.
-      second = formatted(w >= 120 ? "rRMSE %.3f  lum x%.2f" : "%.3f x%.2f", p.relativeRmse, p.luminanceRatio);
+    else if (p.figures.hasCi)
+      // Narrow panels get the figures without their names. ASCII only: OpenImageIO's text drops the high
+      // bit of every byte, so "±" would come out as "1".
+      second = formatted(w >= 200 ? "rRMSE %.3f +/-%.3f  lum x%.2f" : "%.3f+/-%.3f x%.2f", p.figures.relativeRmse,
+                         p.figures.relativeRmseCi.halfWidth(), p.figures.luminanceRatio);
+    else if (p.figures.compared)
+      second = formatted(w >= 120 ? "rRMSE %.3f (noisy)  lum x%.2f" : "%.3f? x%.2f",
+                         p.figures.available ? p.figures.relativeRmse : p.figures.noisyRelativeRmse, p.figures.luminanceRatio);
     else if (!p.panel.fit.empty())
       second = "no measured panel";
     else
@@ -281,29 +353,65 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
   writeRgb8(path, w * n, h + strip, rgb);
 }
 
+// Above this share of noise in the plain figure's square, the intervals were seen to cover less than they
+// say (tests/sweep/sheet_coverage_sweep_test.cpp).
+constexpr double kNoiseDominates = 0.8;
+
+std::string verdictText(const Sheet& sheet) {
+  const std::vector<size_t>& models = sheet.verdict.models;
+  if (models.empty()) return sheet.verdict.why.empty() ? std::string("no verdict") : sheet.verdict.why;
+  std::string names;
+  for (size_t k : models) names.append(names.empty() ? "" : ", ").append(sheet.panels[k].panel.label);
+  return (models.size() == 1 ? "closest: " : "tie: ") + names;
+}
+
 std::string errorTable(const Sheet& sheet) {
   std::ostringstream s;
   s << sheet.material << ": ";
   const std::string note = sheet.measured() ? sheet.measured()->note : "none in the grid";
   if (sheet.hasMeasured())
-    s << "error of each model against the measured panel (" << note << "), over the object's pixels\n";
+    s << "error of each model against the measured panel (" << note << "), over the object's pixels, "
+      << formatted("%d spp in %d replicates", sheet.spp, sheet.replicates) << "\n";
   else
     s << "no measured panel (" << note << "), so no errors against it\n";
-  s << "  panel           spp   rel. RMSE   luminance ratio   BRDF E1   BRDF E2\n";
+  s << "  panel            rel. RMSE, noise-free [95 %]   luminance ratio [95 %]    noisy rRMSE   BRDF E1   BRDF E2\n";
+  bool clamped = false;
   for (const PanelRender& p : sheet.panels) {
-    if (p.empty)
-      s << formatted("  %-14s    -   %s\n", p.panel.label.c_str(), p.note.c_str());
-    else if (p.relativeRmse >= 0.0)
-      s << formatted("  %-14s %5d   %9.4f   %15.4f   %7.4f   %7.4f\n", p.panel.label.c_str(), p.spp, p.relativeRmse,
-                     p.luminanceRatio, p.brdfE1, p.brdfE2);
-    else
-      s << formatted("  %-14s %5d   %9s   %15s\n", p.panel.label.c_str(), p.spp, "-", "-");
+    const PanelFigures& f = p.figures;
+    if (p.empty) {
+      s << formatted("  %-14s   %s\n", p.panel.label.c_str(), p.note.c_str());
+      continue;
+    }
+    if (!f.compared) {
+      s << formatted("  %-14s   %s\n", p.panel.label.c_str(), p.panel.fit.empty() ? "(the reference)" : "-");
+      continue;
+    }
+    const std::string r = !f.available ? "-"
+                          : f.hasCi    ? formatted("%.4f [%.4f, %.4f]%s", f.relativeRmse, f.relativeRmseCi.lo, f.relativeRmseCi.hi,
+                                                   f.clamped ? "*" : "")
+                                       : formatted("%.4f%s", f.relativeRmse, f.clamped ? "*" : "");
+    const std::string l = f.hasCi ? formatted("%.4f [%.4f, %.4f]", f.luminanceRatio, f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)
+                                  : formatted("%.4f", f.luminanceRatio);
+    clamped = clamped || f.clamped;
+    s << formatted("  %-14s   %-29s  %-24s  %11.4f   %7.4f   %7.4f\n", p.panel.label.c_str(), r.c_str(), l.c_str(),
+                   f.noisyRelativeRmse, p.brdfE1, p.brdfE2);
   }
-  // Which model is closest: the smallest relative RMSE.
-  const PanelRender* best = nullptr;
+  if (clamped) s << "  * the estimate of the squared error came out negative (the model is within the noise): shown as 0\n";
+  // Where the noise swamps the error, a seed that misses the rare bright paths underestimates both the
+  // error and its spread (docs/sheets.md): say so rather than let a narrow interval pass for a precise one.
+  double noiseShare = 0.0;
   for (const PanelRender& p : sheet.panels)
-    if (p.relativeRmse >= 0.0 && (!best || p.relativeRmse < best->relativeRmse)) best = &p;
-  if (best) s << "  closest: " << best->panel.label << "\n";
+    if (p.figures.available && p.figures.noisyRelativeRmse > 0.0)
+      noiseShare = std::max(noiseShare, 1.0 - std::pow(p.figures.relativeRmse / p.figures.noisyRelativeRmse, 2.0));
+  if (noiseShare > kNoiseDominates)
+    s << formatted("  noise is up to %.0f %% of the noisy figure's square: the intervals may be too narrow; render more samples\n",
+                   100.0 * noiseShare);
+  if (sheet.skippedPixels > 0) s << "  " << sheet.skippedPixels << " object pixels left out: not finite in some panel\n";
+  if (sheet.hasMeasured()) {
+    s << "  " << verdictText(sheet);
+    if (sheet.verdict.models.size() > 1) s << " (not separated at 95 %: more samples, e.g. --target-error, may decide)";
+    s << "\n";
+  }
   return s.str();
 }
 

@@ -1,14 +1,21 @@
 // A material sheet: the supplement's comparison grid for one material —
 //   Measured | Microfacet E2 | Smooth E2 | AS E1 | AS E2 | CT E1 | CT E2
-// — every panel rendered with the same scene, camera, environment, seed and sample budget, and how close
-// each analytic panel comes to the measured one (relative RMSE over the object's pixels, mean luminance
-// ratio). The panels replace the material of the scene's object (the meshes whose glTF material binds a
-// glossy material; every non-emissive mesh when none does); the backdrop keeps its own.
+// — every panel rendered with the same scene, camera, environment, seed and samples, and how close each
+// analytic panel comes to the measured one over the object's pixels: the relative RMSE with the render
+// noise taken out and the luminance ratio, each with a 95 % interval, and the closest model when the
+// intervals say so (comparison.h). The panels replace the material of the scene's object (the meshes whose
+// glTF material binds a glossy material; every non-emissive mesh when none does); the backdrop keeps its
+// own. The panels are rendered together (renderPanels): one path per sample up to the object, where each
+// panel continues with its own BRDF.
+//
+// Samples come in kReplicates independent replicates per pixel, each its own sample pattern: the figures'
+// noise-free estimates and intervals are built from them. A panel's image is their mean.
 #pragma once
 
 #include "materials/merl/merl_table.h"
 #include "materials/params/material_file.h"
 #include "renderer/integrator/path_tracer.h"
+#include "renderer/sheet/comparison.h"
 
 #include <filesystem>
 #include <memory>
@@ -30,10 +37,16 @@ struct SheetPanel {
 // The supplement's comparison grid, the one list of it: Measured, then its six fits in its order.
 std::span<const SheetPanel> sheetPanels();
 
+constexpr int kReplicates = 4;
+
 struct SheetSettings {
   int width = 256, height = 256;  // per panel
-  int spp = 64;
-  double secondsPerPanel = 0.0;   // > 0: render progressively until this wall-clock budget is spent
+  int spp = 64;                   // per pixel, split evenly among the replicates (rounded up to fill them)
+  // > 0: render in passes until this wall-clock budget per panel (so × the panels rendered) is spent.
+  double secondsPerPanel = 0.0;
+  // > 0: render in passes until every analytic panel's relative-RMSE interval has at most this half-width,
+  // or until spp or the time budget caps it.
+  double targetError = 0.0;
   uint32_t seed = 0;
   int threads = 0;
   int maxDepth = 8;
@@ -57,12 +70,10 @@ SheetScene makeSheetScene(const SceneDescription& description, const EmbreeScene
 struct PanelRender {
   SheetPanel panel;
   bool empty = true;
-  std::string note;  // why a panel is empty, or where its data came from
-  RgbImage image;    // width × height; black when empty
-  int spp = 0;
-  double seconds = 0.0;
-  uint64_t droppedSamples = 0;
-  double relativeRmse = -1.0, luminanceRatio = -1.0;  // against the measured panel; < 0 when there is none
+  std::string note;                  // why a panel is empty, or where its data came from
+  RgbImage image;                    // width × height, the mean of the replicates; black when empty
+  std::vector<RgbImage> replicates;  // independent estimates of the image, each from spp / replicates samples
+  PanelFigures figures;              // against the measured panel (figures.compared false when there is none)
   double brdfE1 = -1.0, brdfE2 = -1.0;  // the fit's E1, E2 against the measured table (docs/fitting.md); < 0: none
 };
 
@@ -71,6 +82,14 @@ struct Sheet {
   std::vector<PanelRender> panels;  // in SheetSettings::panels order
   std::vector<char> objectMask;     // per panel pixel: the primary ray hits the object
   RgbImage grid;                    // the panels side by side, panels × width by height
+  int spp = 0;                      // per pixel, every panel alike
+  int replicates = 0;
+  int passes = 0;
+  double seconds = 0.0;             // rendering all panels
+  uint64_t droppedSamples = 0;      // non-finite samples, over all panels
+  double objectShare = 0.0;         // of the paths: reached the object, where the panels part ways
+  Verdict verdict;                  // indices into panels
+  size_t skippedPixels = 0;         // object pixels left out of the figures: not finite
   const PanelRender* measured() const;  // null when the grid has no measured panel
   bool hasMeasured() const { return measured() && !measured()->empty; }
 };
@@ -79,16 +98,14 @@ struct Sheet {
 Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::shared_ptr<const MerlTable> measured,
                   const std::string& measuredNote, const SheetSettings& settings);
 
-// ‖panel − reference‖ / ‖reference‖ over the masked pixels and all three channels; and Σ lum(panel) / Σ lum(reference).
-double relativeRmse(const RgbImage& panel, const RgbImage& reference, const std::vector<char>& mask);
-double luminanceRatio(const RgbImage& panel, const RgbImage& reference, const std::vector<char>& mask);
-
 // The EXR: default RGB layer = the grid; layer <panel>.R/G/B = that panel at its place in the grid (black
-// elsewhere: EXR layers share one size); glossy:* metadata including each panel's box, spp and errors.
+// elsewhere: EXR layers share one size); glossy:* metadata including each panel's box and figures.
 void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::vector<ImageAttribute> metadata, PixelType type);
 // The preview: panels × 2^exposure, sRGB, with a label strip under each (name, error figures or why it is
 // empty). fontPath empty: OIIO's default font search.
 void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double exposure, const std::string& fontPath);
+// "closest: Smooth E2", "tie: Smooth E2, Microfacet E2" or why there is no verdict.
+std::string verdictText(const Sheet& sheet);
 // The error table for stdout.
 std::string errorTable(const Sheet& sheet);
 
