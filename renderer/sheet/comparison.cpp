@@ -38,14 +38,15 @@ double twoSidedQuantile(double confidence) {
 struct Totals {
   size_t series;
   std::vector<double> u;         // Σ U: B, then each A
-  std::vector<double> uCov;      // Σ Cov(U_s, U_t), series × series (K ≥ 4)
+  std::vector<double> ratioVar;  // Σ Var((U_s − R_s U_0) / B) per pixel, clamped at 0 (K ≥ 4, second pass)
+  std::vector<double> diffVar;   // Σ Var(U_s − U_t) per pixel, clamped at 0, series × series (likewise)
   std::vector<double> squared;   // Σ |m̄|², then each Σ |p̄ − m̄|²
   std::vector<double> lum;       // Σ lum(m̄), then each Σ lum(p̄)
   std::vector<double> lumVar;    // Σ Var lum(·̄), in the same order
   std::vector<double> lumCov;    // Σ Cov(lum(·̄), lum(m̄)), in the same order
   explicit Totals(size_t s)
-      : series(s), u(s), uCov(s * s), squared(s), lum(s), lumVar(s), lumCov(s) {}
-  double cov(size_t s, size_t t) const { return uCov[s * series + t]; }
+      : series(s), u(s), ratioVar(s), diffVar(s * s), squared(s), lum(s), lumVar(s), lumCov(s) {}
+  double diff(size_t s, size_t t) const { return diffVar[s * series + t]; }
 };
 
 // One pixel: x(s, j) is series s in replicate j (measured value or difference), l(s, j) the luminance of
@@ -63,12 +64,29 @@ class PixelReplicates {
     });
   }
 
+  // First pass: the means and the U-statistics.
   void addTo(Totals& t) {
     addMeans(t);
     if (k_ < 2) return;
-    addUStatistics(t);
-    if (k_ < 4) return;
-    addUCovariances(t);
+    computeUStatistics();
+    for (size_t s = 0; s < series_; ++s) t.u[s] += u_[s];
+  }
+
+  // Second pass, once the totals give each ratio R_s = A_s / B (K ≥ 4): the variances the intervals and
+  // the verdict need, each a quadratic form of the pixel's covariance estimate, added to the pixel's block
+  // (block: its ratioVar and diffVar, laid out as Totals').
+  void addVariances(const Totals& t, double* ratioVar, double* diffVar) {
+    computeUStatistics();
+    const double b = t.u[0];
+    for (size_t s = 1; s < series_; ++s) {
+      const double r = t.u[s] / b;
+      ratioVar[s] += (cov(s, s) - 2.0 * r * cov(s, 0) + r * r * cov(0, 0)) / (b * b);
+      for (size_t q = s + 1; q < series_; ++q) {
+        const double v = cov(s, s) + cov(q, q) - 2.0 * cov(s, q);
+        diffVar[s * series_ + q] += v;
+        diffVar[q * series_ + s] += v;
+      }
+    }
   }
 
  private:
@@ -99,7 +117,7 @@ class PixelReplicates {
   }
 
   // U_s = Σ_{j≠k} x_j · x_k / (K (K − 1)), from the Gram matrix of the replicates, kept for the covariances.
-  void addUStatistics(Totals& t) {
+  void computeUStatistics() {
     const double k = k_;
     for (size_t s = 0; s < series_; ++s) {
       total_[s] = 0.0;
@@ -113,7 +131,6 @@ class PixelReplicates {
         total_[s] += row;
       }
       u_[s] = total_[s] / (k * (k - 1.0));
-      t.u[s] += u_[s];
     }
   }
 
@@ -121,24 +138,20 @@ class PixelReplicates {
   // K (K − 1) (K − 2) (K − 3) ordered quadruples of distinct replicates. With F_a = Σ_{b≠a} f(a, b) and
   // F = Σ_a F_a, their sum is F G − 4 Σ_a F_a G_a + 2 Σ_{a≠b} f(a, b) g(a, b): all ordered pairs of pairs,
   // less those sharing a replicate.
-  void addUCovariances(Totals& t) {
+  double cov(size_t s, size_t r) const {
     const double k = k_, quadruples = k * (k - 1.0) * (k - 2.0) * (k - 3.0);
-    for (size_t s = 0; s < series_; ++s)
-      for (size_t r = s; r < series_; ++r) {
-        double rows = 0.0, pairs = 0.0;
-        for (int a = 0; a < k_; ++a) {
-          rows += rowSum_[s * k_ + a] * rowSum_[r * k_ + a];
-          for (int b = 0; b < k_; ++b)
-            if (b != a) pairs += gram(s, a, b) * gram(r, a, b);
-        }
-        const double products = total_[s] * total_[r] - 4.0 * rows + 2.0 * pairs;
-        const double cov = u_[s] * u_[r] - products / quadruples;
-        t.uCov[s * series_ + r] += cov;
-        if (r != s) t.uCov[r * series_ + s] += cov;
-      }
+    double rows = 0.0, pairs = 0.0;
+    for (int a = 0; a < k_; ++a) {
+      rows += rowSum_[s * k_ + a] * rowSum_[r * k_ + a];
+      for (int b = 0; b < k_; ++b)
+        if (b != a) pairs += gram(s, a, b) * gram(r, a, b);
+    }
+    const double products = total_[s] * total_[r] - 4.0 * rows + 2.0 * pairs;
+    return u_[s] * u_[r] - products / quadruples;
   }
 
   double& gram(size_t s, int j, int i) { return gram_[(s * k_ + j) * k_ + i]; }
+  double gram(size_t s, int j, int i) const { return gram_[(s * k_ + j) * k_ + i]; }
 
   size_t series_;
   int k_;
@@ -146,6 +159,9 @@ class PixelReplicates {
   std::vector<double> l_;
   std::vector<double> gram_, rowSum_, total_, u_;
 };
+
+// Blocks of kBlock × kBlock pixels, over which the variance estimates are summed before they are clamped.
+constexpr size_t kBlock = 16;
 
 std::string percent(double confidence) {
   std::ostringstream s;
@@ -169,7 +185,7 @@ Verdict decide(const Comparison& out, const std::vector<size_t>& fitted, const T
   for (size_t f = 0; f < fitted.size(); ++f) {
     if (f == best) continue;
     const size_t q = 1 + f, b = 1 + best;
-    const double sd = std::sqrt(std::max(0.0, t.cov(q, q) + t.cov(b, b) - 2.0 * t.cov(q, b)));
+    const double sd = std::sqrt(t.diff(q, b));
     if (!(t.u[q] - t.u[b] > z * sd)) tied.push_back(f);
   }
   std::sort(tied.begin() + 1, tied.end(), [&](size_t f, size_t g) { return t.u[1 + f] < t.u[1 + g]; });
@@ -230,25 +246,47 @@ Comparison compareToMeasured(const std::vector<std::vector<RgbImage>>& panels, c
     return Rgb3{image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]};
   };
   const auto lum = [](const Rgb3& v) { return luminance(Rgb(v[0], v[1], v[2])); };
-  for (size_t i = 0; i < mask.size(); ++i) {
-    if (!mask[i]) continue;
-    for (int j = 0; j < k; ++j) {
-      const Rgb3 m = rgb(measured[j], i);
-      pixel.x(0, j) = m;
-      pixel.l(0, j) = lum(m);
-      for (size_t f = 0; f < fitted.size(); ++f) {
-        const Rgb3 p = rgb(panels[fitted[f]][j], i);
-        pixel.x(1 + f, j) = {p[0] - m[0], p[1] - m[1], p[2] - m[2]};
-        pixel.l(1 + f, j) = lum(p);
+  // Each compared pixel's replicates into `pixel`, then f(i); skipped pixels counted on the first pass.
+  const auto forEachPixel = [&](bool first, auto&& f) {
+    for (size_t i = 0; i < mask.size(); ++i) {
+      if (!mask[i]) continue;
+      for (int j = 0; j < k; ++j) {
+        const Rgb3 m = rgb(measured[j], i);
+        pixel.x(0, j) = m;
+        pixel.l(0, j) = lum(m);
+        for (size_t f = 0; f < fitted.size(); ++f) {
+          const Rgb3 p = rgb(panels[fitted[f]][j], i);
+          pixel.x(1 + f, j) = {p[0] - m[0], p[1] - m[1], p[2] - m[2]};
+          pixel.l(1 + f, j) = lum(p);
+        }
       }
+      // Finite floats give finite differences, products and sums in double: checking the inputs suffices.
+      if (!pixel.finite()) {
+        if (first) ++out.skippedPixels;
+        continue;
+      }
+      if (first) ++out.pixels;
+      f(i);
     }
-    // Finite floats give finite differences, products and sums in double: checking the inputs suffices.
-    if (!pixel.finite()) {
-      ++out.skippedPixels;
-      continue;
+  };
+  forEachPixel(true, [&](size_t) { pixel.addTo(totals); });
+  if (k >= 4 && totals.u[0] > 0.0) {
+    // The variances are summed per block of kBlock² pixels, each block's clamped at 0. The per-pixel
+    // estimate is unbiased but not always positive semi-definite: one bright outlier among a pixel's
+    // replicates can make a form hugely negative and cancel the spread of every other pixel (seen as
+    // zero-width intervals). A block's sum averages out the ordinary sign flips of noise-dominated pixels,
+    // which a per-pixel clamp would turn into a large overstatement, and confines an outlier to its block.
+    const int width = measured.front().width, blocksX = (width + kBlock - 1) / kBlock;
+    const size_t height = mask.size() / size_t(std::max(width, 1)), blocks = size_t(blocksX) * ((height + kBlock - 1) / kBlock);
+    std::vector<double> ratioVar(blocks * series), diffVar(blocks * series * series);
+    forEachPixel(false, [&](size_t i) {
+      const size_t block = (i / size_t(width)) / kBlock * size_t(blocksX) + (i % size_t(width)) / kBlock;
+      pixel.addVariances(totals, &ratioVar[block * series], &diffVar[block * series * series]);
+    });
+    for (size_t b = 0; b < blocks; ++b) {
+      for (size_t s = 0; s < series; ++s) totals.ratioVar[s] += std::max(0.0, ratioVar[b * series + s]);
+      for (size_t e = 0; e < series * series; ++e) totals.diffVar[e] += std::max(0.0, diffVar[b * series * series + e]);
     }
-    ++out.pixels;
-    pixel.addTo(totals);
   }
 
   const double z = twoSidedQuantile(confidence);
@@ -272,9 +310,7 @@ Comparison compareToMeasured(const std::vector<std::vector<RgbImage>>& panels, c
 
     fig.hasCi = k >= 4;
     if (!fig.hasCi) continue;
-    const double varRatio = (totals.cov(s, s) - 2.0 * ratio * totals.cov(s, 0) + ratio * ratio * totals.cov(0, 0)) / (b * b);
-    // An unbiased variance estimate can come out negative where the true variance is tiny: a point interval.
-    const double halfRatio = z * std::sqrt(std::max(0.0, varRatio));
+    const double halfRatio = z * std::sqrt(totals.ratioVar[s]);
     fig.relativeRmseCi = {std::sqrt(std::max(0.0, ratio - halfRatio)), std::sqrt(std::max(0.0, ratio + halfRatio))};
     const double l = fig.luminanceRatio, lumTotal = totals.lum[0];
     const double varL = (totals.lumVar[s] - 2.0 * l * totals.lumCov[s] + l * l * totals.lumVar[0]) / (lumTotal * lumTotal);

@@ -18,7 +18,10 @@
 // which needs K ≥ 4. The delete-one-replicate jackknife would work from K = 3 but overstates the part of the
 // variance that is pure noise (the σ⁴ term) by 2 (K − 1) / (K − 2), threefold at K = 4: where the noise of
 // a pixel is comparable to its error or larger, as in a sheet at moderate sample counts, its 95 % intervals
-// cover about 99 %.
+// cover about 99 %. That unbiased estimate is not always positive semi-definite: one bright outlier among a
+// pixel's replicates can make a variance hugely negative and cancel the spread of every other pixel. So the
+// variance each interval and each verdict comparison needs is summed over 16 × 16-pixel blocks and each
+// block's sum clamped at 0 (comparison.cpp says why blocks), which can only widen the intervals.
 // Intervals follow by the delta method on the ratios (R = A / B: Var R ≈ (Var A − 2R Cov(A, B) + R² Var B) / B²;
 // the r* interval is the square root of R's, clamped at 0, so it is asymmetric).
 //

@@ -28,6 +28,19 @@ float srgbEncode(double v) {
   return float(v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055);
 }
 
+// Above this share of noise in the plain figure's square, the intervals were seen to cover less than they
+// say: where the noise swamps the error, a seed that misses the rare bright paths underestimates both the
+// error and its spread (tests/sweep/sheet_coverage_sweep_test.cpp, docs/sheets.md).
+constexpr double kNoiseDominates = 0.8;
+
+// The largest share of noise in a model's plain figure's square: 1 − r*² / noisy².
+double noiseShare(const std::vector<PanelFigures>& figures) {
+  double share = 0.0;
+  for (const PanelFigures& f : figures)
+    if (f.available && f.noisyRelativeRmse > 0.0) share = std::max(share, 1.0 - std::pow(f.relativeRmse / f.noisyRelativeRmse, 2.0));
+  return share;
+}
+
 // The replicates' sample counts, pass after pass: fixed (one pass), equal time (1, 2, 4, … per replicate
 // until the next would overrun the budget) or a target error (as many as the intervals' widths say).
 class PassPlan {
@@ -37,15 +50,17 @@ class PassPlan {
         budget_(s.secondsPerPanel * panelsRendered) {}
   int replicates() const { return replicates_; }
 
-  // Samples per replicate of the next pass, given those done and the figures so far; 0: stop.
-  int next(int done, double seconds, double lastPassSeconds, double widest) {
+  // Samples per replicate of the next pass, given those done and the figures so far (their widest interval,
+  // and whether noise dominates them); 0: stop.
+  int next(int done, double seconds, double lastPassSeconds, double widest, bool noisy) {
     const int cap = (s_.spp + replicates_ - 1) / replicates_;
     if (s_.targetError > 0.0) {
       if (done == 0) return std::min(cap, 4);
       // No interval to refine (no measured panel, or it is black over the object): nothing to aim at.
-      if (!std::isfinite(widest) || widest <= s_.targetError || done >= cap) return 0;
-      // Half-widths shrink as 1/√samples: aim a little past the estimate, at most quadrupling.
-      const double ratio = widest / s_.targetError;
+      if (!std::isfinite(widest) || (widest <= s_.targetError && !noisy) || done >= cap) return 0;
+      // Half-widths shrink as 1/√samples: aim a little past the estimate, at most quadrupling; while noise
+      // dominates, a narrow interval is not yet to be trusted, so double.
+      const double ratio = std::max(widest / s_.targetError, noisy ? std::sqrt(2.0) : 0.0);
       const double wanted = std::min(4.0 * done, std::ceil(1.1 * done * ratio * ratio));
       int n = std::clamp(int(wanted) - done, 1, cap - done);
       if (budget_ > 0.0) {
@@ -178,6 +193,9 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
   uint64_t objectPaths = 0;
   double lastPass = 0.0, widest = std::numeric_limits<double>::infinity();
   Comparison figures;
+  // Noise dominates below 64 spp (where the intervals were shown to hold): a model that matches the measured
+  // panel keeps a noise share near 1 at any spp, which must not keep the passes going for ever.
+  const auto noisy = [&] { return sheet.replicates * done < 64 && noiseShare(figures.panels) > kNoiseDominates; };
   const auto compare = [&] {
     std::vector<std::vector<RgbImage>> analytic;
     const PanelRender* m = sheet.measured();
@@ -186,7 +204,7 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     figures = m && !m->empty ? compareToMeasured(analytic, m->replicates, sheet.objectMask) : Comparison{};
     widest = figures.widestHalfWidth();
   };
-  for (int n; !scenes.empty() && (n = plan.next(done, sheet.seconds, lastPass, widest)) > 0;) {
+  for (int n; !scenes.empty() && (n = plan.next(done, sheet.seconds, lastPass, widest, noisy())) > 0;) {
     const auto passStart = std::chrono::steady_clock::now();
     for (int j = 0; j < sheet.replicates; ++j) {
       RenderSettings r{.width = w, .height = h, .spp = n, .firstSample = sheet.replicates * done + j * n,
@@ -353,10 +371,6 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
   writeRgb8(path, w * n, h + strip, rgb);
 }
 
-// Above this share of noise in the plain figure's square, the intervals were seen to cover less than they
-// say (tests/sweep/sheet_coverage_sweep_test.cpp).
-constexpr double kNoiseDominates = 0.8;
-
 std::string verdictText(const Sheet& sheet) {
   const std::vector<size_t>& models = sheet.verdict.models;
   if (models.empty()) return sheet.verdict.why.empty() ? std::string("no verdict") : sheet.verdict.why;
@@ -397,15 +411,12 @@ std::string errorTable(const Sheet& sheet) {
                    f.noisyRelativeRmse, p.brdfE1, p.brdfE2);
   }
   if (clamped) s << "  * the estimate of the squared error came out negative (the model is within the noise): shown as 0\n";
-  // Where the noise swamps the error, a seed that misses the rare bright paths underestimates both the
-  // error and its spread (docs/sheets.md): say so rather than let a narrow interval pass for a precise one.
-  double noiseShare = 0.0;
-  for (const PanelRender& p : sheet.panels)
-    if (p.figures.available && p.figures.noisyRelativeRmse > 0.0)
-      noiseShare = std::max(noiseShare, 1.0 - std::pow(p.figures.relativeRmse / p.figures.noisyRelativeRmse, 2.0));
-  if (noiseShare > kNoiseDominates)
+  // Say so rather than let a narrow interval pass for a precise one.
+  std::vector<PanelFigures> figures;
+  for (const PanelRender& p : sheet.panels) figures.push_back(p.figures);
+  if (const double share = noiseShare(figures); share > kNoiseDominates)
     s << formatted("  noise is up to %.0f %% of the noisy figure's square: the intervals may be too narrow; render more samples\n",
-                   100.0 * noiseShare);
+                   100.0 * share);
   if (sheet.skippedPixels > 0) s << "  " << sheet.skippedPixels << " object pixels left out: not finite in some panel\n";
   if (sheet.hasMeasured()) {
     s << "  " << verdictText(sheet);

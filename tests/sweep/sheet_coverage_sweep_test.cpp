@@ -4,7 +4,7 @@
 // seeds name a model the converged sheet does not rank first. About 2 minutes on 2 cores.
 //
 // At 16 spp, where the noise is 2.5 times the error it hides, two of the six models' intervals cover only
-// 82–86 % (docs/sheets.md says why); the figures are meant for the default spp and above.
+// 87–89 % (docs/sheets.md says why, and the sheet's table warns there).
 #include "renderer/sheet/sheet.h"
 #include "tests/support/test_support.h"
 
