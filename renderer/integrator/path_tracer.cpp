@@ -124,7 +124,8 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
             }
           }
           auto pixelCorner = [&](int i) { return Vec2(x0 + lanePixel[i] % tileWidth, y0 + lanePixel[i] / tileWidth); };
-          for (int i = 0; i < kWaveSize; ++i) stops[size_t(i)].depth = 0;
+          if (stop)
+            for (int i = 0; i < kWaveSize; ++i) stops[size_t(i)].depth = 0;
           if (settings.reference) {
             for (int i = 0; i < lanes; ++i) {
               const Ray ray = cameraRays(pixelCorner(i) + samplers[i].get2D());
@@ -141,7 +142,7 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
           }
           for (int i = 0; i < lanes; ++i) {
             const ObjectVertex& v = stops[size_t(i)];
-            if (v.depth == 0) {
+            if (!stop || v.depth == 0) {
               // Never met the object: the same path in every panel.
               for (size_t p = 0; p < panelCount; ++p) add(p, lanePixel[i], radiance[i], size_t(count));
               continue;
