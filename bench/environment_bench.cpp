@@ -3,12 +3,12 @@
 // random directions (escaping BSDF rays). Prints the median of RUNS timings of each; asserts nothing.
 // The batch forms are timed per lane, in batches of 8 (a packet) and 64 (a wave).
 // The inputs are made before the clock starts, so only the calls are timed.
+#include "bench/timing.h"
 #include "renderer/lights/environment.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -37,15 +37,7 @@ std::vector<Vec2> sobolPoints(std::size_t n, std::mt19937_64& rng) {
 
 template <class F>
 double nsPerCall(std::size_t calls, F&& f) {
-  const auto start = std::chrono::steady_clock::now();
-  f();
-  const auto seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return seconds * 1e9 / double(calls);
-}
-
-double median(std::vector<double> x) {
-  std::sort(x.begin(), x.end());
-  return x[x.size() / 2];
+  return bench::seconds(f) * 1e9 / double(calls);
 }
 
 }  // namespace
@@ -168,7 +160,7 @@ int main(int argc, char** argv) {
 
   std::printf("| call | ns/call (median) | min | max |\n|---|---|---|---|\n");
   for (const Row& row : rows)
-    std::printf("| %s | %.1f | %.1f | %.1f |\n", row.name, median(row.ns), *std::min_element(row.ns.begin(), row.ns.end()),
+    std::printf("| %s | %.1f | %.1f | %.1f |\n", row.name, bench::median(row.ns), *std::min_element(row.ns.begin(), row.ns.end()),
                 *std::max_element(row.ns.begin(), row.ns.end()));
   std::printf("(checksum %.6g)\n", sink);
   return 0;

@@ -1,10 +1,10 @@
-// What the throughput benchmarks share: a recorder that keeps every query a render makes, the median of
-// timed runs, and the replay of the recorded rays through raw Embree alone — either one ray at a time
+// What the throughput benchmarks share: a recorder that keeps every query a render makes, and the replay of the recorded rays through raw Embree alone — either one ray at a time
 // (rtcIntersect1 / rtcOccluded1: Embree's basic rate on these rays) or grouped exactly as the path tracer
 // grouped them (rtcIntersect8 / rtcOccluded8 for its packets: the raw cost of its own calls). Rendering
 // is deterministic, so a timed render casts exactly the recorded rays.
 #pragma once
 
+#include "bench/timing.h"
 #include "renderer/scene/embree_scene.h"
 
 #include <tbb/blocked_range.h>
@@ -13,7 +13,6 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
 namespace glossy::bench {
@@ -69,18 +68,6 @@ class Recorder : public RayRecorder {
  private:
   tbb::enumerable_thread_specific<std::vector<RecordedQuery>> local_;
 };
-
-template <class F>
-double medianSeconds(int runs, F&& f) {
-  std::vector<double> t;
-  for (int i = 0; i < runs; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    f();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
 
 namespace detail {
 

@@ -4,31 +4,16 @@
 // and at 64 spp in one pass (the sheet before panels shared their paths). Rendering time only (renderSheet
 // also computes the object mask, the fits' BRDF errors and the figures: printed beside). Interleaved
 // rounds, medians.
+#include "bench/timing.h"
 #include "materials/merl/merl_table.h"
 #include "renderer/sheet/sheet.h"
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 
 using namespace glossy;
-
-namespace {
-
-double seconds(auto&& f) {
-  const auto start = std::chrono::steady_clock::now();
-  f();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-}  // namespace
+using namespace glossy::bench;
 
 int main(int argc, char** argv) {
   CLI::App app{"sheet_cost: a sheet's panels rendered together against one by one"};
@@ -67,14 +52,10 @@ int main(int argc, char** argv) {
 
   // One panel alone, as `glossy render` would: its BRDF on the object.
   const auto solo = [&](const Brdf& brdf, int passSpp, int firstSample) {
-    std::vector<Brdf> b = scene.baseBrdfs;
-    for (size_t k = 0; k < b.size(); ++k)
-      if (scene.isObject[k]) b[k] = brdf;
-    const RenderScene rs{&description, &bvh, std::move(b), brdf, &environment};
     RenderSettings r{.width = size, .height = size, .spp = passSpp, .firstSample = firstSample, .maxDepth = settings.maxDepth,
                      .seed = 0, .threads = threads, .progress = false};
     RenderStats stats;
-    render(rs, camera, r, stats);
+    render(scene.withObject(brdf), camera, r, stats);
   };
 
   std::vector<double> together, whole, apart, apartOnePass;

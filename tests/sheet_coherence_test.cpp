@@ -18,15 +18,7 @@ struct Stage {
   Environment environment = Environment::makeDefault();
   SheetScene sheet = makeSheetScene(description, bvh, environment, description.cameras.front());
 
-  // The scene with `brdf` on the object, as renderSheet builds it.
-  RenderScene withObject(const Brdf& brdf) const {
-    std::vector<bool> objectMeshes;
-    for (const Mesh& mesh : description.meshes) objectMeshes.push_back(mesh.material < 0 || sheet.isObject[size_t(mesh.material)]);
-    std::vector<Brdf> brdfs = sheet.baseBrdfs;
-    for (size_t m = 0; m < brdfs.size(); ++m)
-      if (sheet.isObject[m]) brdfs[m] = brdf;
-    return {&description, &bvh, std::move(brdfs), brdf, &environment, objectMeshes};
-  }
+  RenderScene withObject(const Brdf& brdf) const { return sheet.withObject(brdf); }
 };
 const Stage& stage() {
   static const Stage s;

@@ -1,11 +1,14 @@
 // Each subcommand registers its options on the parent CLI11 app and returns how to run it.
 #pragma once
 
+#include "materials/core/text.h"
+
 #include <CLI/CLI.hpp>
 
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,9 +32,8 @@ Command addSheetsCommand(CLI::App& parent);
 // A number > 0 and finite (CLI::PositiveNumber lets "inf" through, and an infinite budget never ends).
 inline const CLI::Validator kFinitePositive(
     [](std::string& text) {
-      double v = 0.0;
-      return CLI::detail::lexical_cast(text, v) && std::isfinite(v) && v > 0.0 ? std::string()
-                                                                               : "must be a finite number > 0, not '" + text + "'";
+      const std::optional<double> v = parseNumber(text);
+      return v && std::isfinite(*v) && *v > 0.0 ? std::string() : "must be a finite number > 0, not '" + text + "'";
     },
     "FINITE > 0");
 

@@ -61,6 +61,7 @@ Rgb tracePath(const PathContext& context, Ray ray, CmjSampler& sampler) {
 
 bool traceToObject(const PathContext& context, Ray ray, CmjSampler& sampler, Rgb& radiance, ObjectVertex& vertex) {
   radiance = Rgb(0.0);
+  vertex.depth = 0;
   PathState path;
   path.from = ray.origin;
   return walk(context, ray, sampler, path, 1, radiance, &vertex);

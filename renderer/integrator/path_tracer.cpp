@@ -124,8 +124,6 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
             }
           }
           auto pixelCorner = [&](int i) { return Vec2(x0 + lanePixel[i] % tileWidth, y0 + lanePixel[i] / tileWidth); };
-          if (stop)
-            for (int i = 0; i < kWaveSize; ++i) stops[size_t(i)].depth = 0;
           if (settings.reference) {
             for (int i = 0; i < lanes; ++i) {
               const Ray ray = cameraRays(pixelCorner(i) + samplers[i].get2D());

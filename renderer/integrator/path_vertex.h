@@ -232,7 +232,7 @@ struct ObjectVertex {
 // position.
 Rgb tracePath(const PathContext& context, Ray ray, CmjSampler& sampler);
 // The same, but a path that reaches the object stops there (returning true, the radiance so far in
-// vertex.radiance); continueFromObject then finishes it for a panel, whose context differs only in the
+// vertex.radiance; vertex.depth is 0 when it did not stop); continueFromObject then finishes it for a panel, whose context differs only in the
 // object's BRDF. The two make exactly tracePath's radiance.
 bool traceToObject(const PathContext& context, Ray ray, CmjSampler& sampler, Rgb& radiance, ObjectVertex& vertex);
 Rgb continueFromObject(const PathContext& panel, ObjectVertex vertex);

@@ -20,8 +20,6 @@ namespace glossy {
 
 namespace {
 
-double luminance(const float* p) { return glossy::luminance(Rgb(p[0], p[1], p[2])); }
-
 // sRGB transfer function (IEC 61966-2-1) of a linear value, clamped to [0, 1].
 float srgbEncode(double v) {
   v = std::clamp(v, 0.0, 1.0);
@@ -126,12 +124,21 @@ const PanelRender* Sheet::measured() const {
 
 SheetScene makeSheetScene(const SceneDescription& description, const EmbreeScene& bvh,
                           const Environment& environment, const Camera& camera) {
-  SheetScene s{&description, &bvh, &environment, &camera, bindMaterials(description, std::nullopt).brdfs, {}};
+  SheetScene s{&description, &bvh, &environment, &camera, bindMaterials(description, std::nullopt).brdfs, {}, {}};
   bool anyBound = false;
   for (const SceneMaterial& m : description.materials) anyBound = anyBound || !m.glossyMaterial.empty();
   for (const SceneMaterial& m : description.materials)
     s.isObject.push_back(!m.isEmissive() && (anyBound ? !m.glossyMaterial.empty() : true));
+  for (const Mesh& mesh : description.meshes) s.objectMeshes.push_back(mesh.material < 0 || s.isObject[size_t(mesh.material)]);
   return s;
+}
+
+RenderScene SheetScene::withObject(const Brdf& brdf) const {
+  std::vector<Brdf> brdfs = baseBrdfs;
+  for (size_t m = 0; m < brdfs.size(); ++m)
+    if (isObject[m]) brdfs[m] = brdf;
+  // A mesh without a material renders with the default BRDF: the object's too.
+  return {description, bvh, std::move(brdfs), brdf, environment, objectMeshes};
 }
 
 Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::shared_ptr<const MerlTable> measured,
@@ -145,8 +152,7 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     for (int x = 0; x < w; ++x) {
       Hit hit;
       const bool seen = scene.bvh->intersect(cameraRay(*scene.camera, w, h, Vec2(x + 0.5, y + 0.5)), hit);
-      const int m = seen ? scene.description->meshes[hit.mesh].material : -1;
-      sheet.objectMask[size_t(y) * w + x] = seen && (m < 0 || scene.isObject[size_t(m)]);
+      sheet.objectMask[size_t(y) * w + x] = seen && scene.objectMeshes[hit.mesh];
     }
 
   // The BRDF-space errors beside the image-space ones: the same E1/E2 as `glossy error`.
@@ -154,8 +160,6 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
   if (measured) e1.emplace(*measured, Metric::E1), e2.emplace(*measured, Metric::E2);
 
   // Each panel with a BRDF becomes a scene that differs from the others only on the object.
-  std::vector<bool> objectMeshes;
-  for (const Mesh& mesh : scene.description->meshes) objectMeshes.push_back(mesh.material < 0 || scene.isObject[size_t(mesh.material)]);
   std::vector<RenderScene> scenes;
   std::vector<size_t> rendered;  // the panel of each scene
   for (const SheetPanel& panel : settings.panels) {
@@ -174,10 +178,7 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     r.image = RgbImage(w, h);
     if (brdf) {
       r.empty = false;
-      std::vector<Brdf> brdfs = scene.baseBrdfs;
-      for (size_t m = 0; m < brdfs.size(); ++m)
-        if (scene.isObject[m]) brdfs[m] = *brdf;
-      scenes.push_back({scene.description, scene.bvh, std::move(brdfs), *brdf, scene.environment, objectMeshes});
+      scenes.push_back(scene.withObject(*brdf));
       rendered.push_back(sheet.panels.size());
     }
     sheet.panels.push_back(std::move(r));

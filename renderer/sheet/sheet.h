@@ -62,6 +62,10 @@ struct SheetScene {
   const Camera* camera;
   std::vector<Brdf> baseBrdfs;      // per scene material, as the scene binds them
   std::vector<bool> isObject;       // per scene material: replaced by each panel's BRDF
+  std::vector<bool> objectMeshes;   // per mesh: its material is the object's (or it has none)
+
+  // The scene of a panel: `brdf` on the object, the backdrop as bound.
+  RenderScene withObject(const Brdf& brdf) const;
 };
 // The object: materials with an extras.glossy binding, else every non-emissive one.
 SheetScene makeSheetScene(const SceneDescription& description, const EmbreeScene& bvh,
