@@ -4,6 +4,7 @@
 
 #include "renderer/camera/camera_rays.h"
 #include "renderer/integrator/path_vertex.h"
+#include "renderer/integrator/shared_draws.h"
 #include "renderer/util/progress.h"
 
 #include <tbb/blocked_range2d.h>
@@ -65,8 +66,10 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
     Rgb radiance[kWaveSize], resumed[kWaveSize];
     int lanePixel[kWaveSize];  // which of the tile's pixels each lane samples
     Vec2 film[kWaveSize];
+    SharedDraws shared(settings.maxDepth);
     std::vector<std::unique_ptr<WaveTracer>> waves;
-    for (const PathContext& context : contexts) waves.push_back(std::make_unique<WaveTracer>(context));
+    for (const PathContext& context : contexts)
+      waves.push_back(std::make_unique<WaveTracer>(context, stop ? &shared : nullptr));
     auto stops = std::make_unique<ObjectVertex[]>(kWaveSize);
     // Paths stopped at the object, by depth, waiting to continue in every panel a wave at a time (a wave
     // advances its lanes one depth at a time).

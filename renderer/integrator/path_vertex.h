@@ -28,6 +28,7 @@ struct PathContext {
 // light has all the power, roulette before rouletteDepth) is skipped, not computed: a value depends only on
 // its dimension's index, so skipping gives every other dimension what drawing would.
 struct VertexDraws {
+  static constexpr uint32_t kDimensions = 5;  // what drawVertex takes of the sampler
   double lightChoice = 0.0;  // which light (LightSet::choose)
   Vec2 light{0.0};           // where on it (Light::sample)
   double lobe = 0.0;         // which of the BRDF's lobes
@@ -244,24 +245,28 @@ struct Lanes {
   void add(int i) { lane[n++] = i; }
 };
 
+class SharedDraws;
+
 // tracePath for up to kWaveSize camera rays at once: radiance[i] for the lanes with start[i]. With stops,
 // traceToObject instead: a lane whose path reaches the object stops there, stops[i] its vertex (depth 0 for
 // the others). continueFromObject for n vertices of one depth: resume. Its lanes' state lives in the
-// tracer, made once per thread and reused, as it is too large to clear per wave.
+// tracer, made once per thread and reused, as it is too large to clear per wave. The panels' tracers of a
+// thread may share a SharedDraws (shared_draws.h), which resume then uses.
 class WaveTracer {
  public:
-  explicit WaveTracer(const PathContext& context) : context_(context) {}
+  explicit WaveTracer(const PathContext& context, SharedDraws* shared = nullptr) : context_(context), shared_(shared) {}
   void trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* radiance, ObjectVertex* stops = nullptr);
   void resume(const ObjectVertex* vertices, int n, Rgb* radiance);
 
  private:
   void walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, Rgb* radiance, ObjectVertex* stops);
-  void sampleLights(const Lanes& lanes);
+  void sampleLights(int depth, const Lanes& lanes, SharedDraws* shared);
   void reflectAll(int depth, const Lanes& lanes, Ray* rays, bool* alive, Rgb* radiance);
   void sampleBrdf(const Brdf& brdf, const int* lanes, int n);
   void evalBrdf(const Brdf& brdf, const int* lanes, int n);
 
   const PathContext& context_;
+  SharedDraws* shared_;
   PathState path_[kWaveSize];
   Hit hit_[kWaveSize];
   bool found_[kWaveSize];

@@ -5,6 +5,7 @@
 // across lanes. Every lane takes the steps the reference takes, in its order, with the same draws, so
 // each lane's radiance is the reference's bit for bit.
 #include "renderer/integrator/path_vertex.h"
+#include "renderer/integrator/shared_draws.h"
 
 #include <algorithm>
 
@@ -100,8 +101,13 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
         radiance[i] += path_[i].throughput * weightedEmission(path_[i], arriving_[i], distant.probability * pdf_[i]);
       }
     }
-    drawVertices(samplers, shading.lane, shading.n, DrawsUsed(context_, depth), draws_);
-    sampleLights(shading);
+    // Resumed paths share what the panels draw alike; the paths before the object are traced once anyway.
+    SharedDraws* shared = stops ? nullptr : shared_;
+    if (shared)
+      shared->draw(depth, samplers, shading, DrawsUsed(context_, depth), draws_);
+    else
+      drawVertices(samplers, shading.lane, shading.n, DrawsUsed(context_, depth), draws_);
+    sampleLights(depth, shading, shared);
     for (int k = 0; k < shading.n; ++k) {
       const int i = shading.lane[k];
       if (stopping[i]) stops[i] = ObjectVertex{depth, hit_[i].mesh, path_[i], radiance[i], point_[i], draws_[i], light_[i], samplers[i]};
@@ -110,10 +116,11 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
   }
 }
 
-// light_ of the lanes: sampleLight, as batches per light and shadow-ray packets.
-void WaveTracer::sampleLights(const Lanes& lanes) {
+// light_ of the lanes: sampleLight, as batches per light and shadow-ray packets; distant lights' samples
+// from `shared` where it keeps them.
+void WaveTracer::sampleLights(int depth, const Lanes& lanes, SharedDraws* shared) {
   const LightSet& lights = context_.lights;
-  Lanes sampled;
+  Lanes sampled, drawn;
   for (int k = 0; k < lanes.n; ++k) {
     const int i = lanes.lane[k];
     light_[i].visible = false;
@@ -122,9 +129,20 @@ void WaveTracer::sampleLights(const Lanes& lanes) {
     sampled.add(i);
     position_[i] = point_[i].position;
     uLight_[i] = draws_[i].light;
+    const Light* light = chosen_[i].light;
+    const LightSample* kept = shared && light->distant() ? shared->find(depth, i, light, uLight_[i]) : nullptr;
+    if (kept)
+      lightSample_[i] = *kept;
+    else
+      drawn.add(i);
   }
-  forEachGroup(sampled, [&](int i) { return chosen_[i].light; },
+  forEachGroup(drawn, [&](int i) { return chosen_[i].light; },
                [&](const Light* light, const int* group, int n) { light->sample(position_, uLight_, group, n, lightSample_); });
+  if (shared)
+    for (int k = 0; k < drawn.n; ++k) {
+      const int i = drawn.lane[k];
+      if (chosen_[i].light->distant()) shared->keep(depth, i, chosen_[i].light, uLight_[i], lightSample_[i]);
+    }
   std::fill(shadowed_, shadowed_ + kWaveSize, false);
   for (int k = 0; k < sampled.n; ++k) {
     const int i = sampled.lane[k];

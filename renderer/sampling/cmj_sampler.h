@@ -149,6 +149,7 @@ class CmjPixel {
   CmjPixel(uint32_t seed, uint32_t pass, uint32_t x, uint32_t y)
       : pixelSeed_(cmj_detail::hash(cmj_detail::hash(x, y), cmj_detail::hash(seed, pass))) {}
 
+  uint32_t seed() const { return pixelSeed_; }  // with the pattern, all that its values depend on
   Seeds seeds(uint32_t dimension) {
     if (dimension >= kCached) return compute(dimension);
     if (!(known_ >> dimension & 1u)) {
@@ -208,6 +209,14 @@ class CmjSampler {
   // Passes over dimensions without computing them: a value depends on its dimension's index alone, so the
   // dimensions after them get what they would have had.
   void skip(uint32_t dimensions) { dimension_ += dimensions; }
+
+  // All that the sampler's next values depend on: samplers with equal keys draw the same values.
+  struct Key {
+    const CmjPattern* pattern = nullptr;
+    uint32_t pixelSeed = 0, index = 0, dimension = 0;
+    bool operator==(const Key&) const = default;
+  };
+  Key key() const { return {pattern_, pixel_->seed(), index_, dimension_}; }
 
   // One point in each of the N intervals [k/N, (k+1)/N).
   double get1D() {
