@@ -6,6 +6,7 @@
 // rounds, medians.
 #include "bench/timing.h"
 #include "materials/merl/merl_table.h"
+#include "materials/nbrdf/neural_brdf.h"
 #include "renderer/sheet/sheet.h"
 
 #include <CLI/CLI.hpp>
@@ -34,12 +35,13 @@ int main(int argc, char** argv) {
   const Camera& camera = description.cameras.front();
   const SheetScene scene = makeSheetScene(description, bvh, environment, camera);
   const MaterialFile m = loadMaterialFile(source / "materials" / (material + ".toml"));
-  const auto table = resolveMeasured(m.measured, merlDir);
+  const auto table = resolveMeasured(m.measured, merlDir, m.path.parent_path());
   if (!table) {
     std::fprintf(stderr, "sheet_cost: no %s in %s\n", m.measured.c_str(), merlDir.c_str());
     return 2;
   }
-  const auto measured = std::make_shared<const MerlTable>(MerlTable::load(*table));
+  const auto measured = std::make_shared<const MerlTable>(
+      table->extension() == ".nbrdf" ? NeuralBrdf::load(*table).tabulate() : MerlTable::load(*table));
 
   SheetSettings settings;
   settings.width = settings.height = size;

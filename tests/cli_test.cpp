@@ -73,6 +73,20 @@ TEST(CliEval, ReproducesTheMeasuredTestVectorsFromTheCompressedTable) {
   EXPECT_GE(exact, rows.size() - 2) << "only bin-edge rows may differ (see TestVectors.MeasuredRowsThroughTheApi)";
 }
 
+// The embedded network evaluates (and samples) as shared/merl's table of it: the same test-vector rows.
+TEST(CliEval, TheEmbeddedNetworkIsItsReconstructedTable) {
+  GLOSSY_REQUIRE_SHARED("testvectors/brdf_eval.csv");
+  GLOSSY_REQUIRE_SHARED("merl/blue-rubber.binary.xz");
+  std::vector<std::map<std::string, std::string>> rows;
+  for (const auto& r : readCsv(sharedDir() / "testvectors/brdf_eval.csv"))
+    if (r.at("fit") == "measured") rows.push_back(r);
+  const RunResult table = runGlossy({"eval", "--pdf", "--measured", (sharedDir() / "merl/blue-rubber.binary.xz").string()}, directions(rows));
+  const RunResult network = runGlossy({"eval", "--pdf", "--measured", (materialsDir() / "measured/blue-rubber.nbrdf").string()}, directions(rows));
+  ASSERT_EQ(network.status, 0) << network.err;
+  ASSERT_FALSE(rows.empty());
+  EXPECT_EQ(parseOutput(network.out), parseOutput(table.out));
+}
+
 TEST(CliEval, PdfColumnIsTheSamplersDensity) {
   const auto file = materialsDir() / "gold-paint.toml";
   const RunResult r = runGlossy({"eval", "--material", file.string(), "--fit", "cook-torrance:E2", "--pdf"},
@@ -102,6 +116,8 @@ TEST(CliEval, BadInputExitsTwoWithOneLineNamingTheFile) {
   expectOneLineError(runGlossy({"eval", "--material", good, "--fit", "phong:E1"}), "unknown model 'phong'");
   expectOneLineError(runGlossy({"eval", "--material", (tmp / "absent.toml").string(), "--fit", "smooth:E2"}), "absent.toml");
   expectOneLineError(runGlossy({"eval", "--measured", (tmp / "absent.binary").string()}), "absent.binary");
+  writeText(tmp / "broken.nbrdf", "format = \"glossy-nbrdf 1\"\nmaterial = \"x\"\ninput = \"half-difference\"\noutput = \"expm1\"\n[[layer]]\ninputs = 6\n");
+  expectOneLineError(runGlossy({"eval", "--measured", (tmp / "broken.nbrdf").string()}, "0,0,1,0,0,1\n"), "broken.nbrdf:5: layer 1: missing key 'outputs'");
 }
 
 TEST(CliSample, SamplesAgreeWithEvalAndArePerSeedDeterministic) {

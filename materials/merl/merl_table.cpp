@@ -89,15 +89,20 @@ MerlTable MerlTable::parse(std::span<const std::byte> bytes, const std::string& 
     throw InputError(source + ": " + (bytes.size() < kFileBytes ? "truncated" : "oversized") + " MERL file (" +
                      std::to_string(bytes.size()) + " bytes, expected " + std::to_string(kFileBytes) + ")");
 
+  std::vector<double> values(3 * kBins);
+  std::memcpy(values.data(), bytes.data() + sizeof dims, values.size() * sizeof(double));
+  return fromValues(values, source);
+}
+
+MerlTable MerlTable::fromValues(std::span<const double> values, const std::string& source) {
+  if (values.size() != 3 * kBins) throw InputError(source + ": " + std::to_string(values.size()) + " values, expected 3 × 1458000");
   MerlTable t;
   t.source_ = source;
   t.raw_.assign(3 * kBins, 0.0f);
   t.valid_.assign(kBins, 1);
-  const std::byte* data = bytes.data() + sizeof dims;
   for (int c = 0; c < 3; ++c) {
     for (size_t i = 0; i < kBins; ++i) {
-      double v;
-      std::memcpy(&v, data + (c * kBins + i) * sizeof(double), sizeof v);
+      const double v = values[c * kBins + i];
       if (!std::isfinite(v)) {
         const int iph = int(i % kPhiD), itd = int(i / kPhiD % kThetaD), ith = int(i / (size_t(kPhiD) * kThetaD));
         throw InputError(source + ": non-finite value in channel " + "RGB"[c] + " at bin (θh " + std::to_string(ith) +

@@ -32,6 +32,9 @@ class MerlTable {
   static MerlTable load(const std::filesystem::path& path);
   // Parses the bytes of a .binary file; `source` names it in errors.
   static MerlTable parse(std::span<const std::byte> bytes, const std::string& source);
+  // The table of these values, unscaled and in the file's order (the R block, then G, then B, each
+  // 3 × kBins long in all; negative: unmeasured). Throws InputError naming `source` for a non-finite one.
+  static MerlTable fromValues(std::span<const double> values, const std::string& source);
 
   // ρ(L, V) in BRDF units (1/sr); 0 below the horizon and in unmeasured bins.
   Rgb eval(const Vec3& L, const Vec3& V) const;

@@ -313,7 +313,8 @@ Brdf makeBrdf(const Fit& fit) {
   return requireModel(fit.id.model, "fit " + fit.id.str()).make(fit.params);
 }
 
-std::optional<std::filesystem::path> resolveMeasured(const std::string& measured, const std::filesystem::path& merlDir) {
+std::optional<std::filesystem::path> resolveMeasured(const std::string& measured, const std::filesystem::path& merlDir,
+                                                     const std::filesystem::path& materialDir) {
   if (measured.empty()) return std::nullopt;
   const std::filesystem::path name = measured;
   std::vector<std::filesystem::path> candidates;
@@ -327,6 +328,14 @@ std::optional<std::filesystem::path> resolveMeasured(const std::string& measured
     const std::filesystem::path xz = c.string() + ".xz";
     if (std::filesystem::is_regular_file(xz, ec)) return xz;
   }
+  if (materialDir.empty()) return std::nullopt;
+  // Only the name's last component, so that a name from a file cannot lead out of the folder.
+  std::filesystem::path stem = name.filename();
+  for (const char* extension : {".xz", ".binary", ".nbrdf"})
+    if (stem.extension() == extension) stem = stem.stem();
+  if (stem.empty() || stem == "." || stem == "..") return std::nullopt;
+  const std::filesystem::path network = materialDir / "measured" / (stem.string() + ".nbrdf");
+  if (std::filesystem::is_regular_file(network, ec)) return network;
   return std::nullopt;
 }
 

@@ -34,7 +34,7 @@ struct Fit {
 
 struct MaterialFile {
   std::string name;
-  std::string measured;  // MERL file name, found by resolveMeasured(); empty if none
+  std::string measured;  // MERL table or .nbrdf network, found by resolveMeasured(); empty if none
   std::string source;
   std::vector<Fit> fits;  // at most one per FitId, kept in the comparison grid's order
   std::filesystem::path path;  // where it was loaded from, for messages; empty if built in memory
@@ -56,9 +56,14 @@ std::string toToml(const MaterialFile& material);
 // The BRDF of one fit; the fit must have been validated.
 Brdf makeBrdf(const Fit& fit);
 
-// The path of a measured table (a material's `measured`): as given if it exists, else under merlDir, else
-// under $GLOSSY_MERL_DIR; each also as NAME.xz. nullopt when `measured` is empty or none exists.
-std::optional<std::filesystem::path> resolveMeasured(const std::string& measured, const std::filesystem::path& merlDir = {});
+// The file of a material's measured data (its `measured`: a MERL table, NAME.binary or NAME.binary.xz, or a
+// Neural BRDF, NAME.nbrdf), looked for in this order: as given if absolute, under merlDir, under
+// $GLOSSY_MERL_DIR, in the working folder (each also as NAME.xz); then, for a material file in
+// materialDir, the network embedded beside it, materialDir/measured/STEM.nbrdf (STEM: the name's last
+// component without .xz, .binary or .nbrdf; docs/measured.md). nullopt when `measured` is empty or
+// none exists.
+std::optional<std::filesystem::path> resolveMeasured(const std::string& measured, const std::filesystem::path& merlDir = {},
+                                                     const std::filesystem::path& materialDir = {});
 
 // A new material measured by the MERL table of its name ("alum-bronze" by "alum-bronze.binary").
 inline MaterialFile measuredMaterial(const std::string& name, std::string_view source) {

@@ -1,6 +1,7 @@
 #include "renderer/cli/brdf_options.h"
 
 #include "materials/core/input_error.h"
+#include "materials/nbrdf/neural_brdf.h"
 #include "materials/params/material_file.h"
 
 #include <cstdio>
@@ -11,7 +12,7 @@ namespace glossy::cli {
 void BrdfOptions::addTo(CLI::App* app) {
   auto* materialOpt = app->add_option("--material", material, "Material parameter file (TOML)");
   auto* fitOpt = app->add_option("--fit", fit, "Which fit of the material: MODEL:METRIC, e.g. microfacet:E2");
-  auto* measuredOpt = app->add_option("--measured", measured, "MERL .binary (or .binary.xz) table instead");
+  auto* measuredOpt = app->add_option("--measured", measured, "Measured data instead: a MERL .binary (or .binary.xz) table or a .nbrdf network");
   app->add_option("--smooth-fresnel", smoothFresnel, "Override a smooth fit's Fresnel angle: projected (the fits' convention) or vh")
       ->check(CLI::IsMember({"projected", "vh"}));
   materialOpt->needs(fitOpt);
@@ -24,7 +25,7 @@ void BrdfOptions::addTo(CLI::App* app) {
 }
 
 Brdf BrdfOptions::load() const {
-  if (!measured.empty()) return Measured{loadMerlTable(measured)};
+  if (!measured.empty()) return Measured{loadMeasured(measured)};
   const MaterialFile file = loadMaterialFile(material);
   const FitId id = FitId::parse(fit, "--fit");
   const Fit* found = file.find(id);
@@ -37,8 +38,9 @@ Brdf BrdfOptions::load() const {
   return makeBrdf(chosen);
 }
 
-std::shared_ptr<const MerlTable> loadMerlTable(const std::filesystem::path& path) {
-  auto table = std::make_shared<const MerlTable>(MerlTable::load(path));
+std::shared_ptr<const MerlTable> loadMeasured(const std::filesystem::path& path) {
+  auto table = std::make_shared<const MerlTable>(path.extension() == ".nbrdf" ? NeuralBrdf::load(path).tabulate()
+                                                                                : MerlTable::load(path));
   if (table->invalidBins() == MerlTable::kBins)
     throw InputError(table->source() + ": every bin is unmeasured (negative): the table holds no data");
   if (table->invalidBins() > 0)
@@ -47,9 +49,16 @@ std::shared_ptr<const MerlTable> loadMerlTable(const std::filesystem::path& path
   return table;
 }
 
-std::filesystem::path findMeasuredTable(const std::string& given, const std::filesystem::path& merlDir) {
+std::string measuredLabel(const std::filesystem::path& path) {
+  std::error_code ec;
+  const bool reconstruction =
+      path.extension() == ".nbrdf" || std::filesystem::exists(path.parent_path() / "nbrdf_weights", ec);
+  return std::string(reconstruction ? "MERL (NBRDF reconstruction) " : "MERL ") + path.string();
+}
+
+std::filesystem::path findMeasured(const std::string& given, const std::filesystem::path& merlDir) {
   const auto path = resolveMeasured(given, merlDir);
-  if (!path) throw InputError(given + ": measured table not found (looked in --merl-dir, $GLOSSY_MERL_DIR, the working folder)");
+  if (!path) throw InputError(given + ": measured data not found (looked in --merl-dir, $GLOSSY_MERL_DIR, the working folder)");
   return *path;
 }
 

@@ -1,5 +1,5 @@
 // The options that name one BRDF on the command line — --material F --fit MODEL:METRIC, or --measured
-// F.binary — shared by the subcommands that evaluate or sample a single BRDF.
+// F.binary (or F.nbrdf) — shared by the subcommands that evaluate or sample a single BRDF.
 #pragma once
 
 #include "materials/models/brdf.h"
@@ -19,12 +19,17 @@ struct BrdfOptions {
   Brdf load() const;  // InputError naming the file for anything missing or malformed
 };
 
-// Loads a MERL table (NAME.binary, or NAME.binary.xz), with one line on stderr when it has unmeasured bins
-// (they evaluate to 0): merl.md asks for the count to be reported wherever the data is used.
-std::shared_ptr<const MerlTable> loadMerlTable(const std::filesystem::path& path);
+// Loads measured data as the MERL table every lookup reads: a MERL table (NAME.binary, or NAME.binary.xz),
+// or a Neural BRDF (NAME.nbrdf) tabulated (materials/nbrdf/neural_brdf.h); with one line on stderr when it
+// has unmeasured bins (they evaluate to 0): merl.md asks for the count to be reported wherever the data is
+// used.
+std::shared_ptr<const MerlTable> loadMeasured(const std::filesystem::path& path);
+// How a sheet or an image names that data: "MERL (NBRDF reconstruction) FILE" for a network or a table of
+// shared/merl (whose folder says so beside them), else "MERL FILE".
+std::string measuredLabel(const std::filesystem::path& path);
 
-// The table a --measured option names: as given, else under --merl-dir, else $GLOSSY_MERL_DIR (each also
+// The file a --measured option names: as given, else under --merl-dir, else $GLOSSY_MERL_DIR (each also
 // as .xz); InputError naming it when none exists.
-std::filesystem::path findMeasuredTable(const std::string& given, const std::filesystem::path& merlDir);
+std::filesystem::path findMeasured(const std::string& given, const std::filesystem::path& merlDir);
 
 }  // namespace glossy::cli

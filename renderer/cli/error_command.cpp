@@ -22,10 +22,10 @@ struct ErrorOptions {
 int runError(const ErrorOptions& o) {
   const MaterialFile material = loadMaterialFile(o.material);
   std::filesystem::path tablePath;
-  if (!o.measured.empty()) tablePath = findMeasuredTable(o.measured, o.merlDir);
-  else if (auto p = resolveMeasured(material.measured, o.merlDir)) tablePath = *p;
-  else throw InputError(o.material + ": names no measured table that exists; pass --measured FILE");
-  const auto table = loadMerlTable(tablePath);
+  if (!o.measured.empty()) tablePath = findMeasured(o.measured, o.merlDir);
+  else if (auto p = resolveMeasured(material.measured, o.merlDir, material.path.parent_path())) tablePath = *p;
+  else throw InputError(o.material + ": names no measured data that exists; pass --measured FILE");
+  const auto table = loadMeasured(tablePath);
   const MetricData e1(*table, Metric::E1), e2(*table, Metric::E2);
 
   std::string out;
@@ -37,13 +37,13 @@ int runError(const ErrorOptions& o) {
       if (fit.error) f["stored"] = *fit.error;
       fits.push_back(std::move(f));
     }
-    const nlohmann::json doc = {{"material", material.name},     {"measured", tablePath.filename().string()},
+    const nlohmann::json doc = {{"material", material.name},     {"measured", measuredLabel(tablePath)},
                                 {"grid", MetricGrid::describe()}, {"validPairs", e1.validPairs()},
                                 {"fits", std::move(fits)}};
     out = doc.dump() + "\n";
   } else {
     out += formatted("%s against %s (%zu of %zu grid pairs measured)\n", material.name.c_str(),
-                     tablePath.filename().string().c_str(), e1.validPairs(), MetricGrid::kPairs);
+                     measuredLabel(tablePath).c_str(), e1.validPairs(), MetricGrid::kPairs);
     out += formatted("%-22s %12s %12s %12s\n", "fit", "E1", "E2", "stored");
     for (const Fit& fit : material.fits) {
       const Brdf brdf = makeBrdf(fit);
@@ -60,7 +60,7 @@ Command addErrorCommand(CLI::App& parent) {
   auto o = std::make_shared<ErrorOptions>();
   CLI::App* app = parent.add_subcommand("error", "E1 and E2 of every fit of a material against measured data");
   app->add_option("--material", o->material, "material TOML")->required();
-  app->add_option("--measured", o->measured, "MERL table (default: the one the material names)");
+  app->add_option("--measured", o->measured, "MERL table or .nbrdf network (default: the data the material names, else its embedded network)");
   app->add_option("--merl-dir", o->merlDir, "where to look for the table (else $GLOSSY_MERL_DIR)");
   app->add_flag("--json", o->json, "one JSON object on stdout instead of the table");
   return {app, [o] { return runError(*o); }};

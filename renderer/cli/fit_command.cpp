@@ -27,7 +27,7 @@ struct FitOptions {
 // "alum-bronze.binary.xz" → "alum-bronze".
 std::string materialNameOf(const std::filesystem::path& table) {
   std::string name = table.filename().string();
-  for (std::string_view suffix : {".xz", ".binary"})
+  for (std::string_view suffix : {".nbrdf", ".xz", ".binary"})
     if (name.size() > suffix.size() && name.ends_with(suffix)) name.resize(name.size() - suffix.size());
   return name;
 }
@@ -57,11 +57,11 @@ std::string describeFit(const FitReport& r) {
 int runSingle(const FitOptions& o) {
   if (o.models.size() != 1 || o.metrics.size() != 1)
     throw InputError("glossy fit --measured needs one --model and one --metric (or use --measured-dir for all)");
-  const std::filesystem::path tablePath = findMeasuredTable(o.measured, o.merlDir);
+  const std::filesystem::path tablePath = findMeasured(o.measured, o.merlDir);
   const Metric metric = parseMetric(o.metrics[0], "--metric");
   // Validate the output file before the (slow) fit.
   MaterialFile material = loadOrStart(std::filesystem::path(o.output), tablePath);
-  const auto table = loadMerlTable(tablePath);
+  const auto table = loadMeasured(tablePath);
   const MetricData data(*table, metric);
   FitReport report = fitModel(data, o.models[0], o.settings);
   report.fit.source = "glossy fit to " + tablePath.filename().string();
@@ -74,14 +74,16 @@ int runSingle(const FitOptions& o) {
 
 std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
   if (std::error_code ec; !std::filesystem::is_directory(dir, ec)) throw InputError(dir.string() + ": not a directory");
-  std::map<std::string, std::filesystem::path> byName;  // a .binary wins over its .binary.xz
+  // A material's .binary wins over its .binary.xz, which wins over its .nbrdf network.
+  const auto rank = [](const std::string& f) { return f.ends_with(".binary") ? 0 : f.ends_with(".binary.xz") ? 1 : 2; };
+  std::map<std::string, std::filesystem::path> byName;
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     const std::string f = e.path().filename().string();
-    if (!e.is_regular_file() || !(f.ends_with(".binary") || f.ends_with(".binary.xz"))) continue;
+    if (!e.is_regular_file() || !(f.ends_with(".binary") || f.ends_with(".binary.xz") || f.ends_with(".nbrdf"))) continue;
     auto [it, inserted] = byName.emplace(materialNameOf(e.path()), e.path());
-    if (!inserted && f.ends_with(".binary")) it->second = e.path();
+    if (!inserted && rank(f) < rank(it->second.filename().string())) it->second = e.path();
   }
-  if (byName.empty()) throw InputError(dir.string() + ": no MERL tables (*.binary or *.binary.xz)");
+  if (byName.empty()) throw InputError(dir.string() + ": no measured data (*.binary, *.binary.xz or *.nbrdf)");
   std::vector<std::filesystem::path> out;
   for (auto& [name, path] : byName) out.push_back(path);
   return out;
@@ -122,7 +124,7 @@ int runBatch(const FitOptions& o) {
   for (size_t j = 0; j < jobs.size(); ++j) {
     const Job& job = jobs[j];
     if (loaded != job.table) {
-      table = loadMerlTable(tables[job.table]);
+      table = loadMeasured(tables[job.table]);
       data.clear();
       loaded = job.table;
     }
@@ -148,12 +150,12 @@ int runBatch(const FitOptions& o) {
 Command addFitCommand(CLI::App& parent) {
   auto o = std::make_shared<FitOptions>();
   CLI::App* app = parent.add_subcommand("fit", "Fit analytic models to measured MERL data under E1 or E2 (docs/fitting.md)");
-  app->add_option("--measured", o->measured, "MERL table (.binary or .binary.xz) to fit");
+  app->add_option("--measured", o->measured, "Measured data to fit: a MERL table (.binary or .binary.xz) or a .nbrdf network");
   app->add_option("--merl-dir", o->merlDir, "where to look for --measured (else $GLOSSY_MERL_DIR)");
   app->add_option("--model", o->models, "model to fit: " + fittableModelNames() + " (batch: repeatable, default all)");
   app->add_option("--metric", o->metrics, "E1 or E2 (batch: repeatable, default both)");
   app->add_option("-o,--output", o->output, "material TOML to write or update (keeps its other fits); default: stdout");
-  app->add_option("--measured-dir", o->measuredDir, "batch: fit every table in this folder");
+  app->add_option("--measured-dir", o->measuredDir, "batch: fit every table (or .nbrdf network) in this folder");
   app->add_option("--out-dir", o->outDir, "batch: one material TOML per table here; fits already made are skipped");
   app->add_option("--starts", o->settings.refinedStarts, "lobe widths refined from the coarse scan")->check(CLI::Range(1, 64));
   app->add_option("--max-iterations", o->settings.maxIterations, "Levenberg-Marquardt iterations per start")->check(CLI::Range(1, 10000));

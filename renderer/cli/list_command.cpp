@@ -22,12 +22,20 @@ struct ListOptions {
 // A column per fit of the sheets' comparison grid.
 int width(const SheetPanel& column) { return std::max(9, int(column.label.size())); }
 
+// "found" (a table), "network" (only the embedded Neural BRDF), "missing", or "-" when it names none.
+std::string measuredState(const MaterialFile& m, const std::string& merlDir) {
+  if (m.measured.empty()) return "-";
+  const auto path = resolveMeasured(m.measured, merlDir, m.path.parent_path());
+  return !path ? "missing" : path->extension() == ".nbrdf" ? "network" : "found";
+}
+
 int runList(const ListOptions& o) {
   const auto files = materialFiles(o.paths);
   if (files.empty()) throw InputError((o.paths.empty() ? defaultMaterialsDir().string() : o.paths.front()) + ": no .toml material files");
 
   std::printf("Head-on directional albedo a(N) = ∫ρ(L,N) cos θ_L dω_L of each fit (mean of R, G, B);\n"
-              "'measured' says whether the material's MERL table was found (--merl-dir, $GLOSSY_MERL_DIR).\n\n");
+              "'measured' says whether the material's MERL table was found (--merl-dir, $GLOSSY_MERL_DIR), or only\n"
+              "its embedded Neural BRDF network ('network').\n\n");
   std::printf("%-26s %-9s", "material", "measured");
   for (const SheetPanel& c : sheetPanels())
     if (!c.fit.empty()) std::printf(" %*s", width(c), c.label.c_str());
@@ -42,7 +50,7 @@ int runList(const ListOptions& o) {
       ++bad;
       continue;
     }
-    std::printf("%-26s %-9s", m.name.c_str(), m.measured.empty() ? "-" : resolveMeasured(m.measured, o.merlDir) ? "found" : "missing");
+    std::printf("%-26s %-9s", m.name.c_str(), measuredState(m, o.merlDir).c_str());
     for (const SheetPanel& c : sheetPanels()) {
       if (c.fit.empty()) continue;
       const Fit* f = m.find(FitId::parse(c.fit, c.label));

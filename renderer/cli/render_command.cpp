@@ -29,10 +29,12 @@ int runRender(RenderOptions o) {
 
   std::optional<BrdfChoice> override;
   int measuredInvalidBins = -1;
+  std::string measuredLabelText;
   if (!o.measured.empty()) {
-    const std::filesystem::path path = findMeasuredTable(o.measured, o.merlDir);
-    auto table = loadMerlTable(path);
+    const std::filesystem::path path = findMeasured(o.measured, o.merlDir);
+    auto table = loadMeasured(path);
     measuredInvalidBins = int(table->invalidBins());
+    measuredLabelText = measuredLabel(path);
     override = BrdfChoice{Measured{std::move(table)}, path.string(), "measured"};
   } else if (!o.material.empty()) {
     override = brdfFromMaterialFile(o.material, o.fit);
@@ -70,7 +72,10 @@ int runRender(RenderOptions o) {
       {"glossy:renderSeconds", float(stats.seconds)},
       {"glossy:version", std::string(GLOSSY_VERSION)},
   };
-  if (measuredInvalidBins >= 0) metadata.push_back({"glossy:measuredInvalidBins", measuredInvalidBins});
+  if (measuredInvalidBins >= 0) {
+    metadata.push_back({"glossy:measuredInvalidBins", measuredInvalidBins});
+    metadata.push_back({"glossy:measured", measuredLabelText});
+  }
   const std::filesystem::path out = o.output;
   if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
   writeExr(out, image, metadata, o.half ? PixelType::Half : PixelType::Float);
@@ -91,7 +96,7 @@ Command addRenderCommand(CLI::App& parent) {
   o->scene.addTo(app);
   auto* material = app->add_option("--material", o->material, "Material file for every non-emissive mesh");
   auto* fit = app->add_option("--fit", o->fit, "Fit of --material: MODEL:METRIC");
-  auto* measured = app->add_option("--measured", o->measured, "MERL table for every non-emissive mesh instead");
+  auto* measured = app->add_option("--measured", o->measured, "Measured data (MERL table or .nbrdf network) for every non-emissive mesh instead");
   app->add_option("--merl-dir", o->merlDir, "Folder with MERL tables");
   app->add_option("--spp", o->settings.spp, "Samples per pixel")->check(CLI::Range(1, INT32_MAX))->capture_default_str();
   app->add_option("--seed", o->settings.seed, "Random seed")->capture_default_str();

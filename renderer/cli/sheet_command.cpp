@@ -45,24 +45,22 @@ struct Stage {
       : description(loadGltf(o.scenePath())), camera(o.cameraOf(description)), bvh(description), environment(o.environment()) {}
 };
 
-// The measured table of a material: --measured, else the file's `measured` under --merl-dir or
-// $GLOSSY_MERL_DIR. Returns null with a note saying where to get the data when there is none.
-std::shared_ptr<const MerlTable> findMeasured(const MaterialFile& m, const SheetOptions& o, const std::string& explicitPath,
-                                              std::string& note) {
-  const std::optional<std::filesystem::path> path =
-      explicitPath.empty() ? resolveMeasured(m.measured, o.merlDir) : findMeasuredTable(explicitPath, o.merlDir);
+// The measured data of a material: --measured, else the file's `measured` under --merl-dir, $GLOSSY_MERL_DIR
+// or the working folder, else the network embedded beside the material file (resolveMeasured); the note
+// says which. Returns null with a note saying where to get the data when there is none.
+std::shared_ptr<const MerlTable> measuredOf(const MaterialFile& m, const SheetOptions& o, const std::string& explicitPath,
+                                            std::string& note) {
+  const std::optional<std::filesystem::path> path = explicitPath.empty()
+                                                        ? resolveMeasured(m.measured, o.merlDir, m.path.parent_path())
+                                                        : findMeasured(explicitPath, o.merlDir);
   if (!path) {
-    note = m.measured.empty() ? "the material names no measured table"
+    note = m.measured.empty() ? "the material names no measured data"
                               : "no " + m.measured + " in --merl-dir or $GLOSSY_MERL_DIR: get the MERL BRDF database "
                                 "(Matusik et al. 2003) and point --merl-dir at it";
     return nullptr;
   }
-  auto table = loadMerlTable(*path);
-  // shared/merl's tables are neural reconstructions; that folder says so beside them.
-  std::error_code ec;
-  const bool reconstruction = std::filesystem::exists(path->parent_path() / "nbrdf_weights", ec);
-  note = std::string(reconstruction ? "MERL (NBRDF reconstruction) " : "MERL ") + path->filename().string();
-  return table;
+  note = measuredLabel(*path);
+  return loadMeasured(*path);
 }
 
 std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& stage, const SheetOptions& o, const Sheet& sheet,
@@ -99,7 +97,7 @@ void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, co
                const std::filesystem::path& exr, const std::string& explicitMeasured) {
   const MaterialFile m = loadMaterialFile(materialPath);
   std::string note;
-  const auto measured = findMeasured(m, o, explicitMeasured, note);
+  const auto measured = measuredOf(m, o, explicitMeasured, note);
   const auto start = std::chrono::steady_clock::now();
   const SheetScene scene = makeSheetScene(stage.description, stage.bvh, stage.environment, stage.camera);
   const Sheet sheet = renderSheet(scene, m, measured, note, o.settings);
@@ -212,8 +210,9 @@ Command addSheetCommand(CLI::App& parent) {
       "sheet", "Render a material's comparison sheet: " + grid +
                    ", into one layered EXR and a labelled PNG beside it, and print each model's error against the measured panel.");
   app->add_option("--material", o->material, "Material parameter file (TOML)")->required();
-  app->add_option("--measured", o->measured, "MERL .binary (or .binary.xz) for the measured panel; default: the file's own, "
-                                             "looked up in --merl-dir or $GLOSSY_MERL_DIR");
+  app->add_option("--measured", o->measured, "MERL .binary (or .binary.xz) or .nbrdf network for the measured panel; default: "
+                                             "the file's own, looked up in --merl-dir, $GLOSSY_MERL_DIR, the working folder, then "
+                                             "the network embedded beside the material file (materials/measured/)");
   addRenderOptions(app, *o);
   app->add_option("-o,--output", o->output, "Output EXR (the PNG is written beside it)")->capture_default_str();
   return {app, [o] { return runSheet(*o); }};

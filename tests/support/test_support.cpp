@@ -35,10 +35,12 @@ std::string shellQuote(const std::string& s) {
 
 }  // namespace
 
-RunResult runGlossy(const std::vector<std::string>& args, const std::string& input) {
+namespace {
+
+RunResult run(const std::string& prefix, const std::vector<std::string>& args, const std::string& input) {
   TempDir tmp;
   writeText(tmp / "stdin", input);
-  std::string cmd = shellQuote(GLOSSY_EXE);
+  std::string cmd = prefix + shellQuote(GLOSSY_EXE);
   for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
   cmd.append(" <").append(shellQuote((tmp / "stdin").string()));
   cmd.append(" >").append(shellQuote((tmp / "stdout").string()));
@@ -49,6 +51,16 @@ RunResult runGlossy(const std::vector<std::string>& args, const std::string& inp
   r.out = readText(tmp / "stdout");
   r.err = readText(tmp / "stderr");
   return r;
+}
+
+}  // namespace
+
+RunResult runGlossy(const std::vector<std::string>& args, const std::string& input) { return run("", args, input); }
+
+RunResult runGlossyIn(const std::filesystem::path& cwd, const std::vector<std::string>& unset, const std::vector<std::string>& args) {
+  std::string prefix = "cd " + shellQuote(cwd.string()) + " && env";
+  for (const std::string& name : unset) prefix += " -u " + shellQuote(name);
+  return run(prefix + " ", args, "");
 }
 
 std::string expectInputError(const std::function<void()>& f) {

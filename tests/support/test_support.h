@@ -36,6 +36,8 @@ struct RunResult {
 };
 // Runs the glossy executable with `args` (shell-quoted here) and `input` on stdin.
 RunResult runGlossy(const std::vector<std::string>& args, const std::string& input = "");
+// The same, run in folder `cwd` with the environment variables `unset` removed.
+RunResult runGlossyIn(const std::filesystem::path& cwd, const std::vector<std::string>& unset, const std::vector<std::string>& args);
 
 // Runs f, which must throw InputError with a one-line message; returns the message.
 std::string expectInputError(const std::function<void()>& f);

@@ -1,0 +1,194 @@
+#include "materials/nbrdf/neural_brdf.h"
+
+#include "materials/core/input_error.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace glossy {
+
+namespace {
+
+constexpr std::string_view kFormat = "glossy-nbrdf 1";
+
+// "FILE:LINE: " for a node with a known position, else "FILE: ".
+std::string at(const std::string& source, const toml::node& node) {
+  const auto& pos = node.source().begin;
+  return pos.line == 0 ? source + ": " : source + ":" + std::to_string(pos.line) + ": ";
+}
+
+std::string requireString(const toml::table& t, std::string_view key, const std::string& source) {
+  const toml::node* n = t.get(key);
+  if (!n) throw InputError(source + ": missing key '" + std::string(key) + "'");
+  if (!n->is_string()) throw InputError(at(source, *n) + "key '" + std::string(key) + "' must be a string");
+  return n->as_string()->get();
+}
+
+int requireSize(const toml::table& t, std::string_view key, int most, const std::string& where) {
+  const toml::node* n = t.get(key);
+  if (!n) throw InputError(where + ": missing key '" + std::string(key) + "'");
+  const auto* i = n->as_integer();
+  if (!i || i->get() < 1 || i->get() > most)
+    throw InputError(at(where, *n) + "key '" + std::string(key) + "' must be an integer from 1 to " + std::to_string(most));
+  return int(i->get());
+}
+
+std::vector<double> requireNumbers(const toml::table& t, std::string_view key, size_t count, const std::string& where) {
+  const toml::node* n = t.get(key);
+  if (!n) throw InputError(where + ": missing key '" + std::string(key) + "'");
+  const toml::array* a = n->as_array();
+  if (!a) throw InputError(at(where, *n) + "key '" + std::string(key) + "' must be an array of numbers");
+  if (a->size() != count)
+    throw InputError(at(where, *n) + "key '" + std::string(key) + "' has " + std::to_string(a->size()) + " numbers, expected " +
+                     std::to_string(count));
+  std::vector<double> out;
+  out.reserve(count);
+  for (const toml::node& v : *a) {
+    double x;
+    if (auto f = v.as_floating_point()) x = f->get();
+    else if (auto i = v.as_integer()) x = double(i->get());
+    else throw InputError(at(where, v) + "key '" + std::string(key) + "' must hold numbers only");
+    if (!std::isfinite(x)) throw InputError(at(where, v) + "key '" + std::string(key) + "' holds a non-finite number");
+    // The networks are float32; a weight that is not one was not converted from one.
+    out.push_back(double(float(x)));
+  }
+  return out;
+}
+
+}  // namespace
+
+NeuralBrdf NeuralBrdf::load(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a .nbrdf file");
+  std::ifstream in(path);
+  if (!in) throw InputError(path.string() + ": cannot open");
+  if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxBytes)
+    throw InputError(path.string() + ": " + std::to_string(size) + " bytes, too large for a Neural BRDF (at most " +
+                     std::to_string(kMaxBytes) + ")");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) throw InputError(path.string() + ": read failed");
+  return parse(text.str(), path.string());
+}
+
+NeuralBrdf NeuralBrdf::parse(std::string_view text, const std::string& source) {
+  toml::table root;
+  try {
+    root = toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    const auto& pos = e.source().begin;
+    throw InputError(source + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column) +
+                     ": TOML syntax error: " + std::string(e.description()));
+  }
+  const std::string format = requireString(root, "format", source);
+  if (format != kFormat)
+    throw InputError(source + ": format '" + format + "' is not '" + std::string(kFormat) + "' (not a glossy Neural BRDF file)");
+  if (const std::string input = requireString(root, "input", source); input != "half-difference")
+    throw InputError(source + ": input '" + input + "': only 'half-difference' is known");
+  if (const std::string output = requireString(root, "output", source); output != "expm1")
+    throw InputError(source + ": output '" + output + "': only 'expm1' is known");
+
+  NeuralBrdf n;
+  n.source_ = source;
+  n.material_ = requireString(root, "material", source);
+  const toml::node* layersNode = root.get("layer");
+  const toml::array* layers = layersNode ? layersNode->as_array() : nullptr;
+  if (!layers || !layers->is_array_of_tables() || layers->empty())
+    throw InputError(source + ": needs its layers as [[layer]] tables");
+  if (layers->size() > size_t(kMaxLayers))
+    throw InputError(source + ": " + std::to_string(layers->size()) + " layers, at most " + std::to_string(kMaxLayers));
+  int inputs = kInputs;
+  for (size_t k = 0; k < layers->size(); ++k) {
+    const toml::table& t = *(*layers)[k].as_table();
+    const std::string where = at(source, t) + "layer " + std::to_string(k + 1);
+    Layer layer;
+    layer.inputs = requireSize(t, "inputs", kMaxWidth, where);
+    layer.outputs = requireSize(t, "outputs", kMaxWidth, where);
+    if (layer.inputs != inputs)
+      throw InputError(where + ": takes " + std::to_string(layer.inputs) + " inputs, but " + std::to_string(inputs) +
+                       " come to it");
+    const std::string activation = requireString(t, "activation", where);
+    if (activation != "relu" && activation != "linear")
+      throw InputError(where + ": activation '" + activation + "': only 'relu' and 'linear' are known");
+    layer.relu = activation == "relu";
+    // The file's rows are outputs; kept input-major, as evalAngles reads them.
+    const std::vector<double> rows = requireNumbers(t, "weights", size_t(layer.inputs) * size_t(layer.outputs), where);
+    layer.weights.resize(rows.size());
+    for (int o = 0; o < layer.outputs; ++o)
+      for (int i = 0; i < layer.inputs; ++i)
+        layer.weights[size_t(i) * size_t(layer.outputs) + size_t(o)] = rows[size_t(o) * size_t(layer.inputs) + size_t(i)];
+    layer.biases = requireNumbers(t, "biases", size_t(layer.outputs), where);
+    inputs = layer.outputs;
+    n.layers_.push_back(std::move(layer));
+  }
+  if (inputs != kOutputs) throw InputError(source + ": the last layer has " + std::to_string(inputs) + " outputs, expected 3 (RGB)");
+  if (n.layers_.back().relu) throw InputError(source + ": the last layer must be linear (its outputs go through exp(x) − 1)");
+  return n;
+}
+
+Rgb NeuralBrdf::evalAngles(double thetaH, double thetaD, double phiD) const {
+  std::array<double, kMaxWidth> a, b;
+  const double sd = std::sin(thetaD);
+  a[0] = std::sin(thetaH);
+  a[1] = 0.0;
+  a[2] = std::cos(thetaH);
+  a[3] = sd * std::cos(phiD);
+  a[4] = sd * std::sin(phiD);
+  a[5] = std::cos(thetaD);
+  for (const Layer& layer : layers_) {
+    // Each output sums its inputs in order, then the bias; input by input for all outputs at once, so
+    // that the outputs' sums run side by side (the tabulation evaluates the network 2.2 million times).
+    const size_t outputs = size_t(layer.outputs);
+    std::fill_n(b.begin(), outputs, 0.0);
+    for (int i = 0; i < layer.inputs; ++i) {
+      const double* w = &layer.weights[size_t(i) * outputs];
+      const double x = a[size_t(i)];
+      for (size_t o = 0; o < outputs; ++o) b[o] += w[o] * x;
+    }
+    for (size_t o = 0; o < outputs; ++o) {
+      const double sum = b[o] + layer.biases[o];
+      b[o] = layer.relu ? std::max(sum, 0.0) : sum;
+    }
+    std::swap(a, b);
+  }
+  return {std::expm1(a[0]), std::expm1(a[1]), std::expm1(a[2])};
+}
+
+MerlTable NeuralBrdf::tabulate() const {
+  constexpr int nH = MerlTable::kThetaH, nD = MerlTable::kThetaD, nP = MerlTable::kPhiD;
+  constexpr double degree = kPi / 180.0;
+  std::vector<double> values(3 * MerlTable::kBins);
+  tbb::parallel_for(tbb::blocked_range<int>(0, nH), [&](const tbb::blocked_range<int>& rows) {
+    for (int i = rows.begin(); i < rows.end(); ++i) {
+      const double edgeH = double(i) * i / (nH * nH) * (kPi / 2.0);
+      const double centreH = (i + 0.5) * (i + 0.5) / (nH * nH) * (kPi / 2.0);
+      for (int j = 0; j < nD; ++j)
+        for (int k = 0; k < nP; ++k) {
+          const size_t bin = MerlBin{i, j, k}.index();
+          // Unmeasured where the bin's centre sees a direction below the horizon: L is D turned by θ_h about
+          // y, and V its mirror about H, so cos θ_{L,V} = cos θ_h cos θ_d ∓ sin θ_h sin θ_d cos φ_d.
+          const double td = (j + 0.5) * degree, pd = (k + 0.5) * degree;
+          const double along = std::cos(centreH) * std::cos(td), across = std::sin(centreH) * std::sin(td) * std::cos(pd);
+          if (std::min(along - across, along + across) < -0.01) {
+            for (int c = 0; c < 3; ++c) values[size_t(c) * MerlTable::kBins + bin] = -1.0;
+            continue;
+          }
+          const Rgb a = evalAngles(edgeH, j * degree, k * degree), b = evalAngles(edgeH, j * degree, (k + 180) * degree);
+          for (int c = 0; c < 3; ++c) {
+            const double rho = std::max(0.5 * (a[c] + b[c]), 0.0);
+            values[size_t(c) * MerlTable::kBins + bin] = double(float(rho / MerlTable::kScale[c]));
+          }
+        }
+    }
+  });
+  return MerlTable::fromValues(values, source_);
+}
+
+}  // namespace glossy

@@ -1,0 +1,62 @@
+// A Neural BRDF (Sztrajman, Rainer, Ritschel, Weyrich 2021): a small network fitted to one measured MERL
+// material, a few kilobytes where the table is 35 MB, so that the repository can carry measured data
+// (materials/measured/). The network maps Rusinkiewicz half/difference angles to RGB:
+//   x = (sin θ_h, 0, cos θ_h, sin θ_d cos φ_d, sin θ_d sin φ_d, cos θ_d)      (φ_h = 0: isotropic)
+//   ρ = exp(y) − 1,  y = dense layers of x (ReLU between them, linear last), in BRDF units (1/sr).
+// The file format (.nbrdf, TOML) is in docs/measured.md; scripts/nbrdf-from-h5 makes it from the
+// authors' Keras weights.
+//
+// glossy uses a network through tabulate(): the MERL table that the reconstructions in shared/merl were
+// made by (shared/merl/SOURCES.md). Every lookup then reads that table with the reference nearest-bin
+// lookup, as for MERL files (merl_table.h), so a sheet, a fit or an error from the network is the one from
+// the reconstructed table, and rendering, fitting and sampling need nothing of their own.
+#pragma once
+
+#include "materials/core/types.h"
+#include "materials/merl/merl_table.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace glossy {
+
+class NeuralBrdf {
+ public:
+  static constexpr int kInputs = 6, kOutputs = 3;
+  // Anything larger is not a Neural BRDF (the supplement's are 11 KB: 3 layers of at most 21).
+  static constexpr int kMaxLayers = 16, kMaxWidth = 1024;
+  static constexpr std::uintmax_t kMaxBytes = 16u << 20;
+
+  // Throws InputError naming the file (and the line, for TOML errors) for a file that is missing, over
+  // kMaxBytes, malformed, of another format or version, with a layer chain that does not go from 6 inputs to 3
+  // outputs, an unknown activation, arrays of the wrong length, or a non-finite weight.
+  static NeuralBrdf load(const std::filesystem::path& path);
+  static NeuralBrdf parse(std::string_view text, const std::string& source);
+
+  // The network's ρ at half/difference angles (radians), before any symmetrisation.
+  Rgb evalAngles(double thetaH, double thetaD, double phiD) const;
+  // The MERL table of shared/merl/SOURCES.md: at bin (i, j, k) the mean of the network at
+  // θ_h = (i/90)² 90°, θ_d = j°, and φ_d = k° and k° + 180° (the lower bin edges, where the training
+  // targets were the table's entries; the two φ_d the table folds together), clamped at 0, divided by the
+  // channel scale and rounded to float. A bin whose centre has a direction below the horizon
+  // (min(cos θ_i, cos θ_o) < −0.01) is unmeasured. Computed on all cores (about 0.5 s on 2).
+  MerlTable tabulate() const;
+
+  const std::string& material() const { return material_; }
+  const std::string& source() const { return source_; }  // the file, as given
+
+ private:
+  struct Layer {
+    int inputs = 0, outputs = 0;
+    bool relu = false;
+    std::vector<double> weights;  // [input × outputs + output]
+    std::vector<double> biases;
+  };
+  std::vector<Layer> layers_;
+  std::string material_, source_;
+};
+
+}  // namespace glossy
