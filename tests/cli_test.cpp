@@ -117,7 +117,7 @@ TEST(CliEval, BadInputExitsTwoWithOneLineNamingTheFile) {
   expectOneLineError(runGlossy({"eval", "--material", (tmp / "absent.toml").string(), "--fit", "smooth:E2"}), "absent.toml");
   expectOneLineError(runGlossy({"eval", "--measured", (tmp / "absent.binary").string()}), "absent.binary");
   writeText(tmp / "broken.nbrdf", "format = \"glossy-nbrdf 1\"\nmaterial = \"x\"\ninput = \"half-difference\"\noutput = \"expm1\"\n[[layer]]\ninputs = 6\n");
-  expectOneLineError(runGlossy({"eval", "--measured", (tmp / "broken.nbrdf").string()}, "0,0,1,0,0,1\n"), "broken.nbrdf:5: layer 1: missing key 'outputs'");
+  expectOneLineError(runGlossy({"eval", "--measured", (tmp / "broken.nbrdf").string()}, "0,0,1,0,0,1\n"), "broken.nbrdf:5: layer 1: key 'outputs' is missing");
 }
 
 TEST(CliSample, SamplesAgreeWithEvalAndArePerSeedDeterministic) {

@@ -83,7 +83,8 @@ TEST(NeuralBrdf, BadFilesAreInputErrorsNamingTheFile) {
   EXPECT_NE(error(networkText(chain)).find("3 inputs, but 2"), std::string::npos);
   std::vector<TestLayer> shortWeights = layers;
   shortWeights[0].weights.pop_back();
-  EXPECT_NE(error(networkText(shortWeights)).find("11 numbers, expected 12"), std::string::npos);
+  EXPECT_NE(error(networkText(shortWeights)).find("bad.nbrdf:9: layer 1: key 'weights' has 11 numbers, expected 12"), std::string::npos)
+      << error(networkText(shortWeights));
   std::vector<TestLayer> nan = layers;
   std::string text = networkText(nan);
   const std::string biases = "biases = [0.125, -0.25]";

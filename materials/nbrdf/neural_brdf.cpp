@@ -1,10 +1,10 @@
 #include "materials/nbrdf/neural_brdf.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/toml_input.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <toml++/toml.h>
 
 #include <algorithm>
 #include <array>
@@ -18,44 +18,49 @@ namespace {
 
 constexpr std::string_view kFormat = "glossy-nbrdf 1";
 
-// "FILE:LINE: " for a node with a known position, else "FILE: ".
-std::string at(const std::string& source, const toml::node& node) {
-  const auto& pos = node.source().begin;
-  return pos.line == 0 ? source + ": " : source + ":" + std::to_string(pos.line) + ": ";
+// Where a key sits: the file, and the table holding it ("layer 2"; empty for the top). Messages read
+// "FILE:LINE: layer 2: key 'weights' …".
+struct Place {
+  const std::string& source;
+  std::string table;
+  std::string key(const toml::node& node, std::string_view name) const {
+    return tomlAt(source, node) + (table.empty() ? "" : table + ": ") + "key '" + std::string(name) + "'";
+  }
+  const toml::node& require(const toml::table& t, std::string_view name) const {
+    const toml::node* n = t.get(name);
+    if (!n) throw InputError(key(t, name) + " is missing");
+    return *n;
+  }
+};
+
+std::string requireString(const toml::table& t, std::string_view name, const Place& place) {
+  const toml::node& n = place.require(t, name);
+  if (!n.is_string()) throw InputError(place.key(n, name) + " must be a string");
+  return n.as_string()->get();
 }
 
-std::string requireString(const toml::table& t, std::string_view key, const std::string& source) {
-  const toml::node* n = t.get(key);
-  if (!n) throw InputError(source + ": missing key '" + std::string(key) + "'");
-  if (!n->is_string()) throw InputError(at(source, *n) + "key '" + std::string(key) + "' must be a string");
-  return n->as_string()->get();
-}
-
-int requireSize(const toml::table& t, std::string_view key, int most, const std::string& where) {
-  const toml::node* n = t.get(key);
-  if (!n) throw InputError(where + ": missing key '" + std::string(key) + "'");
-  const auto* i = n->as_integer();
+int requireSize(const toml::table& t, std::string_view name, int most, const Place& place) {
+  const toml::node& n = place.require(t, name);
+  const auto* i = n.as_integer();
   if (!i || i->get() < 1 || i->get() > most)
-    throw InputError(at(where, *n) + "key '" + std::string(key) + "' must be an integer from 1 to " + std::to_string(most));
+    throw InputError(place.key(n, name) + " must be an integer from 1 to " + std::to_string(most));
   return int(i->get());
 }
 
-std::vector<double> requireNumbers(const toml::table& t, std::string_view key, size_t count, const std::string& where) {
-  const toml::node* n = t.get(key);
-  if (!n) throw InputError(where + ": missing key '" + std::string(key) + "'");
-  const toml::array* a = n->as_array();
-  if (!a) throw InputError(at(where, *n) + "key '" + std::string(key) + "' must be an array of numbers");
+std::vector<double> requireNumbers(const toml::table& t, std::string_view name, size_t count, const Place& place) {
+  const toml::node& n = place.require(t, name);
+  const toml::array* a = n.as_array();
+  if (!a) throw InputError(place.key(n, name) + " must be an array of numbers");
   if (a->size() != count)
-    throw InputError(at(where, *n) + "key '" + std::string(key) + "' has " + std::to_string(a->size()) + " numbers, expected " +
-                     std::to_string(count));
+    throw InputError(place.key(n, name) + " has " + std::to_string(a->size()) + " numbers, expected " + std::to_string(count));
   std::vector<double> out;
   out.reserve(count);
   for (const toml::node& v : *a) {
     double x;
     if (auto f = v.as_floating_point()) x = f->get();
     else if (auto i = v.as_integer()) x = double(i->get());
-    else throw InputError(at(where, v) + "key '" + std::string(key) + "' must hold numbers only");
-    if (!std::isfinite(x)) throw InputError(at(where, v) + "key '" + std::string(key) + "' holds a non-finite number");
+    else throw InputError(place.key(v, name) + " must hold numbers only");
+    if (!std::isfinite(x)) throw InputError(place.key(v, name) + " holds a non-finite number");
     // The networks are float32; a weight that is not one was not converted from one.
     out.push_back(double(float(x)));
   }
@@ -79,25 +84,19 @@ NeuralBrdf NeuralBrdf::load(const std::filesystem::path& path) {
 }
 
 NeuralBrdf NeuralBrdf::parse(std::string_view text, const std::string& source) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    const auto& pos = e.source().begin;
-    throw InputError(source + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column) +
-                     ": TOML syntax error: " + std::string(e.description()));
-  }
-  const std::string format = requireString(root, "format", source);
+  const toml::table root = parseToml(text, source);
+  const Place top{source, ""};
+  const std::string format = requireString(root, "format", top);
   if (format != kFormat)
     throw InputError(source + ": format '" + format + "' is not '" + std::string(kFormat) + "' (not a glossy Neural BRDF file)");
-  if (const std::string input = requireString(root, "input", source); input != "half-difference")
+  if (const std::string input = requireString(root, "input", top); input != "half-difference")
     throw InputError(source + ": input '" + input + "': only 'half-difference' is known");
-  if (const std::string output = requireString(root, "output", source); output != "expm1")
+  if (const std::string output = requireString(root, "output", top); output != "expm1")
     throw InputError(source + ": output '" + output + "': only 'expm1' is known");
 
   NeuralBrdf n;
   n.source_ = source;
-  n.material_ = requireString(root, "material", source);
+  n.material_ = requireString(root, "material", top);
   const toml::node* layersNode = root.get("layer");
   const toml::array* layers = layersNode ? layersNode->as_array() : nullptr;
   if (!layers || !layers->is_array_of_tables() || layers->empty())
@@ -107,24 +106,25 @@ NeuralBrdf NeuralBrdf::parse(std::string_view text, const std::string& source) {
   int inputs = kInputs;
   for (size_t k = 0; k < layers->size(); ++k) {
     const toml::table& t = *(*layers)[k].as_table();
-    const std::string where = at(source, t) + "layer " + std::to_string(k + 1);
+    const Place place{source, "layer " + std::to_string(k + 1)};
+    const std::string where = tomlAt(source, t) + place.table;
     Layer layer;
-    layer.inputs = requireSize(t, "inputs", kMaxWidth, where);
-    layer.outputs = requireSize(t, "outputs", kMaxWidth, where);
+    layer.inputs = requireSize(t, "inputs", kMaxWidth, place);
+    layer.outputs = requireSize(t, "outputs", kMaxWidth, place);
     if (layer.inputs != inputs)
       throw InputError(where + ": takes " + std::to_string(layer.inputs) + " inputs, but " + std::to_string(inputs) +
                        " come to it");
-    const std::string activation = requireString(t, "activation", where);
+    const std::string activation = requireString(t, "activation", place);
     if (activation != "relu" && activation != "linear")
       throw InputError(where + ": activation '" + activation + "': only 'relu' and 'linear' are known");
     layer.relu = activation == "relu";
     // The file's rows are outputs; kept input-major, as evalAngles reads them.
-    const std::vector<double> rows = requireNumbers(t, "weights", size_t(layer.inputs) * size_t(layer.outputs), where);
+    const std::vector<double> rows = requireNumbers(t, "weights", size_t(layer.inputs) * size_t(layer.outputs), place);
     layer.weights.resize(rows.size());
     for (int o = 0; o < layer.outputs; ++o)
       for (int i = 0; i < layer.inputs; ++i)
         layer.weights[size_t(i) * size_t(layer.outputs) + size_t(o)] = rows[size_t(o) * size_t(layer.inputs) + size_t(i)];
-    layer.biases = requireNumbers(t, "biases", size_t(layer.outputs), where);
+    layer.biases = requireNumbers(t, "biases", size_t(layer.outputs), place);
     inputs = layer.outputs;
     n.layers_.push_back(std::move(layer));
   }

@@ -1,9 +1,8 @@
 #include "materials/params/material_file.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/toml_input.h"
 #include "materials/models/registry.h"
-
-#include <toml++/toml.h>
 
 #include <algorithm>
 #include <charconv>
@@ -73,13 +72,6 @@ std::string quoteToml(std::string_view s) {
   return out + "\"";
 }
 
-// "FILE:LINE: " for a node with a known position, else "FILE: ".
-std::string at(const std::string& source, const toml::node& node) {
-  const auto& pos = node.source().begin;
-  if (pos.line == 0) return source + ": ";
-  return source + ":" + std::to_string(pos.line) + ": ";
-}
-
 std::optional<double> asNumber(const toml::node& node) {
   if (auto i = node.as_integer()) return static_cast<double>(i->get());
   if (auto f = node.as_floating_point()) return f->get();
@@ -107,7 +99,7 @@ void requireString(const toml::table& t, std::string_view key, const std::string
 Fit readFit(const toml::table& t, size_t index, const std::string& source) {
   Fit fit;
   fit.id = {stringOr(t, "model"), stringOr(t, "metric")};
-  const std::string where = at(source, t) + fitLabel(index, fit.id);
+  const std::string where = tomlAt(source, t) + fitLabel(index, fit.id);
   requireString(t, "model", where);
   requireString(t, "metric", where);
   const ModelInfo* model = &requireModel(fit.id.model, where + ": key 'model'");
@@ -115,7 +107,7 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
 
   for (auto&& [k, node] : t) {
     const std::string key(k.str());
-    const std::string here = at(source, node) + fitLabel(index, fit.id) + ": key '" + key + "'";
+    const std::string here = tomlAt(source, node) + fitLabel(index, fit.id) + ": key '" + key + "'";
     if (key == "model" || key == "metric") continue;
     if (key == "source" || key == "settings") {
       if (!node.is_string()) throw InputError(here + ": must be a string");
@@ -236,19 +228,12 @@ void validateFit(const Fit& fit, const std::string& context) {
 }
 
 MaterialFile parseMaterialToml(std::string_view text, const std::string& source) {
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    const auto& pos = e.source().begin;
-    throw InputError(source + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column) +
-                     ": TOML syntax error: " + std::string(e.description()));
-  }
+  const toml::table root = parseToml(text, source);
   MaterialFile m;
   m.path = source;
   for (auto&& [k, node] : root) {
     const std::string key(k.str());
-    const std::string here = at(source, node) + "key '" + key + "'";
+    const std::string here = tomlAt(source, node) + "key '" + key + "'";
     if (key == "name" || key == "measured" || key == "source") {
       if (!node.is_string()) throw InputError(here + ": must be a string");
       const std::string value = node.as_string()->get();
@@ -260,7 +245,7 @@ MaterialFile parseMaterialToml(std::string_view text, const std::string& source)
       for (size_t i = 0; i < fits->size(); ++i) {
         Fit fit = readFit(*fits->get(i)->as_table(), i, source);
         if (m.find(fit.id))
-          throw InputError(at(source, *fits->get(i)) + fitLabel(i, fit.id) + ": a second " + fit.id.str() +
+          throw InputError(tomlAt(source, *fits->get(i)) + fitLabel(i, fit.id) + ": a second " + fit.id.str() +
                            " fit (a material has at most one fit per model and metric)");
         m.put(std::move(fit));
       }
