@@ -56,7 +56,9 @@ double processCpuSeconds() {
 int writeSky(const std::string& path) {
   const LatLongImage sky = makeDefaultSky();
   RgbImage image(sky.width, sky.height);
-  image.pixels = sky.rgb;
+  for (int row = 0; row < sky.height; ++row)
+    for (int column = 0; column < sky.width; ++column)
+      for (int c = 0; c < 3; ++c) image.at(column, row)[c] = sky.at(column, row)[c];
   writeExr(path, image, {{"glossy:env", std::string("default sky (renderer/lights/default_sky.cpp)")}}, PixelType::Float);
   return 0;
 }

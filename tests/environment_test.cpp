@@ -382,11 +382,15 @@ TEST(Environment, MapLooksUpTheBilinearValueAndTheCellsValue) {
   const int w = 37, h = 11;
   std::mt19937_64 rng(29);
   std::uniform_real_distribution<float> texel(0.0f, 4.0f);
-  LatLongImage image{w, h, std::vector<float>(std::size_t(w) * h * 3)};
-  for (float& x : image.rgb) x = texel(rng);
+  LatLongImage image(w, h);
+  for (int row = 0; row < h; ++row)
+    for (int column = 0; column < w; ++column)
+      for (int c = 0; c < 3; ++c) image.at(column, row)[c] = texel(rng);
   std::vector<float> values(std::size_t(w) * (h - 1));
   for (float& x : values) x = texel(rng);
-  const LatLongMap map(image, values);
+  LatLongMap map(image);
+  for (int row = 0; row + 1 < h; ++row)
+    for (int column = 0; column < w; ++column) map.setCellValue(column, row, values[std::size_t(row) * w + column]);
   std::uniform_real_distribution<double> uniform;
   for (int row = 0; row + 1 < h; ++row)
     for (int column = 0; column < w; ++column)

@@ -10,12 +10,16 @@
 namespace glossy {
 
 BlockedDistribution2D::BlockedDistribution2D(std::span<const double> values, std::size_t width, std::size_t height)
+    : BlockedDistribution2D(width, height, [&](std::size_t y, std::span<double> out) {
+        if (values.size() != width * height)
+          throw std::invalid_argument("BlockedDistribution2D: table size does not match width × height");
+        std::copy_n(values.begin() + std::ptrdiff_t(y * width), width, out.begin());
+      }) {}
+
+BlockedDistribution2D::BlockedDistribution2D(std::size_t width, std::size_t height, const RowValues& rowValues)
     : width_(width) {
-  if (width == 0 || height == 0 || values.size() != width * height)
+  if (width == 0 || height == 0)
     throw std::invalid_argument("BlockedDistribution2D: table size does not match width × height");
-  for (double v : values)
-    if (!(v >= 0.0) || !std::isfinite(v))
-      throw std::invalid_argument("BlockedDistribution2D: negative or non-finite value");
 
   // Blocks per level, bottom (over cells) first, up to a single top block.
   std::vector<std::size_t> counts{(width + kBlock - 1) / kBlock};
@@ -27,14 +31,17 @@ BlockedDistribution2D::BlockedDistribution2D(std::span<const double> values, std
   }
   blocks_.resize(height * blocksPerRow_);
 
-  std::vector<double> rowSums(height), mass, parentMass;
+  std::vector<double> rowSums(height), row(width), mass, parentMass;
   for (std::size_t y = 0; y < height; ++y) {
-    const double* row = &values[y * width];
+    rowValues(y, row);
+    for (double v : row)
+      if (!(v >= 0.0) || !std::isfinite(v))
+        throw std::invalid_argument("BlockedDistribution2D: negative or non-finite value");
     double sum = 0.0;
     for (std::size_t x = 0; x < width; ++x) sum += row[x];
     rowSums[y] = sum;
     // A row with no weight is drawn only from an all-zero table, which is uniform: its cells weigh alike.
-    mass.assign(row, row + width);
+    mass.assign(row.begin(), row.end());
     if (!(sum > 0.0)) std::fill(mass.begin(), mass.end(), 1.0);
 
     for (std::size_t level = counts.size(); level-- > 0;) {

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -42,6 +43,10 @@ class BlockedDistribution2D {
   // values: width × height non-negative, finite weights, row-major (throws std::invalid_argument
   // otherwise, or if the size does not match).
   BlockedDistribution2D(std::span<const double> values, std::size_t width, std::size_t height);
+  // The same, with each row's weights written by rowValues(row, out) (out: width long), called once per
+  // row in order: a large table need never exist whole (the environment light of a 16k map).
+  using RowValues = std::function<void(std::size_t row, std::span<double> out)>;
+  BlockedDistribution2D(std::size_t width, std::size_t height, const RowValues& rowValues);
 
   std::size_t width() const { return width_; }
   std::size_t height() const { return marginal_.size(); }

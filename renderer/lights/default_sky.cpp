@@ -67,12 +67,11 @@ Rgb radianceToward(const Vec3& d) {
 }  // namespace
 
 LatLongImage makeDefaultSky() {
-  LatLongImage image{kWidth, kHeight, std::vector<float>(std::size_t(kWidth) * kHeight * 3)};
+  LatLongImage image(kWidth, kHeight);
   for (int row = 0; row < kHeight; ++row)
     for (int column = 0; column < kWidth; ++column) {
       const Rgb value = radianceToward(directionFromLatLong(image.texelUv(column, row)));
-      float* texel = &image.rgb[(std::size_t(row) * kWidth + std::size_t(column)) * 3];
-      for (int c = 0; c < 3; ++c) texel[c] = float(value[c]);
+      for (int c = 0; c < 3; ++c) image.at(column, row)[c] = float(value[c]);
     }
   return image;
 }

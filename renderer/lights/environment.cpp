@@ -58,26 +58,23 @@ LatLongImage readLatLong(const std::filesystem::path& path) {
   if (spec.nchannels < 3)
     throw fail("environment map has " + std::to_string(spec.nchannels) + " channel(s), needs RGB or RGBA");
 
-  LatLongImage image{spec.width, spec.height, std::vector<float>(std::size_t(spec.width) * spec.height * 3)};
-  // Channels 0–2 only, converted to float by OpenImageIO: alpha and any extra layers are not radiance.
-  if (!input->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.rgb.data()))
+  // Rows are interpolated pole to pole, so a single row stands for both poles (copied below).
+  LatLongImage image(spec.width, std::max(spec.height, 2));
+  // Channels 0–2 only, converted to float by OpenImageIO straight into the texels' RGB (the stride skips
+  // the spare float): alpha and any extra layers are not radiance.
+  if (!input->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.texels.data(), LatLongImage::kStride * sizeof(float)))
     throw fail("cannot read environment map pixels (" + input->geterror() + ")");
   input->close();
+  if (spec.height == 1) std::copy_n(image.at(0, 0), std::size_t(spec.width) * LatLongImage::kStride, image.at(0, 1));
 
-  for (std::size_t i = 0; i < image.rgb.size(); ++i) {
-    const float value = image.rgb[i];
-    if (!std::isfinite(value) || value < 0.0f) {
-      const std::size_t texel = i / 3;
-      throw fail("texel (" + std::to_string(texel % std::size_t(image.width)) + ", " +
-                 std::to_string(texel / std::size_t(image.width)) + ") is " +
-                 (std::isfinite(value) ? "negative" : "not finite") + "; radiance must be finite and ≥ 0");
-    }
-  }
-  // Rows are interpolated pole to pole, so a single row stands for both poles.
-  if (image.height == 1) {
-    image.rgb.insert(image.rgb.end(), image.rgb.begin(), image.rgb.end());
-    image.height = 2;
-  }
+  for (int row = 0; row < image.height; ++row)
+    for (int column = 0; column < image.width; ++column)
+      for (int c = 0; c < 3; ++c) {
+        const float value = image.at(column, row)[c];
+        if (!std::isfinite(value) || value < 0.0f)
+          throw fail("texel (" + std::to_string(column) + ", " + std::to_string(row) + ") is " +
+                     (std::isfinite(value) ? "negative" : "not finite") + "; radiance must be finite and ≥ 0");
+      }
   return image;
 }
 
@@ -149,57 +146,59 @@ struct Environment::Impl {
     return {dir, map.interpolate(at), solidAngleDensity(density, sinTheta)};
   }
 
-  void buildDistribution(const LatLongImage& image) {
+  // The map takes the image's texels; the distribution is built a row of cells at a time from them, and
+  // its densities go into the map's cell values: nothing the size of the map is made besides the texels
+  // (16 bytes each) and the distribution's blocks (about 2).
+  void buildDistribution(LatLongImage image) {
     const int width = image.width, cells = image.height - 1;
-    std::vector<double> rowLuminance(std::size_t(width) * image.height);
-    for (int row = 0; row < image.height; ++row)
-      for (int column = 0; column < width; ++column)
-        rowLuminance[std::size_t(row) * width + column] = luminance(image.texel(column, row));
+    map = LatLongMap(std::move(image));
 
-    rowSin.resize(std::size_t(image.height));
-    for (int row = 0; row < image.height; ++row)
+    rowSin.resize(std::size_t(cells) + 1);
+    for (int row = 0; row <= cells; ++row)
       rowSin[std::size_t(row)] = std::sin(kPi * std::clamp(double(row), 0.25, cells - 0.25) / cells);
 
-    std::vector<double> weights(std::size_t(width) * cells);
+    // A row of texels' luminance; a cell row reads two.
+    std::vector<double> top(static_cast<std::size_t>(width)), bottom(static_cast<std::size_t>(width));
+    const auto luminances = [&](int row, std::vector<double>& out) {
+      for (int column = 0; column < width; ++column) out[std::size_t(column)] = luminance(map.texel(column, row));
+    };
     double radiance = 0.0;  // Σ over the cells of mean luminance × mean sin θ
-    for (int cell = 0; cell < cells; ++cell) {
+    distribution = BlockedDistribution2D(std::size_t(width), std::size_t(cells), [&](std::size_t y, std::span<double> weights) {
+      const int cell = int(y);
+      luminances(cell, top);
+      luminances(cell + 1, bottom);
       // Mean of sin θ over the cell's latitude band: the Jacobian of (u, v) ↦ direction, up to 2π².
       const double v0 = double(cell) / cells, v1 = double(cell + 1) / cells;
       const double meanSinTheta = (std::cos(kPi * v0) - std::cos(kPi * v1)) / (kPi * (v1 - v0));
-      const double* top = &rowLuminance[std::size_t(cell) * width];
-      const double* bottom = top + width;
       const double sinTop = rowSin[std::size_t(cell)], sinBottom = rowSin[std::size_t(cell) + 1];
       for (int column = 0; column < width; ++column) {
-        const int next = column + 1 == width ? 0 : column + 1;
+        const std::size_t c = std::size_t(column), next = column + 1 == width ? 0 : c + 1;
         // The patch's integral is its corners' mean; it is zero only where the whole patch is black, so
         // every direction with radiance keeps a non-zero pdf (needed by MIS).
-        const BilinearPatch patch{top[column] * sinTop, top[next] * sinTop, bottom[column] * sinBottom,
-                                  bottom[next] * sinBottom};
-        weights[std::size_t(cell) * width + column] = patch.mean();
-        radiance += 0.25 * (top[column] + top[next] + bottom[column] + bottom[next]) * meanSinTheta;
+        const BilinearPatch patch{top[c] * sinTop, top[next] * sinTop, bottom[c] * sinBottom, bottom[next] * sinBottom};
+        weights[c] = patch.mean();
+        radiance += 0.25 * (top[c] + top[next] + bottom[c] + bottom[next]) * meanSinTheta;
       }
-    }
+    });
     // Σ mean luminance × mean sin θ × (the cells' area, 2π²/(W·cells)), over 4π.
     meanLuminance = radiance * kPi / (2.0 * width * cells);
-    distribution = BlockedDistribution2D(weights, std::size_t(width), std::size_t(cells));
-    std::vector<float> densities(weights.size());
     for (int cell = 0; cell < cells; ++cell)
       for (int column = 0; column < width; ++column) {
         const double d = distribution.cellDensity(std::size_t(column), std::size_t(cell));
-        float& f = densities[std::size_t(cell) * width + column];
-        f = float(d);
+        float f = float(d);
         // A cell that can be drawn keeps a positive pdf, however faint (MIS divides by it).
         if (d > 0.0 && f == 0.0f) f = std::numeric_limits<float>::denorm_min();
+        map.setCellValue(column, cell, f);
       }
-    map = LatLongMap(image, densities);
   }
 
-  static std::unique_ptr<Impl> fromMap(const LatLongImage& image, double rotateDegrees, std::string description) {
+  static std::unique_ptr<Impl> fromMap(LatLongImage image, double rotateDegrees, std::string description) {
     auto impl = std::make_unique<Impl>();
     impl->description = withRotation(std::move(description), rotateDegrees);
     impl->uOffset = wrapUnit(rotateDegrees / 360.0);
-    impl->buildDistribution(image);
-    impl->grid = LatLongGrid(image.width, image.height, impl->uOffset);
+    const int width = image.width, height = image.height;
+    impl->buildDistribution(std::move(image));
+    impl->grid = LatLongGrid(width, height, impl->uOffset);
     return impl;
   }
 };

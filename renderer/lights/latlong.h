@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace glossy {
@@ -32,15 +33,24 @@ inline Vec3 directionFromLatLong(Vec2 uv) {
   return {sinTheta * std::sin(phi), std::cos(theta), -sinTheta * std::cos(phi)};
 }
 
-// Linear RGB texels, row-major from the top (+Y) row, 3 floats per texel: float halves the memory of a
-// 4k map and is all that .hdr/.exr files hold anyway.
+// Linear RGB texels, row-major from the top (+Y) row, in float (all that .hdr/.exr files hold anyway), each
+// beside a spare float: the layout LatLongMap keeps, so that the image becomes the map without a copy (a
+// 16k map's texels are 2 GB).
 struct LatLongImage {
+  static constexpr std::size_t kStride = 4;  // floats per texel: r, g, b, spare
   int width = 0;
   int height = 0;  // at least 2: rows are interpolated pole to pole
-  std::vector<float> rgb;
+  std::vector<float> texels;
 
+  LatLongImage() = default;
+  LatLongImage(int w, int h) : width(w), height(h), texels(std::size_t(w) * std::size_t(h) * kStride, 0.0f) {}
+
+  float* at(int column, int row) { return &texels[(std::size_t(row) * std::size_t(width) + std::size_t(column)) * kStride]; }
+  const float* at(int column, int row) const {
+    return &texels[(std::size_t(row) * std::size_t(width) + std::size_t(column)) * kStride];
+  }
   Rgb texel(int column, int row) const {
-    const float* t = &rgb[(std::size_t(row) * std::size_t(width) + std::size_t(column)) * 3];
+    const float* t = at(column, row);
     return {t[0], t[1], t[2]};
   }
 
@@ -69,22 +79,22 @@ inline LatLongPosition latLongPosition(Vec2 uv, int width, int height) {
 }
 
 // A LatLongImage's texels for the environment light's random lookups, and their bilinear interpolation at
-// a lookup position, with a float per cell (bilinear patch) that the caller gives: the light's sampling
-// density, which a lookup then reads from the lines it loads anyway. 16 bytes a texel, its RGB beside the
-// value of the patch of which it is the top-left corner; a lookup's two texels of a row share a line
-// three times in four.
+// a lookup position, with a float per cell (bilinear patch) that the caller sets: the light's sampling
+// density, which a lookup then reads from the lines it loads anyway. 16 bytes a texel (the image's own
+// buffer), its RGB beside the value of the patch of which it is the top-left corner; a lookup's two
+// texels of a row share a line three times in four.
 class LatLongMap {
  public:
   LatLongMap() = default;
-  // cellValues: W × (H − 1), row-major (cell (i, j) is the patch between texels (i, j) and (i + 1, j + 1)).
-  LatLongMap(const LatLongImage& image, const std::vector<float>& cellValues)
-      : width_(image.width), height_(image.height) {
-    const std::size_t texels = std::size_t(width_) * std::size_t(height_);
-    texels_.assign(texels * 4, 0.0f);
-    for (std::size_t t = 0; t < texels; ++t) {
-      for (int c = 0; c < 3; ++c) texels_[4 * t + std::size_t(c)] = image.rgb[3 * t + std::size_t(c)];
-      texels_[4 * t + 3] = t < cellValues.size() ? cellValues[t] : 0.0f;
-    }
+  // The image's buffer becomes the map's; every cell's value is 0 until set.
+  explicit LatLongMap(LatLongImage image) : width_(image.width), height_(image.height), texels_(std::move(image.texels)) {
+    for (std::size_t t = 0; t < texels_.size(); t += 4) texels_[t + 3] = 0.0f;
+  }
+  // Cell (i, j) is the patch between texels (i, j) and (i + 1, j + 1); j < H − 1.
+  void setCellValue(int column, int row, float value) { texels_[offset(column, row) + 3] = value; }
+  Rgb texel(int column, int row) const {
+    const float* t = data(column, row);
+    return {t[0], t[1], t[2]};
   }
 
   int width() const { return width_; }
@@ -99,7 +109,7 @@ class LatLongMap {
     return top * (1.0 - p.fy) + bottom * p.fy;
   }
   // The value given for the cell the lookup falls in.
-  float cellValue(const LatLongPosition& p) const { return texel(p.c0, p.r0)[3]; }
+  float cellValue(const LatLongPosition& p) const { return data(p.c0, p.r0)[3]; }
   // The luminance of each of the lookup's corners: (c0, r0), (c1, r0), (c0, r0 + 1), (c1, r0 + 1).
   void cornerLuminances(const LatLongPosition& p, double (&out)[4]) const {
     const float* corner[4];
@@ -118,15 +128,15 @@ class LatLongMap {
   }
 
  private:
-  const float* texel(int column, int row) const {
-    return &texels_[(std::size_t(row) * std::size_t(width_) + std::size_t(column)) * 4];
-  }
+  static_assert(LatLongImage::kStride == 4, "a texel is its RGB and its cell's value");
+  std::size_t offset(int column, int row) const { return (std::size_t(row) * std::size_t(width_) + std::size_t(column)) * 4; }
+  const float* data(int column, int row) const { return &texels_[offset(column, row)]; }
   // The corners (c0, r0), (c1, r0), (c0, r0 + 1), (c1, r0 + 1).
   void corners(const LatLongPosition& p, const float* (&out)[4]) const {
-    out[0] = texel(p.c0, p.r0);
-    out[1] = texel(p.c1, p.r0);
-    out[2] = texel(p.c0, p.r0 + 1);
-    out[3] = texel(p.c1, p.r0 + 1);
+    out[0] = data(p.c0, p.r0);
+    out[1] = data(p.c1, p.r0);
+    out[2] = data(p.c0, p.r0 + 1);
+    out[3] = data(p.c1, p.r0 + 1);
   }
 
   int width_ = 0, height_ = 0;
