@@ -4,6 +4,7 @@
 #include "materials/core/input_error.h"
 #include "renderer/scene/embree_scene.h"
 #include "renderer/scene/scene.h"
+#include "tests/support/gltf_doc.h"
 #include "tests/support/test_support.h"
 
 #include <nlohmann/json.hpp>
@@ -25,109 +26,7 @@ namespace {
 
 using nlohmann::json;
 
-constexpr int kUnsignedByte = 5121, kUnsignedShort = 5123, kUnsignedInt = 5125, kFloat = 5126;
 constexpr int kLines = 1;
-
-std::string base64(const std::string& bytes) {
-  static const char* const digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  size_t i = 0;
-  for (; i + 2 < bytes.size(); i += 3) {
-    const uint32_t n = uint32_t(uint8_t(bytes[i])) << 16 | uint32_t(uint8_t(bytes[i + 1])) << 8 | uint8_t(bytes[i + 2]);
-    for (int s = 18; s >= 0; s -= 6) out += digits[(n >> s) & 63];
-  }
-  if (i + 1 == bytes.size()) {
-    const uint32_t n = uint32_t(uint8_t(bytes[i])) << 16;
-    out += {digits[n >> 18], digits[(n >> 12) & 63], '=', '='};
-  } else if (i + 2 == bytes.size()) {
-    const uint32_t n = uint32_t(uint8_t(bytes[i])) << 16 | uint32_t(uint8_t(bytes[i + 1])) << 8;
-    out += {digits[n >> 18], digits[(n >> 12) & 63], digits[(n >> 6) & 63], '='};
-  }
-  return out;
-}
-
-template <typename T>
-std::string bytesOf(const std::vector<T>& values) {
-  return std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
-}
-
-// A glTF document assembled by a test: JSON plus one binary buffer, written as .gltf (external or
-// embedded buffer) or .glb.
-struct GltfDoc {
-  json doc = {{"asset", {{"version", "2.0"}}}};
-  std::string bin;
-
-  int push(const char* array, json item) {
-    doc[array].push_back(std::move(item));
-    return int(doc[array].size() - 1);
-  }
-  int addView(const std::string& bytes, int stride = 0) {
-    while (bin.size() % 4 != 0) bin += '\0';
-    json view = {{"buffer", 0}, {"byteOffset", bin.size()}, {"byteLength", bytes.size()}};
-    if (stride) view["byteStride"] = stride;
-    bin += bytes;
-    return push("bufferViews", view);
-  }
-  int addAccessor(int view, int componentType, const char* type, size_t count, size_t byteOffset = 0) {
-    return push("accessors", {{"bufferView", view},
-                              {"componentType", componentType},
-                              {"type", type},
-                              {"count", count},
-                              {"byteOffset", byteOffset}});
-  }
-  int addPositions(const std::vector<glm::vec3>& p) {
-    return addAccessor(addView(bytesOf(p)), kFloat, "VEC3", p.size());
-  }
-  int addIndices(const std::vector<uint32_t>& indices, int componentType = kUnsignedInt) {
-    std::string bytes;
-    for (uint32_t i : indices) {
-      if (componentType == kUnsignedByte) bytes += char(uint8_t(i));
-      if (componentType == kUnsignedShort) bytes += bytesOf(std::vector<uint16_t>{uint16_t(i)});
-      if (componentType == kUnsignedInt) bytes += bytesOf(std::vector<uint32_t>{i});
-    }
-    return addAccessor(addView(bytes), componentType, "SCALAR", indices.size());
-  }
-  // A mesh of one primitive and a root node holding it; returns the node.
-  int addMeshNode(const std::string& name, json primitive, json node = json::object()) {
-    const int mesh = push("meshes", {{"name", name}, {"primitives", json::array({primitive})}});
-    node["mesh"] = mesh;
-    node["name"] = name + "Node";
-    return push("nodes", node);
-  }
-  void setScene(const std::vector<int>& roots) {
-    doc["scenes"] = json::array({{{"nodes", roots}}});
-    doc["scene"] = 0;
-  }
-
-  json withBuffer(json uri) const {
-    json d = doc;
-    json buffer = {{"byteLength", bin.size()}};
-    if (!uri.is_null()) buffer["uri"] = uri;
-    d["buffers"] = json::array({buffer});
-    return d;
-  }
-  std::filesystem::path writeExternal(const TempDir& dir, const std::string& name) const {
-    writeText(dir / (name + ".bin"), bin);
-    writeText(dir / (name + ".gltf"), withBuffer(name + ".bin").dump());
-    return dir / (name + ".gltf");
-  }
-  std::filesystem::path writeEmbedded(const TempDir& dir, const std::string& name) const {
-    writeText(dir / (name + ".gltf"), withBuffer("data:application/octet-stream;base64," + base64(bin)).dump());
-    return dir / (name + ".gltf");
-  }
-  std::filesystem::path writeGlb(const TempDir& dir, const std::string& name) const {
-    std::string text = withBuffer(nullptr).dump();
-    while (text.size() % 4 != 0) text += ' ';
-    std::string data = bin;
-    while (data.size() % 4 != 0) data += '\0';
-    auto u32 = [](uint32_t x) { return bytesOf(std::vector<uint32_t>{x}); };
-    const std::string glb = "glTF" + u32(2) + u32(uint32_t(12 + 8 + text.size() + 8 + data.size())) +
-                            u32(uint32_t(text.size())) + u32(0x4E4F534A) + text + u32(uint32_t(data.size())) +
-                            u32(0x004E4942) + data;
-    writeText(dir / (name + ".glb"), glb);
-    return dir / (name + ".glb");
-  }
-};
 
 // The unit square in z = 0, facing +Z: triangles (0,1,2) and (0,2,3).
 const std::vector<glm::vec3> kQuad = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace glossy {
@@ -21,6 +22,14 @@ class CameraRays {
       : perspective_(camera.type == Camera::Type::Perspective), cameraToWorld_(camera.cameraToWorld),
         width_(width), height_(height) {
     if (perspective_) {
+      // Only the axes' directions matter to a perspective camera: a node scaled by 1e-200 or 1e200 (checked
+      // non-singular by the loader) is brought to unit scale by a power of two, which leaves the normalised
+      // directions bit for bit what they were and keeps them from underflowing or overflowing.
+      double scale = 0.0;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) scale = std::max(scale, std::abs(cameraToWorld_[i][j]));
+      if (scale > 0.0 && std::isfinite(scale))
+        for (int i = 0; i < 3; ++i) cameraToWorld_[i] = std::ldexp(1.0, -std::ilogb(scale)) * cameraToWorld_[i];
       halfExtent_.y = std::tan(0.5 * camera.yfov);
       halfExtent_.x = halfExtent_.y * double(width) / double(height);
       origin_ = Vec3(camera.cameraToWorld[3]);

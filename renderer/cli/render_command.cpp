@@ -46,7 +46,7 @@ int runRender(RenderOptions o) {
   const Brdf defaultBrdf = override ? override->brdf : Lambertian{Rgb(0.5)};
   const RenderScene scene{&description, &bvh, std::move(binding.brdfs), defaultBrdf, &environment};
 
-  const Camera& camera = o.scene.cameraOf(description);
+  const Camera camera = o.scene.cameraOf(description, double(o.settings.width) / double(o.settings.height));
 
   o.settings.cosineBrdfSampling = o.brdfSampling == "cosine";
   RenderStats stats;

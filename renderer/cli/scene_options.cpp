@@ -2,8 +2,10 @@
 
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "renderer/camera/auto_camera.h"
 
 #include <cmath>
+#include <iostream>
 
 namespace glossy::cli {
 
@@ -22,7 +24,7 @@ Rgb parseRgb(const std::string& text, const std::string& option) {
 
 void SceneOptions::addTo(CLI::App* app) {
   app->add_option("--scene", scene, "glTF scene (.gltf or .glb); default: scenes/preview.gltf");
-  app->add_option("--camera", camera, "Camera by name (default: the scene's first)");
+  app->add_option("--camera", camera, "Camera by name, or auto: frame the bound object from the preview scene's angle (default: the scene's first; auto when it has none)");
   auto* file = app->add_option("--env", env, "Lat-long environment map (.exr, .hdr); default: the built-in sky");
   auto* constant = app->add_option("--env-constant", envConstant, "Constant environment radiance: V or R,G,B");
   file->excludes(constant);
@@ -39,9 +41,14 @@ Environment SceneOptions::environment() const {
   return Environment::makeDefault(envRotate);
 }
 
-const Camera& SceneOptions::cameraOf(const SceneDescription& description) const {
+Camera SceneOptions::cameraOf(const SceneDescription& description, double aspect) const {
   const std::string where = description.source.string();
-  if (description.cameras.empty()) throw InputError(where + ": the scene has no camera");
+  if (camera == "auto") return autoCamera(description, aspect);
+  if (description.cameras.empty()) {
+    if (!camera.empty()) throw InputError(where + ": the scene has no camera named '" + camera + "' (it has none; try --camera auto)");
+    std::cerr << "glossy: " << where << " has no camera: framing it as --camera auto does\n";
+    return autoCamera(description, aspect);
+  }
   if (camera.empty()) return description.cameras.front();
   for (const Camera& c : description.cameras)
     if (c.name == camera) return c;

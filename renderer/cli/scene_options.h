@@ -20,8 +20,10 @@ struct SceneOptions {
   // --env FILE (lat-long .exr/.hdr), --env-constant V or R,G,B, or the built-in sky; --env-rotate turns maps
   // and the sky about +Y. InputError naming the option or the file for anything malformed.
   Environment environment() const;
-  // --camera NAME, or the scene's first camera; InputError naming the scene when there is none.
-  const Camera& cameraOf(const SceneDescription& description) const;
+  // --camera NAME, or the scene's first camera; --camera auto, or a scene without cameras: autoCamera
+  // framing the bound object for an image of width / height `aspect` (a scene without cameras says so on
+  // stderr). InputError naming the scene when no camera has the name.
+  Camera cameraOf(const SceneDescription& description, double aspect) const;
 };
 
 }  // namespace glossy::cli

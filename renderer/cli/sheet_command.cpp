@@ -37,12 +37,14 @@ struct SheetOptions {
 // What every sheet of one run shares: the scene, its BVH, the environment, the camera.
 struct Stage {
   SceneDescription description;
-  const Camera& camera;
+  Camera camera;
   EmbreeScene bvh;
   Environment environment;
 
-  explicit Stage(const SceneOptions& o)
-      : description(loadGltf(o.scenePath())), camera(o.cameraOf(description)), bvh(description), environment(o.environment()) {}
+  // `aspect`: a panel's width / height, which the automatic camera frames for.
+  Stage(const SceneOptions& o, double aspect)
+      : description(loadGltf(o.scenePath())), camera(o.cameraOf(description, aspect)), bvh(description),
+        environment(o.environment()) {}
 };
 
 // The measured data of a material: --measured, else the file's `measured` under --merl-dir, $GLOSSY_MERL_DIR
@@ -144,7 +146,7 @@ SheetOptions withPassLimits(const SheetOptions& o) {
 
 int runSheet(const SheetOptions& options) {
   const SheetOptions o = withPassLimits(options);
-  const Stage stage(o.scene);
+  const Stage stage(o.scene, double(o.settings.width) / double(o.settings.height));
   SheetOptions single = o;
   single.settings.progress = isatty(STDERR_FILENO);
   makeSheet(stage, o.material, single, o.output, o.measured);
@@ -175,7 +177,7 @@ int runSheets(const SheetOptions& options) {
   // Validate every file before rendering any, so a typo fails in a second, not after an hour.
   for (const auto& f : files) loadMaterialFile(f);
 
-  const Stage stage(o.scene);
+  const Stage stage(o.scene, double(o.settings.width) / double(o.settings.height));
   SheetOptions batch = o;
   batch.settings.progress = false;
   const auto start = std::chrono::steady_clock::now();

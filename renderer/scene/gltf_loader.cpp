@@ -4,6 +4,7 @@
 #include "renderer/scene/scene.h"
 
 #include "materials/core/input_error.h"
+#include "renderer/scene/gltf_preflight.h"
 
 #include <tiny_gltf.h>
 
@@ -27,19 +28,9 @@ namespace glossy {
 
 namespace {
 
-// Messages are printed as a single line by the command line; names and tinygltf's errors may span several.
-std::string oneLine(std::string text) {
-  while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
-  std::string out;
-  for (char c : text) {
-    if (c == '\n') {
-      out += "; ";
-    } else if (c != '\r') {
-      out += c;
-    }
-  }
-  return out;
-}
+// Messages are printed as a single line by the command line; names and tinygltf's errors may span several
+// and may quote bytes of a binary file.
+std::string oneLine(const std::string& text) { return printableLine(text); }
 
 std::string label(const char* kind, const std::string& name, int index) {
   return name.empty() ? std::string(kind) + " " + std::to_string(index) : std::string(kind) + " '" + name + "'";
@@ -104,14 +95,27 @@ class GltfReader {
 
   SceneDescription read() {
     scene_.source = path_;
+    if (model_.defaultScene < -1 || (model_.defaultScene >= 0 && size_t(model_.defaultScene) >= model_.scenes.size()))
+      fail("scene " + std::to_string(model_.defaultScene) + " does not exist (the file has " +
+           std::to_string(model_.scenes.size()) + " scenes)");
     readMaterials();
     for (int root : rootNodes()) walk(root);
+    if (scene_.meshes.empty())
+      fail(skippedPrimitives_ > 0 ? "the scene has no TRIANGLES primitives (only points, lines or strips)"
+           : !singularNodes_.empty() ? "the scene has no triangle meshes (those of " + singularNodes_ +
+                                           " are under a singular transform)"
+                                     : "the scene has no triangle meshes");
     if (skippedPrimitives_ > 0)
       std::cerr << path_.string() << ": warning: skipped " << skippedPrimitives_
                 << " primitive(s) whose mode is not TRIANGLES\n";
-    if (scene_.meshes.empty())
-      fail(skippedPrimitives_ > 0 ? "the scene has no TRIANGLES primitives (only points, lines or strips)"
-                                  : "the scene has no triangle meshes");
+    if (!singularNodes_.empty())
+      std::cerr << oneLine("glossy: " + path_.string() + ": warning: skipped the meshes of " + singularNodes_ +
+                           ": their world transform is singular (a scale of 0 hides them)")
+                << "\n";
+    if (!emissiveTextures_.empty())
+      std::cerr << oneLine("glossy: " + path_.string() + ": warning: emissive textures are not supported: " +
+                           emissiveTextures_ + " emit nothing")
+                << "\n";
     std::stable_sort(cameraNodes_.begin(), cameraNodes_.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     for (auto& [node, camera] : cameraNodes_) scene_.cameras.push_back(std::move(camera));
@@ -147,6 +151,11 @@ class GltfReader {
         out.emission = Rgb(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]) * strength;
         if (!allFinite({glm::value_ptr(out.emission), 3}))
           fail(where + ": emissiveFactor × emissiveStrength overflows");
+        // The texture usually masks a few glowing details; its factor alone would light the whole surface.
+        if (m.emissiveTexture.index >= 0 && out.isEmissive()) {
+          out.emission = Rgb(0.0);
+          emissiveTextures_ += (emissiveTextures_.empty() ? "" : ", ") + where;
+        }
       }
       if (m.extras.Has("glossy")) {
         const tinygltf::Value& glossy = m.extras.Get("glossy");
@@ -186,7 +195,12 @@ class GltfReader {
   glm::dmat4 localMatrix(const tinygltf::Node& n, const std::string& where) const {
     if (!n.matrix.empty()) {
       if (n.matrix.size() != 16) fail(where + ": matrix must have 16 elements");
-      return glm::make_mat4(n.matrix.data());  // both column-major
+      const glm::dmat4 m = glm::make_mat4(n.matrix.data());  // both column-major
+      // glTF's matrices are affine (TRS); positions are read as if the last row were 0, 0, 0, 1.
+      if (!(std::abs(m[0][3]) <= 1e-6 && std::abs(m[1][3]) <= 1e-6 && std::abs(m[2][3]) <= 1e-6 &&
+            std::abs(m[3][3] - 1.0) <= 1e-6))
+        fail(where + ": matrix is not affine (its last row must be 0, 0, 0, 1)");
+      return m;
     }
     glm::dmat4 m(1.0);
     if (!n.translation.empty()) {
@@ -227,9 +241,27 @@ class GltfReader {
     }
   }
 
+  // A camera needs a position Embree can start rays from and three independent axes: a scale of 0 on it or
+  // a parent, a zero matrix or an overflowing translation would give rays that are not finite.
+  void checkCameraTransform(const glm::dmat4& world, const std::string& where) const {
+    for (int axis = 0; axis < 3; ++axis)
+      if (!(std::abs(world[3][axis]) <= kMaxSceneCoordinate))
+        fail(where + ": the camera's position is beyond ±1e15 in world space");
+    glm::dvec3 axes[3];
+    for (int i = 0; i < 3; ++i) {
+      const double len = robustLength(glm::dvec3(world[i]));
+      if (!(len > 0.0) || !std::isfinite(len))
+        fail(where + ": the camera's world transform is singular (a scale of 0 or a zero matrix on it or a parent)");
+      axes[i] = glm::dvec3(world[i]) / len;
+    }
+    if (!(std::abs(glm::dot(axes[0], glm::cross(axes[1], axes[2]))) > 1e-9))
+      fail(where + ": the camera's world transform is singular (its axes are coplanar)");
+  }
+
   void addCamera(const tinygltf::Node& node, int nodeIndex, const glm::dmat4& world, const std::string& where) {
     if (size_t(node.camera) >= model_.cameras.size())
       fail(where + ": camera " + std::to_string(node.camera) + " does not exist");
+    checkCameraTransform(world, where);
     const tinygltf::Camera& c = model_.cameras[size_t(node.camera)];
     Camera out;
     out.name = !c.name.empty() ? c.name : node.name;
@@ -247,6 +279,11 @@ class GltfReader {
       out.ymag = c.orthographic.ymag;
       if (!(std::isfinite(out.xmag) && std::isfinite(out.ymag) && out.xmag != 0.0 && out.ymag != 0.0))
         fail(where + ": orthographic camera xmag and ymag must be finite and non-zero");
+      // Orthographic rays start across the view: its corners must stay where Embree can trace from.
+      const glm::dvec3 reach = glm::abs(glm::dvec3(world[3])) + std::abs(out.xmag) * glm::abs(glm::dvec3(world[0])) +
+                               std::abs(out.ymag) * glm::abs(glm::dvec3(world[1]));
+      if (!(std::max({reach.x, reach.y, reach.z}) <= kMaxSceneCoordinate))
+        fail(where + ": the orthographic view reaches beyond ±1e15 in world space");
     } else {
       fail(where + ": camera type '" + c.type + "' is neither perspective nor orthographic");
     }
@@ -256,6 +293,11 @@ class GltfReader {
   void addMesh(int meshIndex, const glm::dmat4& world, const std::string& nodeWhere) {
     if (size_t(meshIndex) >= model_.meshes.size())
       fail(nodeWhere + ": mesh " + std::to_string(meshIndex) + " does not exist");
+    // A node scaled to 0 (how animated models hide parts) flattens its meshes to nothing: those primitives
+    // are skipped with one warning, where a mesh's own zero-area triangles are an error. A scale of 0 on one
+    // axis may leave a flat card, which is kept.
+    const bool singular = isSingular(world);
+    bool skipped = false;
     const tinygltf::Mesh& mesh = model_.meshes[size_t(meshIndex)];
     for (size_t p = 0; p < mesh.primitives.size(); ++p) {
       const tinygltf::Primitive& prim = mesh.primitives[p];
@@ -266,8 +308,9 @@ class GltfReader {
       }
       const std::string where =
           nodeWhere + " / " + label("mesh", mesh.name, meshIndex) + " / primitive " + std::to_string(p);
-      addPrimitive(prim, world, where);
+      if (!addPrimitive(prim, world, where, singular)) skipped = true;
     }
+    if (skipped) singularNodes_ += (singularNodes_.empty() ? "" : ", ") + nodeWhere;
   }
 
   AccessorData accessor(int index, int type, std::initializer_list<int> componentTypes, const std::string& what,
@@ -314,7 +357,8 @@ class GltfReader {
     return out;
   }
 
-  void addPrimitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& where) {
+  // False when a singular transform left it no triangle to draw.
+  bool addPrimitive(const tinygltf::Primitive& prim, const glm::dmat4& world, const std::string& where, bool singular) {
     Mesh mesh;
     mesh.name = where;
 
@@ -329,9 +373,11 @@ class GltfReader {
       const glm::dvec3 p(positions.vec3(i));
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
         fail(where + ": position " + std::to_string(i) + " is not finite");
-      const glm::vec3 w(glm::dvec3(world * glm::dvec4(p, 1.0)));
-      if (!std::isfinite(w.x) || !std::isfinite(w.y) || !std::isfinite(w.z))
-        fail(where + ": position " + std::to_string(i) + " is not finite in world space");
+      const glm::dvec3 wd(world * glm::dvec4(p, 1.0));
+      // Rays leave hits from these points, and Embree refuses origins beyond about 1.8e18.
+      if (!(std::max({std::abs(wd.x), std::abs(wd.y), std::abs(wd.z)}) <= kMaxSceneCoordinate))
+        fail(where + ": position " + std::to_string(i) + " is beyond ±1e15 in world space (is its node's transform overflowing?)");
+      const glm::vec3 w(wd);
       mesh.positions[i] = w;
     }
 
@@ -368,6 +414,7 @@ class GltfReader {
       if (!(glm::length(glm::cross(p1 - p0, p2 - p0)) > 0.0)) continue;  // zero area: nothing to hit
       mesh.indices.insert(mesh.indices.end(), {a, b, c});
     }
+    if (mesh.indices.empty() && singular && !indices.empty()) return false;
     if (mesh.indices.empty())
       fail(where + (indices.empty() ? ": has no triangles" : ": all its triangles have zero area"));
 
@@ -397,6 +444,24 @@ class GltfReader {
       mesh.material = prim.material;
     }
     scene_.meshes.push_back(std::move(mesh));
+    return true;
+  }
+
+  // |v| without the underflow of squaring components of 1e-200 (a node scaled that small is not singular).
+  static double robustLength(const glm::dvec3& v) {
+    const double m = std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+    return m > 0.0 && std::isfinite(m) ? m * glm::length(v / m) : m;
+  }
+
+  // Linear part whose columns are zero or coplanar (a scale of 0 on some axis).
+  static bool isSingular(const glm::dmat4& world) {
+    glm::dvec3 c[3];
+    for (int i = 0; i < 3; ++i) {
+      const double len = robustLength(glm::dvec3(world[i]));
+      if (!(len > 0.0) || !std::isfinite(len)) return true;
+      c[i] = glm::dvec3(world[i]) / len;
+    }
+    return !(std::abs(glm::dot(c[0], glm::cross(c[1], c[2]))) > 1e-12);
   }
 
   const std::filesystem::path& path_;
@@ -405,6 +470,7 @@ class GltfReader {
   std::vector<char> visited_;
   std::vector<std::pair<int, Camera>> cameraNodes_;
   int skippedPrimitives_ = 0;
+  std::string singularNodes_, emissiveTextures_;
 };
 
 bool hasGlbMagic(const std::filesystem::path& path) {
@@ -420,6 +486,7 @@ SceneDescription loadGltf(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": no such file");
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": not a regular file");
+  preflightGltf(path);
 
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(ignoreImage, nullptr);

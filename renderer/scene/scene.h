@@ -13,6 +13,11 @@
 
 namespace glossy {
 
+// The farthest a vertex or a camera may be from the origin on any axis, in metres. Embree refuses a ray
+// whose origin is beyond about 1.8e18 (its ray.valid() assertion aborts the program); this leaves room for
+// the automatic camera's distance and for rays that start a margin off a surface.
+constexpr double kMaxSceneCoordinate = 1e15;
+
 struct SceneMaterial {
   std::string name;
   Rgb baseColor{0.8};    // Lambertian albedo when no glossy material is bound
@@ -50,8 +55,11 @@ struct SceneDescription {
 };
 
 // Loads .gltf (external or embedded buffers) or .glb. Throws InputError naming the file and the
-// node/mesh for malformed or degenerate input (no triangles at all, bad indices, non-finite positions,
-// unsupported primitive modes are skipped with a warning on stderr only if other geometry remains).
+// node/mesh for malformed or degenerate input (no triangles at all, bad indices, positions or cameras that
+// are not finite or beyond kMaxSceneCoordinate, a camera whose transform is singular, a required extension
+// it does not support, a version other than 2.x, a `scene` that does not exist). Skipped with a warning on
+// stderr, if other geometry remains: primitives that are not TRIANGLES, primitives a singular transform
+// (scale 0) leaves without area. Emissive textures are not read: a material with one emits nothing (warned).
 SceneDescription loadGltf(const std::filesystem::path& path);
 
 }  // namespace glossy

@@ -1,0 +1,134 @@
+#include "renderer/scene/gltf_preflight.h"
+
+#include "materials/core/input_error.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+namespace glossy {
+
+namespace {
+
+// Required extensions whose absence of support changes nothing the renderer draws: emissive strength is
+// read, and textures (so their transforms) are not used at all.
+constexpr std::array kSupportedRequired = {"KHR_materials_emissive_strength", "KHR_texture_transform"};
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
+  throw InputError(printableLine(path.string() + ": " + what));
+}
+
+uint32_t u32(const std::string& bytes, size_t at) {
+  uint32_t x = 0;
+  std::memcpy(&x, bytes.data() + at, sizeof x);
+  return x;  // GLB is little-endian, as every platform glossy builds on
+}
+
+// The JSON text of a .gltf, or of a GLB's first chunk, which the GLB format requires to be the JSON.
+std::string jsonText(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, "cannot open it");
+  std::string header(20, '\0');
+  in.read(header.data(), std::streamsize(header.size()));
+  header.resize(size_t(in.gcount()));
+  if (header.compare(0, 4, "glTF") != 0) {
+    in.clear();
+    in.seekg(0);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  if (header.size() < 20) fail(path, "GLB header is truncated");
+  if (u32(header, 4) != 2) fail(path, "GLB container version " + std::to_string(u32(header, 4)) + " is not 2");
+  if (u32(header, 16) != 0x4E4F534Au) fail(path, "GLB's first chunk is not JSON");
+  const uint32_t length = u32(header, 12);
+  std::error_code ec;
+  const uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || uintmax_t(length) > size - 20) fail(path, "GLB's JSON chunk runs past the end of the file");
+  std::string text(length, '\0');
+  in.read(text.data(), std::streamsize(length));
+  if (size_t(in.gcount()) != length) fail(path, "GLB's JSON chunk cannot be read");
+  return text;
+}
+
+}  // namespace
+
+namespace {
+
+// The length of the well-formed UTF-8 sequence starting at text[i], or 0.
+size_t utf8Length(const std::string& text, size_t i) {
+  const auto byte = [&](size_t k) { return static_cast<unsigned char>(text[k]); };
+  const unsigned char c = byte(i);
+  const size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+  if (n == 0 || i + n > text.size()) return 0;
+  for (size_t k = 1; k < n; ++k)
+    if ((byte(i + k) & 0xC0) != 0x80) return 0;
+  return n;
+}
+
+}  // namespace
+
+std::string printableLine(const std::string& text, size_t maxLength) {
+  std::string out;
+  size_t i = 0;
+  for (; i < text.size() && out.size() < maxLength; ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c == '\n') {
+      if (i + 1 < text.size()) out += "; ";
+    } else if (c == '\r') {
+      continue;
+    } else if (c >= 0x80) {
+      // Names may be any language: whole UTF-8 characters pass, stray bytes of a binary file do not.
+      const size_t n = utf8Length(text, i);
+      if (n == 0) {
+        out += '?';
+      } else {
+        out.append(text, i, n);
+        i += n - 1;
+      }
+    } else {
+      out += c >= 0x20 && c < 0x7f ? char(c) : '?';
+    }
+  }
+  while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+  if (i < text.size()) out += "...";
+  return out;
+}
+
+void preflightGltf(const std::filesystem::path& path) {
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(jsonText(path));
+  } catch (const nlohmann::json::exception& e) {
+    std::string why = e.what();
+    if (const size_t end = why.find("] "); why.rfind("[json.exception", 0) == 0 && end != std::string::npos)
+      why.erase(0, end + 2);  // the library's tag says nothing to the user
+    fail(path, "is not valid glTF JSON: " + why);
+  }
+  if (!doc.is_object()) fail(path, "is not a glTF document (its JSON is not an object)");
+
+  if (const auto required = doc.find("extensionsRequired"); required != doc.end()) {
+    if (!required->is_array()) fail(path, "extensionsRequired is not an array");
+    for (const nlohmann::json& e : *required) {
+      if (!e.is_string()) fail(path, "extensionsRequired holds a non-string entry");
+      const std::string name = e.get<std::string>();
+      if (std::find(kSupportedRequired.begin(), kSupportedRequired.end(), name) != kSupportedRequired.end()) continue;
+      std::string hint;
+      if (name == "KHR_draco_mesh_compression" || name == "EXT_meshopt_compression")
+        hint = " (decompress its meshes first, e.g. gltf-transform copy)";
+      fail(path, "requires extension " + name + ", which glossy does not support" + hint);
+    }
+  }
+
+  const auto asset = doc.find("asset");
+  if (asset == doc.end() || !asset->is_object()) fail(path, "has no asset object (glTF 2.0 requires asset.version)");
+  const auto version = asset->find("version");
+  if (version == asset->end() || !version->is_string()) fail(path, "asset.version is missing or not a string");
+  const std::string v = version->get<std::string>();
+  if (v.rfind("2.", 0) != 0) fail(path, "asset.version is '" + v + "'; glossy reads glTF 2.x only");
+}
+
+}  // namespace glossy
