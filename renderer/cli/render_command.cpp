@@ -1,5 +1,6 @@
 // glossy render: one image of a glTF scene under an environment, as shared/spec/interfaces.md states.
 #include "materials/core/input_error.h"
+#include "materials/core/notes.h"
 #include "materials/models/registry.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
@@ -51,6 +52,7 @@ int runRender(RenderOptions o) {
   o.settings.cosineBrdfSampling = o.brdfSampling == "cosine";
   RenderStats stats;
   const RgbImage image = render(scene, camera, o.settings, stats);
+  flushNotes();  // the input is good: what loading it noted comes before the (long) render
 
   std::string materialText = override ? override->material : "";
   if (!override)

@@ -1,6 +1,7 @@
 // glossy sheet / glossy sheets: the supplement's comparison grid for one material, or for many
 // (shared/spec/interfaces.md; renderer/sheet/sheet.h has the layout and the error figures).
 #include "materials/core/input_error.h"
+#include "materials/core/notes.h"
 #include "materials/models/registry.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
@@ -99,6 +100,7 @@ void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, co
   std::string note;
   const auto measured = measuredOf(m, o, explicitMeasured, note);
   const auto start = std::chrono::steady_clock::now();
+  flushNotes();  // the input is good: what loading it noted comes before the (long) render
   const SheetScene scene = makeSheetScene(stage.description, stage.bvh, stage.environment, stage.camera);
   const Sheet sheet = renderSheet(scene, m, measured, note, o.settings);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

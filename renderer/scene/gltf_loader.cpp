@@ -4,6 +4,7 @@
 #include "renderer/scene/scene.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/notes.h"
 
 #include <tiny_gltf.h>
 
@@ -107,8 +108,8 @@ class GltfReader {
     readMaterials();
     for (int root : rootNodes()) walk(root);
     if (skippedPrimitives_ > 0)
-      std::cerr << path_.string() << ": warning: skipped " << skippedPrimitives_
-                << " primitive(s) whose mode is not TRIANGLES\n";
+      note(path_.string() + ": warning: skipped " + std::to_string(skippedPrimitives_) +
+           " primitive(s) whose mode is not TRIANGLES");
     if (scene_.meshes.empty())
       fail(skippedPrimitives_ > 0 ? "the scene has no TRIANGLES primitives (only points, lines or strips)"
                                   : "the scene has no triangle meshes");
@@ -436,7 +437,7 @@ SceneDescription loadGltf(const std::filesystem::path& path) {
     const std::string why = !err.empty() ? err : !warn.empty() ? warn : "cannot read it as glTF 2.0";
     throw InputError(oneLine(path.string() + ": " + why));
   }
-  if (!warn.empty()) std::cerr << oneLine(path.string() + ": warning: " + warn) << "\n";
+  if (!warn.empty()) note(oneLine(path.string() + ": warning: " + warn));
   return GltfReader(path, model).read();
 }
 
