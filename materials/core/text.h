@@ -20,6 +20,11 @@ std::string formatted(const char* format, T... values) {
   return s;
 }
 
+// `text` for an error message: at most 40 characters, so a 309-digit number does not fill the screen.
+inline std::string shortened(std::string_view text) {
+  return text.size() <= 40 ? std::string(text) : std::string(text.substr(0, 37)) + "...";
+}
+
 inline std::optional<double> parseNumber(std::string_view text) {
   if (text.starts_with('+')) text.remove_prefix(1);
   double v = 0.0;
