@@ -106,7 +106,7 @@ TEST(CliEval, BadInputExitsTwoWithOneLineNamingTheFile) {
   TempDir tmp;
   writeText(tmp / "broken.toml", "name = \"x\"\n[[fit]]\nmodel = \"cook-torrance\"\nmetric = \"E1\"\nkd = [0,0,0]\nks = [1,1,1]\nm = -1\neta = 1.5\n");
   expectOneLineError(runGlossy({"eval", "--material", (tmp / "broken.toml").string(), "--fit", "cook-torrance:E1"}, "0,0,1,0,0,1\n"),
-                     "broken.toml:7: fit 1 (cook-torrance:E1): key 'm': must be > 0");
+                     "broken.toml:7: fit 1 (cook-torrance:E1): key 'm': must be in [0.0001, 10]");
   writeText(tmp / "truncated.binary", std::string(1000, '\0'));
   expectOneLineError(runGlossy({"eval", "--measured", (tmp / "truncated.binary").string()}, "0,0,1,0,0,1\n"), "truncated.binary");
   const std::string good = (materialsDir() / "chrome.toml").string();

@@ -166,6 +166,44 @@ TEST(Merl, BadFilesAreErrorsNamingTheFile) {
   EXPECT_NE(e.find("is a directory"), std::string::npos) << e;
 }
 
+// Huge values are corrupt data, and beyond float's range they overflowed the sampler's sums into
+// "Distribution2D: negative or non-finite value" (exit 1) in every command: now the table is bad input.
+TEST(Merl, ValuesAboveThePlausibleMaximumAreErrorsNamingFileAndBin) {
+  auto tableWith = [](double stored) {
+    return syntheticMerlBytes([stored](int h, int d, int p) { return h == 3 && d == 5 && p == 7 ? Rgb(1.0, stored, 1.0) : Rgb(1.0); });
+  };
+  // Stored values are scaled by kScale (G: 1.15 / 1500) on reading.
+  const double maxStoredG = MerlTable::kMaxValue / MerlTable::kScale[1];
+  for (double stored : {1e300, 1e39, 3.5e38, maxStoredG * 1.0001}) {
+    const std::string e = expectInputError([&] { MerlTable::parse(asBytes(tableWith(stored)), "huge.binary"); });
+    EXPECT_NE(e.find("huge.binary: value"), std::string::npos) << e;
+    EXPECT_NE(e.find("channel G at bin (θh 3, θd 5, φd 7)"), std::string::npos) << e;
+    EXPECT_NE(e.find("plausible maximum"), std::string::npos) << e;
+  }
+  const MerlTable t = MerlTable::parse(asBytes(tableWith(maxStoredG * 0.9999)), "bright.binary");
+  EXPECT_NEAR(t.value(MerlBin{3, 5, 7}.index()).g, MerlTable::kMaxValue * 0.9999, MerlTable::kMaxValue * 1e-6);  // stored as float
+  EXPECT_EQ(t.invalidBins(), 0u);
+
+  TempDir tmp;
+  const std::string huge = (tmp / "huge.binary").string();
+  writeText(huge, tableWith(1e300));
+  const std::vector<std::string> small = {"--width", "8", "--height", "8", "--spp", "1"};
+  std::vector<std::vector<std::string>> commands = {
+      {"render", "--measured", huge, "-o", (tmp / "x.exr").string()},
+      {"sample", "--measured", huge, "--wo", "0,0,1", "-n", "4"},
+      {"error", "--material", (materialsDir() / "chrome.toml").string(), "--measured", huge},
+      {"fit", "--measured", huge, "--model", "cook-torrance", "--metric", "E2"},
+      {"sheet", "--material", (materialsDir() / "chrome.toml").string(), "--measured", huge, "-o", (tmp / "x.exr").string()}};
+  for (auto& c : commands)
+    if (c[0] == "render" || c[0] == "sheet") c.insert(c.end(), small.begin(), small.end());
+  for (const auto& c : commands) {
+    SCOPED_TRACE(c[0]);
+    expectOneLineError(runGlossy(c), "huge.binary: value");
+  }
+  expectOneLineError(runGlossy({"eval", "--measured", huge}, "0.3,0,0.954,-0.3,0,0.954\n"), "huge.binary: value");
+  EXPECT_FALSE(std::filesystem::exists(tmp / "x.exr"));
+}
+
 TEST(Merl, CompressedTablesReadLikePlainOnesAndStandInForAbsentOnes) {
   const std::string bytes = syntheticMerlBytes(coordinates);
   TempDir tmp;

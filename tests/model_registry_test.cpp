@@ -19,7 +19,7 @@ struct ConstantAlbedo {
   static constexpr std::string_view kLabel = "Constant albedo (test)";
   static constexpr std::string_view kShortLabel = "Const";
   static constexpr ParamSpec kParams[] = {
-      {"albedo", ParamKind::Scalar, ParamBound::NonNegative, "directional albedo"},
+      {"albedo", ParamKind::Scalar, {0.0, 1.0}, "directional albedo"},
   };
   static ConstantAlbedo fromParams(const ParamSet& p) { return {p.scalar("albedo")}; }
 

@@ -20,6 +20,16 @@ std::string formatted(const char* format, T... values) {
   return s;
 }
 
+// `text` as one printable line of about `maxLength` bytes at most ("..." marks a cut): line breaks become
+// "; ", control characters and bytes that are not well-formed UTF-8 become '?', so a parser's message
+// quoting a binary file stays one readable line while names in any language pass.
+std::string printableLine(const std::string& text, size_t maxLength = 300);
+
+// `text` for an error message: at most 40 characters, so a 309-digit number does not fill the screen.
+inline std::string shortened(std::string_view text) {
+  return text.size() <= 40 ? std::string(text) : std::string(text.substr(0, 37)) + "...";
+}
+
 inline std::optional<double> parseNumber(std::string_view text) {
   if (text.starts_with('+')) text.remove_prefix(1);
   double v = 0.0;

@@ -1,6 +1,7 @@
 #include "materials/merl/merl_table.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 
 #include <lzma.h>
 
@@ -103,10 +104,13 @@ MerlTable MerlTable::fromValues(std::span<const double> values, const std::strin
   for (int c = 0; c < 3; ++c) {
     for (size_t i = 0; i < kBins; ++i) {
       const double v = values[c * kBins + i];
-      if (!std::isfinite(v)) {
+      if (!std::isfinite(v) || v * kScale[c] > kMaxValue) {
         const int iph = int(i % kPhiD), itd = int(i / kPhiD % kThetaD), ith = int(i / (size_t(kPhiD) * kThetaD));
-        throw InputError(source + ": non-finite value in channel " + "RGB"[c] + " at bin (θh " + std::to_string(ith) +
-                         ", θd " + std::to_string(itd) + ", φd " + std::to_string(iph) + ")");
+        const std::string bin = std::string(" in channel ") + "RGB"[c] + " at bin (θh " + std::to_string(ith) + ", θd " +
+                                std::to_string(itd) + ", φd " + std::to_string(iph) + ")";
+        if (!std::isfinite(v)) throw InputError(source + ": non-finite value" + bin);
+        throw InputError(source + ": value " + formatted("%.6g", v * kScale[c]) + " /sr" + bin + " is above the plausible maximum " +
+                         formatted("%g", kMaxValue) + " /sr of a measured BRDF");
       }
       if (v < 0.0) t.valid_[i] = 0;
       t.raw_[3 * i + c] = static_cast<float>(v);

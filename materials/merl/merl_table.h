@@ -26,14 +26,20 @@ class MerlTable {
   static constexpr size_t kFileBytes = 3 * sizeof(int32_t) + 3 * kBins * sizeof(double);  // 34,992,012
   // The reference reader's per-channel scale to BRDF units.
   static constexpr double kScale[3] = {1.0 / 1500.0, 1.15 / 1500.0, 1.66 / 1500.0};
+  // The largest scaled value (1/sr) a table may hold. The published fits' peaks are a few 1e4, and tables
+  // tabulated from the sharpest lobes the parameter ranges accept reach some 1e6 at grazing angles; far
+  // above that a file is corrupt, and values near float's range (stored values are float) overflow the
+  // sampling tables' sums into Inf or NaN. At 1e10 those sums stay well inside float.
+  static constexpr double kMaxValue = 1e10;
 
   // Reads NAME.binary, or NAME.binary.xz (decompressed in memory). Throws InputError naming the file for
-  // a wrong size, header, truncated or unreadable file, or a non-finite value.
+  // a wrong size, header, truncated or unreadable file, or a non-finite value or one above kMaxValue.
   static MerlTable load(const std::filesystem::path& path);
   // Parses the bytes of a .binary file; `source` names it in errors.
   static MerlTable parse(std::span<const std::byte> bytes, const std::string& source);
   // The table of these values, unscaled and in the file's order (the R block, then G, then B, each
-  // 3 × kBins long in all; negative: unmeasured). Throws InputError naming `source` for a non-finite one.
+  // 3 × kBins long in all; negative: unmeasured). Throws InputError naming `source` and the bin for a
+  // non-finite one or one above kMaxValue once scaled.
   static MerlTable fromValues(std::span<const double> values, const std::string& source);
 
   // ρ(L, V) in BRDF units (1/sr); 0 below the horizon and in unmeasured bins.

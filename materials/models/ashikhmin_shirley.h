@@ -23,7 +23,7 @@ struct AshikhminShirley {
   static constexpr ParamSpec kParams[] = {
       params::kKd,
       params::kKs,
-      {"n", ParamKind::Scalar, ParamBound::NonNegative, "Phong-like exponent n"},
+      {"n", ParamKind::Scalar, {0.0, 1e8}, "Phong-like exponent n"},
       params::kEta,
   };
   static AshikhminShirley fromParams(const ParamSet& p) {

@@ -5,14 +5,17 @@
 
 namespace glossy::params {
 
-inline constexpr ParamSpec kKd{"kd", ParamKind::Rgb, ParamBound::NonNegative, "diffuse albedo Kd (R, G, B)"};
-inline constexpr ParamSpec kEta{"eta", ParamKind::Scalar, ParamBound::AboveOne,
-                                "index of refraction of the Fresnel factor"};
+// The ranges reach beyond the fitter's (below) and every published fit, and stop where a model's arithmetic
+// would overflow or lose its lobe: scales up to 1e6 keep radiance finite in float even times the sharpest
+// lobe's peak.
+inline constexpr ParamRange kScaleRange{0.0, 1e6};
+inline constexpr ParamSpec kKd{"kd", ParamKind::Rgb, kScaleRange, "diffuse albedo Kd (R, G, B)"};
+inline constexpr ParamSpec kEta{"eta", ParamKind::Scalar, {1.0 + 1e-6, 1e3}, "index of refraction of the Fresnel factor"};
 // The ABC lobe S(f) = A / (1 + B f²)^C of the Smooth and Microfacet models.
-inline constexpr ParamSpec kAbcA{"a", ParamKind::Rgb, ParamBound::NonNegative, "specular scale A (R, G, B)"};
-inline constexpr ParamSpec kAbcB{"b", ParamKind::Scalar, ParamBound::NonNegative, "lobe sharpness B"};
-inline constexpr ParamSpec kAbcC{"c", ParamKind::Scalar, ParamBound::Positive, "lobe fall-off exponent C"};
-inline constexpr ParamSpec kKs{"ks", ParamKind::Rgb, ParamBound::NonNegative, "specular scale Ks (R, G, B)"};
+inline constexpr ParamSpec kAbcA{"a", ParamKind::Rgb, kScaleRange, "specular scale A (R, G, B)"};
+inline constexpr ParamSpec kAbcB{"b", ParamKind::Scalar, {0.0, 1e9}, "lobe sharpness B"};
+inline constexpr ParamSpec kAbcC{"c", ParamKind::Scalar, {1e-3, 100.0}, "lobe fall-off exponent C"};
+inline constexpr ParamSpec kKs{"ks", ParamKind::Rgb, kScaleRange, "specular scale Ks (R, G, B)"};
 
 
 // Their ranges and coarse-scan starts in the fitter. The bounds reach beyond every published fit

@@ -22,7 +22,7 @@ struct CookTorrance {
   static constexpr ParamSpec kParams[] = {
       params::kKd,
       params::kKs,
-      {"m", ParamKind::Scalar, ParamBound::Positive, "Beckmann roughness m"},
+      {"m", ParamKind::Scalar, {1e-4, 10.0}, "Beckmann roughness m"},
       params::kEta,
   };
   static CookTorrance fromParams(const ParamSet& p) {

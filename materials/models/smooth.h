@@ -26,7 +26,7 @@ struct Smooth {
       params::kKd,
       params::kAbcA, params::kAbcB, params::kAbcC,
       params::kEta,
-      {"fresnel", ParamKind::Choice, ParamBound::None, "cos θ_d of the Fresnel factor: projected (default) or vh",
+      {"fresnel", ParamKind::Choice, {}, "cos θ_d of the Fresnel factor: projected (default) or vh",
        kFresnelChoices, true},
   };
   static Smooth fromParams(const ParamSet& p) {

@@ -188,8 +188,7 @@ void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::stri
   auto check = [&](double x, const char* channel) {
     const std::string what = here + (channel ? std::string(" (") + channel + ")" : std::string());
     if (!std::isfinite(x)) throw InputError(what + ": must be finite, got " + formatNumber(x));
-    if (!satisfiesBound(x, spec.bound))
-      throw InputError(what + ": must be " + std::string(describeBound(spec.bound)) + ", got " + formatNumber(x));
+    if (!inRange(x, spec.range)) throw InputError(what + ": must be " + describeRange(spec.range) + ", got " + formatNumber(x));
   };
   switch (spec.kind) {
     case ParamKind::Scalar:

@@ -1,28 +1,16 @@
 #include "materials/params/param_set.h"
 
+#include "materials/core/text.h"
+
 #include <stdexcept>
 
 namespace glossy {
 
-std::string_view describeBound(ParamBound bound) {
-  switch (bound) {
-    case ParamBound::None: return "any finite value";
-    case ParamBound::NonNegative: return ">= 0";
-    case ParamBound::Positive: return "> 0";
-    case ParamBound::AboveOne: return "> 1";
-  }
-  return "";
+std::string describeRange(ParamRange range) {
+  return formatted("in [%.10g, %.10g]", range.lo, range.hi);
 }
 
-bool satisfiesBound(double value, ParamBound bound) {
-  switch (bound) {
-    case ParamBound::None: return true;
-    case ParamBound::NonNegative: return value >= 0.0;
-    case ParamBound::Positive: return value > 0.0;
-    case ParamBound::AboveOne: return value > 1.0;
-  }
-  return false;
-}
+bool inRange(double value, ParamRange range) { return value >= range.lo && value <= range.hi; }
 
 const ParamSet::Value* ParamSet::find(std::string_view key) const {
   auto it = values_.find(key);

@@ -5,6 +5,7 @@
 
 #include "materials/core/types.h"
 
+#include <limits>
 #include <map>
 #include <span>
 #include <string>
@@ -14,12 +15,18 @@
 namespace glossy {
 
 enum class ParamKind { Rgb, Scalar, Choice };
-enum class ParamBound { None, NonNegative, Positive, AboveOne };
+// The closed interval a scalar parameter, or each channel of an RGB one, must lie in. A model's ranges keep
+// its eval, sample and pdf finite everywhere inside them (model_ranges_test checks the ends): values a
+// parser accepts as "positive", such as m = 1e-308 or eta = 1e308, otherwise evaluate to NaN.
+// docs/materials.md lists every model's.
+struct ParamRange {
+  double lo = -std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::max();
+};
 
 struct ParamSpec {
   std::string_view key;
   ParamKind kind;
-  ParamBound bound = ParamBound::None;
+  ParamRange range = {};
   std::string_view meaning;
   std::span<const std::string_view> choices = {};  // ParamKind::Choice only; the first is the default
   bool optional = false;
@@ -36,9 +43,9 @@ struct ShapeParam {
   std::span<const double> starts;
 };
 
-// Human text for a bound: "≥ 0", "> 0", "> 1".
-std::string_view describeBound(ParamBound bound);
-bool satisfiesBound(double value, ParamBound bound);
+// Human text for a range: "in [0.0001, 10]".
+std::string describeRange(ParamRange range);
+bool inRange(double value, ParamRange range);  // false for NaN
 
 class ParamSet {
  public:

@@ -1,6 +1,8 @@
 #include "renderer/cli/brdf_options.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/notes.h"
+#include "materials/core/text.h"
 #include "materials/nbrdf/neural_brdf.h"
 #include "materials/params/material_file.h"
 
@@ -44,8 +46,8 @@ std::shared_ptr<const MerlTable> loadMeasured(const std::filesystem::path& path)
   if (table->invalidBins() == MerlTable::kBins)
     throw InputError(table->source() + ": every bin is unmeasured (negative): the table holds no data");
   if (table->invalidBins() > 0)
-    std::fprintf(stderr, "glossy: %s: %zu of %zu bins unmeasured (they evaluate to 0)\n", table->source().c_str(),
-                 table->invalidBins(), MerlTable::kBins);
+    note(formatted("%s: %zu of %zu bins unmeasured (they evaluate to 0)", table->source().c_str(), table->invalidBins(),
+                   MerlTable::kBins));
   return table;
 }
 

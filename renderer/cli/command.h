@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -29,13 +30,36 @@ Command addSampleCommand(CLI::App& parent);
 Command addSheetCommand(CLI::App& parent);
 Command addSheetsCommand(CLI::App& parent);
 
-// A number > 0 and finite (CLI::PositiveNumber lets "inf" through, and an infinite budget never ends).
-inline const CLI::Validator kFinitePositive(
-    [](std::string& text) {
-      const std::optional<double> v = parseNumber(text);
-      return v && std::isfinite(*v) && *v > 0.0 ? std::string() : "must be a finite number > 0, not '" + text + "'";
-    },
-    "FINITE > 0");
+// A finite number in [lo, hi] (or (lo, hi] when loOpen). CLI::PositiveNumber lets "inf" through, and an
+// infinite budget never ends; CLI11's own ranges print a double's limits with std::to_string (309 digits).
+inline CLI::Validator finiteIn(double lo, double hi, bool loOpen = false) {
+  const std::string range = formatted("%s%g, %g]", loOpen ? "(" : "[", lo, hi);
+  return CLI::Validator(
+      [lo, hi, loOpen, range](std::string& text) {
+        const std::optional<double> v = parseNumber(text);
+        const bool ok = v && std::isfinite(*v) && (loOpen ? *v > lo : *v >= lo) && *v <= hi;
+        return ok ? std::string() : "must be a finite number in " + range + ", not '" + shortened(text) + "'";
+      },
+      "NUMBER in " + range);
+}
+// A whole number in [lo, hi], with the same short message.
+inline CLI::Validator integerIn(long long lo, long long hi) {
+  const std::string range = formatted("[%lld, %lld]", lo, hi);
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) {
+        const std::optional<double> v = parseNumber(text);
+        const bool ok = v && std::isfinite(*v) && *v == std::floor(*v) && *v >= double(lo) && *v <= double(hi);
+        return ok ? std::string() : "must be a whole number in " + range + ", not '" + shortened(text) + "'";
+      },
+      "INT in " + range);
+}
+
+// A number > 0 and finite, with no upper end of its own.
+inline const CLI::Validator kFinitePositive = finiteIn(0.0, std::numeric_limits<double>::max(), true);
+
+// Threads a command may be asked for: far beyond any machine's cores, well short of what exhausts memory
+// creating them (`--threads 1e8`).
+inline constexpr int kMaxThreads = 4096;
 
 // The committed material library: ./materials when run from a checkout, else the source tree's.
 std::filesystem::path defaultMaterialsDir();

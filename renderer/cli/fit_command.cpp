@@ -2,6 +2,7 @@
 // material's parameter file; with --measured-dir, every model and metric for every table, resumably.
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
+#include "materials/core/notes.h"
 #include "materials/core/text.h"
 #include "materials/fitting/fitter.h"
 #include "renderer/cli/brdf_options.h"
@@ -62,10 +63,11 @@ int runSingle(const FitOptions& o) {
   // Validate the output file before the (slow) fit.
   MaterialFile material = loadOrStart(std::filesystem::path(o.output), tablePath);
   const auto table = loadMeasured(tablePath);
+  flushNotes();  // the input is good: what loading it noted comes before the (slow) fit
   const MetricData data(*table, metric);
   FitReport report = fitModel(data, o.models[0], o.settings);
   report.fit.source = "glossy fit to " + tablePath.filename().string();
-  std::cerr << tablePath.filename().string() << " " << describeFit(report) << "\n";
+  std::cerr << "glossy: " << tablePath.filename().string() << " " << describeFit(report) << "\n";
   material.put(report.fit);
   if (o.output.empty()) return writeStdout(toToml(material));
   writeFileAtomically(o.output, toToml(material));
@@ -125,6 +127,7 @@ int runBatch(const FitOptions& o) {
     const Job& job = jobs[j];
     if (loaded != job.table) {
       table = loadMeasured(tables[job.table]);
+      flushNotes();
       data.clear();
       loaded = job.table;
     }
@@ -139,7 +142,7 @@ int runBatch(const FitOptions& o) {
 
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double eta = elapsed / double(j + 1) * double(jobs.size() - j - 1);
-    std::cerr << "[" << done + j + 1 << "/" << total << "] " << materialNameOf(tables[job.table]) << " " << describeFit(report)
+    std::cerr << "glossy: [" << done + j + 1 << "/" << total << "] " << materialNameOf(tables[job.table]) << " " << describeFit(report)
               << "; ETA " << formatSeconds(eta) << "\n";
   }
   return 0;

@@ -1,6 +1,7 @@
 // glossy: compare analytic BRDF models with measured ones. Exit status (shared/spec/interfaces.md):
 // 0 success, 2 bad usage or bad input (one line on stderr naming the file and problem), 1 anything else.
 #include "materials/core/input_error.h"
+#include "materials/core/notes.h"
 #include "renderer/cli/command.h"
 
 #include <algorithm>
@@ -52,14 +53,21 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  // Notes wait for the input to prove good (materials/core/notes.h): a bad-input error is the only line.
   try {
     for (const cli::Command& c : commands)
-      if (c.app->parsed()) return c.run();
+      if (c.app->parsed()) {
+        const int status = c.run();
+        flushNotes();
+        return status;
+      }
     return 2;
   } catch (const InputError& e) {
+    discardNotes();
     std::cerr << "glossy: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {
+    flushNotes();
     std::cerr << "glossy: " << e.what() << "\n";
     return 1;
   }

@@ -1,9 +1,11 @@
 // glossy render: one image of a glTF scene under an environment, as shared/spec/interfaces.md states.
 #include "materials/core/input_error.h"
+#include "materials/core/notes.h"
 #include "materials/models/registry.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/image_memory.h"
 #include "renderer/cli/scene_options.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/scene/material_binding.h"
@@ -24,6 +26,7 @@ struct RenderOptions {
 };
 
 int runRender(RenderOptions o) {
+  checkImageMemory(o.settings.width, o.settings.height, 1, kRenderBytesPerPixel);
   const std::string scenePath = o.scene.scenePath();
   const SceneDescription description = loadGltf(scenePath);
 
@@ -49,6 +52,7 @@ int runRender(RenderOptions o) {
   const Camera camera = o.scene.cameraOf(description, double(o.settings.width) / double(o.settings.height));
 
   o.settings.cosineBrdfSampling = o.brdfSampling == "cosine";
+  flushNotes();  // the input is good: what loading it noted comes before the (long) render
   RenderStats stats;
   const RgbImage image = render(scene, camera, o.settings, stats);
 
@@ -100,7 +104,7 @@ Command addRenderCommand(CLI::App& parent) {
   app->add_option("--merl-dir", o->merlDir, "Folder with MERL tables");
   app->add_option("--spp", o->settings.spp, "Samples per pixel")->check(CLI::Range(1, INT32_MAX))->capture_default_str();
   app->add_option("--seed", o->settings.seed, "Random seed")->capture_default_str();
-  app->add_option("--threads", o->settings.threads, "Threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  app->add_option("--threads", o->settings.threads, "Threads (0 = all cores)")->check(integerIn(0, kMaxThreads));
   app->add_option("--width", o->settings.width, "Image width")->check(CLI::Range(1, 1 << 15))->capture_default_str();
   app->add_option("--height", o->settings.height, "Image height")->check(CLI::Range(1, 1 << 15))->capture_default_str();
   app->add_option("--max-depth", o->settings.maxDepth, "Path segments at most (1 = emitters only, 3 = one indirect bounce)")

@@ -65,7 +65,7 @@ Command addSampleCommand(CLI::App& parent) {
       "0,0,0,0,0,0,0.");
   o->brdf.addTo(app);
   app->add_option("--wo", o->wo, "Outgoing direction toward the viewer, x,y,z (normalised here)")->required();
-  app->add_option("-n", o->count, "Number of samples")->required()->check(CLI::NonNegativeNumber);
+  app->add_option("-n", o->count, "Number of samples")->required()->check(integerIn(0, 1000000000));
   app->add_option("--seed", o->seed, "Seed of the uniform random numbers")->capture_default_str();
   return {app, [o] { return runSample(*o); }};
 }

@@ -1,22 +1,29 @@
 #include "renderer/cli/scene_options.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/notes.h"
 #include "materials/core/text.h"
 #include "renderer/camera/auto_camera.h"
+#include "renderer/cli/command.h"
 
 #include <cmath>
-#include <iostream>
 
 namespace glossy::cli {
 
 namespace {
+
+// Brighter than any sky by far, and dim enough that radiance times the brightest accepted BRDF peak stays
+// finite in float.
+constexpr double kMaxRadiance = 1e12;
 
 Rgb parseRgb(const std::string& text, const std::string& option) {
   auto v = parseNumberList(text);
   if (v && v->size() == 1) v->assign(3, v->front());
   if (!v || v->size() != 3) throw InputError(option + ": '" + text + "' is not a number or R,G,B");
   for (double x : *v)
-    if (!std::isfinite(x) || x < 0.0) throw InputError(option + ": radiance must be finite and >= 0, got '" + text + "'");
+    if (!std::isfinite(x) || x < 0.0 || x > kMaxRadiance)
+      throw InputError(option + ": radiance must be a finite number in [0, " + formatted("%g", kMaxRadiance) + "], got '" +
+                       shortened(text) + "'");
   return {(*v)[0], (*v)[1], (*v)[2]};
 }
 
@@ -28,7 +35,7 @@ void SceneOptions::addTo(CLI::App* app) {
   auto* file = app->add_option("--env", env, "Lat-long environment map (.exr, .hdr); default: the built-in sky");
   auto* constant = app->add_option("--env-constant", envConstant, "Constant environment radiance: V or R,G,B");
   file->excludes(constant);
-  app->add_option("--env-rotate", envRotate, "Rotate the environment about +Y, degrees");
+  app->add_option("--env-rotate", envRotate, "Rotate the environment about +Y, degrees")->check(finiteIn(-360.0, 360.0));
 }
 
 std::string SceneOptions::scenePath() const {
@@ -46,7 +53,7 @@ Camera SceneOptions::cameraOf(const SceneDescription& description, double aspect
   if (camera == "auto") return autoCamera(description, aspect);
   if (description.cameras.empty()) {
     if (!camera.empty()) throw InputError(where + ": the scene has no camera named '" + camera + "' (it has none; try --camera auto)");
-    std::cerr << "glossy: " << where << " has no camera: framing it as --camera auto does\n";
+    note(printableLine(where + " has no camera: framing it as --camera auto does"));
     return autoCamera(description, aspect);
   }
   if (camera.empty()) return description.cameras.front();

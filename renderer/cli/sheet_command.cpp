@@ -1,10 +1,12 @@
 // glossy sheet / glossy sheets: the supplement's comparison grid for one material, or for many
 // (shared/spec/interfaces.md; renderer/sheet/sheet.h has the layout and the error figures).
 #include "materials/core/input_error.h"
+#include "materials/core/notes.h"
 #include "materials/models/registry.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/image_memory.h"
 #include "renderer/cli/scene_options.h"
 #include "renderer/scene/material_binding.h"
 #include "renderer/sheet/sheet.h"
@@ -100,6 +102,7 @@ void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, co
   const MaterialFile m = loadMaterialFile(materialPath);
   std::string note;
   const auto measured = measuredOf(m, o, explicitMeasured, note);
+  flushNotes();  // the input is good: what loading it noted comes before the (long) render
   const auto start = std::chrono::steady_clock::now();
   const SheetScene scene = makeSheetScene(stage.description, stage.bvh, stage.environment, stage.camera);
   const Sheet sheet = renderSheet(scene, m, measured, note, o.settings);
@@ -123,17 +126,19 @@ void addRenderOptions(CLI::App* app, SheetOptions& o) {
       ->capture_default_str();
   app->add_option("--time", o.settings.secondsPerPanel,
                   "Wall-clock seconds per panel instead of --spp: the panels render in passes until their budget is spent")
-      ->check(kFinitePositive);
+      ->check(finiteIn(0.0, 1e6, true));
   app->add_option("--target-error", o.settings.targetError,
                   "Render in passes until every model's relative-RMSE 95 % interval has at most this half-width (capped by "
                   "--spp if given, and --time)")
-      ->check(kFinitePositive);
+      ->check(finiteIn(0.0, 10.0, true));
   app->add_option("--width", o.settings.width, "Panel width")->check(CLI::Range(8, 1 << 14))->capture_default_str();
   app->add_option("--height", o.settings.height, "Panel height")->check(CLI::Range(8, 1 << 14))->capture_default_str();
   app->add_option("--seed", o.settings.seed, "Random seed (the same for every panel)")->capture_default_str();
-  app->add_option("--threads", o.settings.threads, "Threads (0 = all cores)")->check(CLI::NonNegativeNumber);
+  app->add_option("--threads", o.settings.threads, "Threads (0 = all cores)")->check(integerIn(0, kMaxThreads));
   app->add_option("--max-depth", o.settings.maxDepth, "Path segments at most")->check(CLI::Range(1, 1000))->capture_default_str();
-  app->add_option("--exposure", o.exposure, "Exposure of the PNG preview in stops (the EXR stays linear)")->capture_default_str();
+  app->add_option("--exposure", o.exposure, "Exposure of the PNG preview in stops (the EXR stays linear)")
+      ->check(finiteIn(-64.0, 64.0))
+      ->capture_default_str();
   app->add_flag("--half", o.half, "Write half-float EXR (default: float)");
 }
 
@@ -146,6 +151,7 @@ SheetOptions withPassLimits(const SheetOptions& o) {
 
 int runSheet(const SheetOptions& options) {
   const SheetOptions o = withPassLimits(options);
+  checkImageMemory(o.settings.width, o.settings.height, int(o.settings.panels.size()), kSheetBytesPerPanelPixel);
   const Stage stage(o.scene, double(o.settings.width) / double(o.settings.height));
   SheetOptions single = o;
   single.settings.progress = isatty(STDERR_FILENO);
@@ -154,15 +160,18 @@ int runSheet(const SheetOptions& options) {
 }
 
 std::pair<int, int> parseShard(const std::string& text) {
-  int i = -1, n = 0;
+  int i = -1, n = 0, used = 0;
   char slash = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d", &i, &slash, &n) != 3 || slash != '/' || n < 1 || i < 0 || i >= n)
-    throw InputError("--shard: '" + text + "' is not i/N with 0 <= i < N");
+  // %n: the whole text must be i/N, so "0/3/4" is refused rather than read as 0/3.
+  if (std::sscanf(text.c_str(), "%d%c%d%n", &i, &slash, &n, &used) != 3 || size_t(used) != text.size() || slash != '/' ||
+      n < 1 || i < 0 || i >= n)
+    throw InputError("--shard: '" + shortened(text) + "' is not i/N with 0 <= i < N");
   return {i, n};
 }
 
 int runSheets(const SheetOptions& options) {
   const SheetOptions o = withPassLimits(options);
+  checkImageMemory(o.settings.width, o.settings.height, int(o.settings.panels.size()), kSheetBytesPerPanelPixel);
   for (const std::string& in : o.inputs)
     if (std::error_code ec; !std::filesystem::is_directory(in, ec) && !std::filesystem::is_regular_file(in, ec))
       throw InputError(in + ": no such material file or folder");

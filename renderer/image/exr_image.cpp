@@ -6,6 +6,10 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 
 namespace glossy {
@@ -52,13 +56,28 @@ void writeLayeredExr(const std::filesystem::path& path, const std::vector<ExrLay
     for (const char* c : {"R", "G", "B"}) spec.channelnames.push_back(l.prefix.empty() ? c : l.prefix + "." + c);
   spec.attribute("compression", "zip");
   addAttributes(spec, attributes);
+  // No Inf or NaN in the file: a value beyond the type's largest finite one is written as that (half's is
+  // 65504, which bright light easily exceeds), NaN as 0, and the pixels so changed are counted in the metadata.
+  const float largest = type == PixelType::Half ? kLargestHalf : std::numeric_limits<float>::max();
   std::vector<float> pixels(size_t(w) * size_t(h) * size_t(n));
+  int64_t clamped = 0;
   for (size_t k = 0; k < layers.size(); ++k) {
     const RgbImage& img = *layers[k].image;
     if (img.width != w || img.height != h) throw std::runtime_error(path.string() + ": layers of different sizes");
-    for (size_t p = 0; p < size_t(w) * size_t(h); ++p)
-      for (int c = 0; c < 3; ++c) pixels[p * n + k * 3 + c] = img.pixels[p * 3 + c];
+    for (size_t p = 0; p < size_t(w) * size_t(h); ++p) {
+      bool changed = false;
+      for (int c = 0; c < 3; ++c) {
+        const float v = img.pixels[p * 3 + c];
+        const float out = std::isnan(v) ? 0.0f : std::clamp(v, -largest, largest);
+        changed |= !(out == v);
+        pixels[p * n + k * 3 + c] = out;
+      }
+      clamped += changed;
+    }
   }
+  const int count = int(std::min<int64_t>(clamped, INT32_MAX));
+  if (type == PixelType::Half) spec.attribute("glossy:halfClampedPixels", count);
+  else if (clamped > 0) spec.attribute("glossy:nonFinitePixels", count);
   writeAtomically(path, spec, OIIO::TypeDesc::FLOAT, pixels.data());
 }
 

@@ -26,7 +26,13 @@ struct ImageAttribute {
 
 enum class PixelType { Half, Float };
 
+// The largest finite half-float.
+inline constexpr float kLargestHalf = 65504.0f;
+
 // Throws std::runtime_error naming the path on failure; the temporary is removed, the target untouched.
+// Writes no Inf or NaN: values beyond the pixel type's largest finite one are clamped to it, NaN written as
+// 0, and the pixels so changed counted in the metadata: glossy:halfClampedPixels (always, for half),
+// glossy:nonFinitePixels (for float, when any).
 void writeExr(const std::filesystem::path& path, const RgbImage& image, const std::vector<ImageAttribute>& attributes,
               PixelType type = PixelType::Float);
 

@@ -4,6 +4,8 @@
 #include "renderer/scene/scene.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/notes.h"
+#include "materials/core/text.h"
 #include "renderer/scene/gltf_preflight.h"
 
 #include <tiny_gltf.h>
@@ -19,7 +21,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <iostream>
 #include <map>
 #include <span>
 #include <utility>
@@ -106,16 +107,14 @@ class GltfReader {
                                            " are under a singular transform)"
                                      : "the scene has no triangle meshes");
     if (skippedPrimitives_ > 0)
-      std::cerr << path_.string() << ": warning: skipped " << skippedPrimitives_
-                << " primitive(s) whose mode is not TRIANGLES\n";
+      note(oneLine(path_.string() + ": warning: skipped " + std::to_string(skippedPrimitives_) +
+                   " primitive(s) whose mode is not TRIANGLES"));
     if (!singularNodes_.empty())
-      std::cerr << oneLine("glossy: " + path_.string() + ": warning: skipped the meshes of " + singularNodes_ +
-                           ": their world transform is singular (a scale of 0 hides them)")
-                << "\n";
+      note(oneLine(path_.string() + ": warning: skipped the meshes of " + singularNodes_ +
+                   ": their world transform is singular (a scale of 0 hides them)"));
     if (!emissiveTextures_.empty())
-      std::cerr << oneLine("glossy: " + path_.string() + ": warning: emissive textures are not supported: " +
-                           emissiveTextures_ + " emit nothing")
-                << "\n";
+      note(oneLine(path_.string() + ": warning: emissive textures are not supported: " + emissiveTextures_ +
+                   " emit nothing"));
     std::stable_sort(cameraNodes_.begin(), cameraNodes_.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     for (auto& [node, camera] : cameraNodes_) scene_.cameras.push_back(std::move(camera));
@@ -503,7 +502,7 @@ SceneDescription loadGltf(const std::filesystem::path& path) {
     const std::string why = !err.empty() ? err : !warn.empty() ? warn : "cannot read it as glTF 2.0";
     throw InputError(oneLine(path.string() + ": " + why));
   }
-  if (!warn.empty()) std::cerr << oneLine(path.string() + ": warning: " + warn) << "\n";
+  if (!warn.empty()) note(oneLine(path.string() + ": warning: " + warn));
   return GltfReader(path, model).read();
 }
 

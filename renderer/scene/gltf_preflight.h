@@ -11,9 +11,4 @@ namespace glossy {
 // Throws InputError naming the file (and the extension or the version) when the file must be refused.
 void preflightGltf(const std::filesystem::path& path);
 
-// `text` as one printable line of about `maxLength` bytes at most ("..." marks a cut): line breaks become
-// "; ", control characters and bytes that are not well-formed UTF-8 become '?', so a parser's message
-// quoting a binary file stays one readable line while names in any language pass.
-std::string printableLine(const std::string& text, size_t maxLength = 300);
-
 }  // namespace glossy

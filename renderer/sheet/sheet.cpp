@@ -20,9 +20,10 @@ namespace glossy {
 
 namespace {
 
-// sRGB transfer function (IEC 61966-2-1) of a linear value, clamped to [0, 1].
+// sRGB transfer function (IEC 61966-2-1) of a linear value, clamped to [0, 1]; NaN (which std::clamp passes
+// through) is black.
 float srgbEncode(double v) {
-  v = std::clamp(v, 0.0, 1.0);
+  v = std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 1.0);
   return float(v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055);
 }
 

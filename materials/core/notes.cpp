@@ -1,0 +1,40 @@
+#include "materials/core/notes.h"
+
+#include <cstdio>
+#include <mutex>
+#include <vector>
+
+namespace glossy {
+
+namespace {
+
+std::mutex& lock() {
+  static std::mutex m;
+  return m;
+}
+
+std::vector<std::string>& pending() {
+  static std::vector<std::string> lines;
+  return lines;
+}
+
+}  // namespace
+
+void note(std::string line) {
+  std::lock_guard guard(lock());
+  pending().push_back(std::move(line));
+}
+
+void flushNotes() {
+  std::lock_guard guard(lock());
+  for (const std::string& line : pending()) std::fprintf(stderr, "glossy: %s\n", line.c_str());
+  std::fflush(stderr);
+  pending().clear();
+}
+
+void discardNotes() {
+  std::lock_guard guard(lock());
+  pending().clear();
+}
+
+}  // namespace glossy

@@ -1,0 +1,18 @@
+// Notes for the user ("glossy: X: 12 of 1458000 bins unmeasured") that code reading input wants printed.
+// They are held back until the command knows its input is good, so that a run refused as bad input prints
+// its error as its only stderr line (exit status 2), and a run that goes on prints them before its work.
+// Thread-safe.
+#pragma once
+
+#include <string>
+
+namespace glossy {
+
+// Queues one line; "glossy: " is put in front when printed.
+void note(std::string line);
+// Prints the queued lines to stderr, in order, and forgets them.
+void flushNotes();
+// Forgets the queued lines (the run failed on bad input: its error is the one line).
+void discardNotes();
+
+}  // namespace glossy

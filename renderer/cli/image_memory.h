@@ -1,0 +1,19 @@
+// The memory an image the command line is asked for will take, checked before any work: a sheet of seven
+// 16384² panels would otherwise end in std::bad_alloc minutes into the run.
+#pragma once
+
+#include <string>
+
+namespace glossy::cli {
+
+// Bytes per pixel the renderers hold, estimated from their buffers with room to spare: render's image,
+// its accumulation and the EXR being written; a sheet panel's mean and four replicates, the figures'
+// per-pixel statistics, the EXR layers and the PNG.
+inline constexpr double kRenderBytesPerPixel = 64.0;
+inline constexpr double kSheetBytesPerPanelPixel = 128.0;
+
+// InputError naming --width and --height and the size asked for when width × height × panels ×
+// bytesPerPixel exceeds the machine's physical memory.
+void checkImageMemory(int width, int height, int panels, double bytesPerPixel);
+
+}  // namespace glossy::cli
