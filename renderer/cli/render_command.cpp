@@ -4,6 +4,7 @@
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/destination.h"
 #include "renderer/cli/scene_options.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/scene/material_binding.h"
@@ -24,6 +25,7 @@ struct RenderOptions {
 };
 
 int runRender(RenderOptions o) {
+  checkOutputFile(o.output, "-o", {".exr"}, Folder::Create);
   const std::string scenePath = o.scene.scenePath();
   const SceneDescription description = loadGltf(scenePath);
 

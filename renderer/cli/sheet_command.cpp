@@ -5,6 +5,7 @@
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/destination.h"
 #include "renderer/cli/scene_options.h"
 #include "renderer/scene/material_binding.h"
 #include "renderer/sheet/sheet.h"
@@ -143,6 +144,8 @@ SheetOptions withPassLimits(const SheetOptions& o) {
 }
 
 int runSheet(const SheetOptions& options) {
+  // Only EXR: the PNG is written beside it, under the same name with .png.
+  checkOutputFile(options.output, "-o", {".exr"}, Folder::Create);
   const SheetOptions o = withPassLimits(options);
   const Stage stage(o.scene);
   SheetOptions single = o;
@@ -160,6 +163,7 @@ std::pair<int, int> parseShard(const std::string& text) {
 }
 
 int runSheets(const SheetOptions& options) {
+  checkOutputFolder(options.outDir, "-o");
   const SheetOptions o = withPassLimits(options);
   for (const std::string& in : o.inputs)
     if (std::error_code ec; !std::filesystem::is_directory(in, ec) && !std::filesystem::is_regular_file(in, ec))
