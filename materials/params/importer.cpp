@@ -3,6 +3,7 @@
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "materials/models/registry.h"
+#include "materials/params/material_name.h"
 
 #include <fstream>
 #include <regex>
@@ -45,11 +46,6 @@ std::string supplementKey(const std::string& symbol) {
                                                           {"C", "c"},   {"m", "m"},    {"n", "n"}, {"eta", "eta"}};
   const auto key = keys.find(symbol);
   return key == keys.end() ? std::string() : key->second;
-}
-
-void checkMaterialName(const std::string& name, const std::string& where) {
-  static const std::regex ok(R"([A-Za-z0-9][A-Za-z0-9_.+-]*)");
-  if (!std::regex_match(name, ok)) throw InputError(where + ": '" + name + "' is not a usable material name");
 }
 
 }  // namespace

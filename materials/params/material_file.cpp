@@ -3,6 +3,7 @@
 #include "materials/core/input_error.h"
 #include "materials/core/toml_input.h"
 #include "materials/models/registry.h"
+#include "materials/params/material_name.h"
 
 #include <algorithm>
 #include <charconv>
@@ -236,6 +237,7 @@ MaterialFile parseMaterialToml(std::string_view text, const std::string& source)
     if (key == "name" || key == "measured" || key == "source") {
       if (!node.is_string()) throw InputError(here + ": must be a string");
       const std::string value = node.as_string()->get();
+      if (key == "name") checkMaterialName(value, here);
       (key == "name" ? m.name : key == "measured" ? m.measured : m.source) = value;
     } else if (key == "fit") {
       const toml::array* fits = node.as_array();

@@ -5,8 +5,10 @@
 #include "materials/core/notes.h"
 #include "materials/core/text.h"
 #include "materials/fitting/fitter.h"
+#include "materials/params/material_name.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/destination.h"
 #include "renderer/cli/output.h"
 
 #include <algorithm>
@@ -30,6 +32,8 @@ std::string materialNameOf(const std::filesystem::path& table) {
   std::string name = table.filename().string();
   for (std::string_view suffix : {".nbrdf", ".xz", ".binary"})
     if (name.size() > suffix.size() && name.ends_with(suffix)) name.resize(name.size() - suffix.size());
+  // It names --out-dir's NAME.toml and the file's `name`, which the loader holds to the same rule.
+  checkMaterialName(name, table.string());
   return name;
 }
 
@@ -58,6 +62,7 @@ std::string describeFit(const FitReport& r) {
 int runSingle(const FitOptions& o) {
   if (o.models.size() != 1 || o.metrics.size() != 1)
     throw InputError("glossy fit --measured needs one --model and one --metric (or use --measured-dir for all)");
+  if (!o.output.empty()) checkOutputFile(o.output, "-o", {".toml"}, Folder::Exist);
   const std::filesystem::path tablePath = findMeasured(o.measured, o.merlDir);
   const Metric metric = parseMetric(o.metrics[0], "--metric");
   // Validate the output file before the (slow) fit.
@@ -93,6 +98,7 @@ std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
 
 int runBatch(const FitOptions& o) {
   if (o.outDir.empty()) throw InputError("glossy fit --measured-dir needs --out-dir");
+  checkOutputFolder(o.outDir, "--out-dir");
   const auto tables = tablesIn(o.measuredDir);
   const auto fittable = fittableModels();
   const std::vector<std::string> models = o.models.empty() ? std::vector<std::string>(fittable.begin(), fittable.end()) : o.models;

@@ -3,6 +3,7 @@
 #include "materials/core/input_error.h"
 #include "materials/params/importer.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/destination.h"
 
 #include <iostream>
 #include <memory>
@@ -18,6 +19,7 @@ struct ImportOptions {
 };
 
 int runImport(const ImportOptions& o) {
+  checkOutputFolder(o.outDir, "-o");
   Importer importer;
   for (const std::string& s : o.sources) importer.addFile(s);
 

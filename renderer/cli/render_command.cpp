@@ -5,6 +5,7 @@
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/destination.h"
 #include "renderer/cli/image_memory.h"
 #include "renderer/cli/scene_options.h"
 #include "renderer/integrator/path_tracer.h"
@@ -26,6 +27,7 @@ struct RenderOptions {
 };
 
 int runRender(RenderOptions o) {
+  checkOutputFile(o.output, "-o", {".exr"}, Folder::Create);
   checkImageMemory(o.settings.width, o.settings.height, 1, kRenderBytesPerPixel);
   const std::string scenePath = o.scene.scenePath();
   const SceneDescription description = loadGltf(scenePath);

@@ -2,12 +2,15 @@
 // (shared/spec/interfaces.md; renderer/sheet/sheet.h has the layout and the error figures).
 #include "materials/core/input_error.h"
 #include "materials/core/notes.h"
+#include "materials/core/text.h"
 #include "materials/models/registry.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
+#include "renderer/cli/destination.h"
 #include "renderer/cli/image_memory.h"
 #include "renderer/cli/scene_options.h"
+#include "renderer/cli/sheet_resume.h"
 #include "renderer/scene/material_binding.h"
 #include "renderer/sheet/sheet.h"
 
@@ -15,6 +18,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <unistd.h>
 
@@ -67,8 +71,23 @@ std::shared_ptr<const MerlTable> measuredOf(const MaterialFile& m, const SheetOp
   return loadMeasured(*path);
 }
 
+// Everything a sheet's pixels depend on, as one line: glossy sheets keeps a sheet only if this matches.
+std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetOptions& o, const std::string& explicitMeasured) {
+  const std::optional<std::filesystem::path> measured = explicitMeasured.empty()
+                                                            ? resolveMeasured(m.measured, o.merlDir, m.path.parent_path())
+                                                            : std::optional(std::filesystem::path(explicitMeasured));
+  const SheetSettings& s = o.settings;
+  return "scene=" + stage.description.source.string() + "; env=" + stage.environment.description() +
+         "; spp=" + std::to_string(s.spp) + "; time=" + formatted("%.17g", s.secondsPerPanel) +
+         "; targetError=" + formatted("%.17g", s.targetError) + "; size=" + std::to_string(s.width) + "x" +
+         std::to_string(s.height) + "; seed=" + std::to_string(s.seed) + "; maxDepth=" + std::to_string(s.maxDepth) +
+         "; half=" + (o.half ? "1" : "0") + "; exposure=" + formatted("%.17g", o.exposure) +
+         "; measured=" + (measured ? measured->string() : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
+         contentDigest(m.path) + "; version=" + GLOSSY_VERSION;
+}
+
 std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& stage, const SheetOptions& o, const Sheet& sheet,
-                                          double seconds) {
+                                          double seconds, const std::string& explicitMeasured) {
   std::string smoothFresnel;  // as the file's smooth fits say, like render's for its binding
   for (const PanelRender& p : sheet.panels) {
     const Fit* fit = p.empty || p.panel.fit.empty() ? nullptr : m.find(FitId::parse(p.panel.fit, m.path.string()));
@@ -93,6 +112,7 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       {"glossy:droppedSamples", int(std::min<uint64_t>(sheet.droppedSamples, INT32_MAX))},
       {"glossy:renderSeconds", float(seconds)},
       {"glossy:version", std::string(GLOSSY_VERSION)},
+      {kSettingsAttribute, sheetSettings(m, stage, o, explicitMeasured)},
   };
 }
 
@@ -109,9 +129,9 @@ void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, co
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (exr.has_parent_path()) std::filesystem::create_directories(exr.parent_path());
   const std::filesystem::path png = std::filesystem::path(exr).replace_extension(".png");
-  // The PNG first: a sheet counts as complete (for glossy sheets' resuming) once its EXR exists.
+  // The PNG first: glossy sheets keeps a sheet only once its EXR, written last, is whole (sheet_resume.h).
   writeSheetPng(sheet, png, o.exposure, std::filesystem::exists(kFont) ? kFont : "");
-  writeSheetExr(sheet, exr, sheetMetadata(m, stage, o, sheet, seconds), o.half ? PixelType::Half : PixelType::Float);
+  writeSheetExr(sheet, exr, sheetMetadata(m, stage, o, sheet, seconds, explicitMeasured), o.half ? PixelType::Half : PixelType::Float);
   std::cout << errorTable(sheet) << std::flush;
   std::cerr << "glossy: wrote " << exr.string() << " and " << png.string() << " (" << seconds << " s)\n";
 }
@@ -150,6 +170,8 @@ SheetOptions withPassLimits(const SheetOptions& o) {
 }
 
 int runSheet(const SheetOptions& options) {
+  // Only EXR: the PNG is written beside it, under the same name with .png.
+  checkOutputFile(options.output, "-o", {".exr"}, Folder::Create);
   const SheetOptions o = withPassLimits(options);
   checkImageMemory(o.settings.width, o.settings.height, int(o.settings.panels.size()), kSheetBytesPerPanelPixel);
   const Stage stage(o.scene, double(o.settings.width) / double(o.settings.height));
@@ -170,36 +192,69 @@ std::pair<int, int> parseShard(const std::string& text) {
 }
 
 int runSheets(const SheetOptions& options) {
+  checkOutputFolder(options.outDir, "-o");
   const SheetOptions o = withPassLimits(options);
   checkImageMemory(o.settings.width, o.settings.height, int(o.settings.panels.size()), kSheetBytesPerPanelPixel);
   for (const std::string& in : o.inputs)
     if (std::error_code ec; !std::filesystem::is_directory(in, ec) && !std::filesystem::is_regular_file(in, ec))
       throw InputError(in + ": no such material file or folder");
   std::vector<std::filesystem::path> files = materialFiles(o.inputs);
-  if (!o.shard.empty()) {
-    const auto [index, count] = parseShard(o.shard);
-    std::vector<std::filesystem::path> mine;
-    for (size_t k = 0; k < files.size(); ++k)
-      if (int(k % size_t(count)) == index) mine.push_back(files[k]);
-    files = std::move(mine);
+  const std::pair<int, int> shard = o.shard.empty() ? std::pair(0, 1) : parseShard(o.shard);
+  // Validate every file, and where each sheet goes, before rendering any, so a typo fails in a second, not
+  // after an hour. All files, not just this shard's: another shard writes to the same folder.
+  const std::filesystem::path outDir = o.outDir;
+  std::vector<std::string> names;
+  std::map<std::string, std::filesystem::path> byName;
+  for (const auto& f : files) {
+    const std::string name = loadMaterialFile(f).name;
+    if (auto [it, fresh] = byName.emplace(name, f); !fresh)
+      throw InputError(it->second.string() + " and " + f.string() + ": both name the material '" + name +
+                       "' (one sheet " + name + ".exr each)");
+    std::error_code ec;
+    for (const char* extension : {".exr", ".png"})
+      if (const auto path = outDir / (name + extension); std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+        throw InputError(path.string() + ": is in the way of " + f.string() + "'s sheet (not a file)");
+    names.push_back(name);
   }
-  // Validate every file before rendering any, so a typo fails in a second, not after an hour.
-  for (const auto& f : files) loadMaterialFile(f);
+  {
+    const auto [index, count] = shard;
+    std::vector<std::filesystem::path> myFiles;
+    std::vector<std::string> myNames;
+    for (size_t k = 0; k < files.size(); ++k)
+      if (int(k % size_t(count)) == index) {
+        myFiles.push_back(files[k]);
+        myNames.push_back(names[k]);
+      }
+    files = std::move(myFiles);
+    names = std::move(myNames);
+  }
 
   const Stage stage(o.scene, double(o.settings.width) / double(o.settings.height));
+  std::filesystem::create_directories(outDir);  // only once the scene and lighting options are known good
   SheetOptions batch = o;
   batch.settings.progress = false;
   const auto start = std::chrono::steady_clock::now();
-  size_t done = 0, skipped = 0;
+  size_t done = 0, skipped = 0, busy = 0;
   for (size_t k = 0; k < files.size(); ++k) {
-    const std::string name = loadMaterialFile(files[k]).name;
-    const std::filesystem::path exr = std::filesystem::path(o.outDir) / (name + ".exr");
-    const std::filesystem::path png = std::filesystem::path(exr).replace_extension(".png");
-    if (std::filesystem::exists(exr) && std::filesystem::exists(png)) {
+    const std::string& name = names[k];
+    const std::filesystem::path exr = outDir / (name + ".exr");
+    const SheetLock lock(outDir, name);
+    if (!lock.held()) {
+      ++busy;
+      std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": another glossy sheets is writing it, skipped\n";
+      continue;
+    }
+    if (const size_t stale = removeStaleTemporaries(outDir, name))
+      std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": removed " << stale
+                << " temporary files an interrupted run left\n";
+    const std::string why = whyIncomplete(exr, sheetSettings(loadMaterialFile(files[k]), stage, batch, ""));
+    if (why.empty()) {
       ++skipped;
       std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": complete, skipped\n";
       continue;
     }
+    if (std::error_code ec; std::filesystem::exists(exr, ec))
+      std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": " << why << ", rendering it again\n";
     makeSheet(stage, files[k], batch, exr, "");
     ++done;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -208,7 +263,10 @@ int runSheets(const SheetOptions& options) {
                  elapsed, eta);
   }
   std::fprintf(stderr, "glossy: %zu sheets rendered, %zu already complete, in %s\n", done, skipped, o.outDir.c_str());
-  return 0;
+  if (busy == 0) return 0;
+  // Not every sheet of this run is known to be complete: say so in the status too.
+  std::fprintf(stderr, "glossy: %zu sheets left to the other run writing them; run again to check them\n", busy);
+  return 1;
 }
 
 }  // namespace

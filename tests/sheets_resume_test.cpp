@@ -1,0 +1,110 @@
+// glossy sheets' resuming (renderer/cli/sheet_resume.h): a sheet on disk is kept only if its EXR opens,
+// has every layer and carries this run's settings; broken or foreign sheets are rendered again, things in
+// the way and clashing names stop the run before any rendering, and one run at a time writes each sheet.
+#include "renderer/image/exr_image.h"
+#include "tests/support/test_support.h"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+namespace glossy::test {
+
+namespace {
+
+struct Batch {
+  TempDir tmp;
+  Batch() {
+    std::filesystem::create_directories(tmp / "lib");
+    for (const char* name : {"chrome", "gold-paint"})
+      std::filesystem::copy_file(materialsDir() / (std::string(name) + ".toml"), tmp / "lib" / (std::string(name) + ".toml"));
+  }
+  std::filesystem::path out(const std::string& file = "") const { return file.empty() ? tmp / "out" : tmp / "out" / file; }
+  RunResult run(std::vector<std::string> extra = {}) const {
+    std::vector<std::string> args{"sheets", (tmp / "lib").string(), "-o", out().string(), "--merl-dir", tmp.path().string(),
+                                  "--width", "16", "--height", "16", "--spp", "4"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runGlossy(args);
+  }
+};
+
+bool mentions(const RunResult& r, const std::string& s) { return r.err.find(s) != std::string::npos; }
+
+}  // namespace
+
+TEST(CliSheetsResume, BrokenSheetsAreRenderedAgain) {
+  Batch b;
+  ASSERT_EQ(b.run().status, 0);
+  EXPECT_FALSE(readImageAttribute(b.out("chrome.exr"), "glossy:settings").empty());
+  const RunResult again = b.run();
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_TRUE(mentions(again, "chrome: complete, skipped")) << again.err;
+  EXPECT_TRUE(mentions(again, "gold-paint: complete, skipped")) << again.err;
+
+  writeText(b.out("chrome.exr"), "");  // 0 bytes
+  const std::string whole = readText(b.out("gold-paint.exr"));
+  writeText(b.out("gold-paint.exr"), whole.substr(0, whole.size() / 2));  // cut short
+  const RunResult r = b.run();
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(mentions(r, "chrome: unreadable EXR")) << r.err;
+  EXPECT_TRUE(mentions(r, "gold-paint: unreadable EXR")) << r.err;
+  EXPECT_TRUE(mentions(r, "2 sheets rendered")) << r.err;
+  for (const char* sheet : {"chrome.exr", "gold-paint.exr"}) EXPECT_NO_THROW(readImageLayer(b.out(sheet), "measured")) << sheet;
+}
+
+TEST(CliSheetsResume, ASheetAtOtherSettingsOrOfAnEditedMaterialIsRenderedAgain) {
+  Batch b;
+  ASSERT_EQ(b.run().status, 0);
+  RunResult r = b.run({"--seed", "7"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(mentions(r, "chrome: made with other settings")) << r.err;
+  EXPECT_TRUE(mentions(r, "2 sheets rendered")) << r.err;
+
+  writeText(b.tmp / "lib" / "chrome.toml", readText(b.tmp / "lib" / "chrome.toml") + "# edited\n");
+  r = b.run({"--seed", "7"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(mentions(r, "chrome: made with other settings")) << r.err;
+  EXPECT_TRUE(mentions(r, "gold-paint: complete, skipped")) << r.err;
+  EXPECT_TRUE(mentions(r, "1 sheets rendered")) << r.err;
+}
+
+TEST(CliSheetsResume, AFolderInTheWayOrTwoFilesOfOneNameStopBeforeRendering) {
+  Batch b;
+  std::filesystem::create_directories(b.out("chrome.exr"));
+  expectOneLineError(b.run(), (b.out("chrome.exr")).string());
+  EXPECT_FALSE(std::filesystem::exists(b.out("gold-paint.exr")));
+  std::filesystem::remove(b.out("chrome.exr"));
+
+  writeText(b.tmp / "lib" / "chrome-copy.toml", readText(b.tmp / "lib" / "chrome.toml"));
+  const RunResult r = b.run();
+  expectOneLineError(r, "chrome-copy.toml");
+  EXPECT_TRUE(mentions(r, (b.tmp / "lib" / "chrome.toml").string())) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(b.out("gold-paint.exr")));
+}
+
+TEST(CliSheetsResume, ASheetAnotherRunIsWritingIsLeftToItAndStaleTemporariesAreCleaned) {
+  Batch b;
+  std::filesystem::create_directories(b.out());
+  writeText(b.out("chrome.exr.tmp.abc123"), "half a sheet");
+  writeText(b.out("gold-paint.png.tmp.def456"), "half a preview");
+  // Another run holds chrome's lock: its temporaries are its own, and the sheet is its to write.
+  const int fd = ::open(b.out(".chrome.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  RunResult r = b.run();
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(mentions(r, "chrome: another glossy sheets is writing it, skipped")) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(b.out("chrome.exr")));
+  EXPECT_TRUE(std::filesystem::exists(b.out("chrome.exr.tmp.abc123")));
+  EXPECT_FALSE(std::filesystem::exists(b.out("gold-paint.png.tmp.def456")));
+  EXPECT_TRUE(std::filesystem::exists(b.out("gold-paint.exr")));
+  ::close(fd);
+
+  r = b.run();
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(b.out("chrome.exr.tmp.abc123")));
+  EXPECT_TRUE(mentions(r, "chrome: removed 1 temporary")) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(b.out("chrome.exr")));
+}
+
+}  // namespace glossy::test
