@@ -1,6 +1,7 @@
 // Small but varied glTF and GLB files, in the spirit of the Khronos sample collection, written here and
 // rendered through the command line at 32², 4 spp: each must exit 0 with finite pixels and the object in
-// view. scripts/make-gltf-contact-sheet does the same for real models from a folder.
+// view. scripts/make-gltf-contact-sheet does the same for real models from a folder, or for these (it sets
+// GLOSSY_KEEP_GLTF_MODELS to a folder, into which the test then copies the files it wrote).
 #include "renderer/image/exr_image.h"
 #include "tests/support/gltf_doc.h"
 #include "tests/support/test_support.h"
@@ -8,6 +9,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <functional>
 
 namespace glossy::test {
@@ -195,6 +197,13 @@ TEST(GltfModels, VariedFilesRenderWithTheObjectInView) {
       if (std::abs(image.pixels[i] - 1.0f) + std::abs(image.pixels[i + 2] - 1.0f) > 0.02f) ++object;
     }
     EXPECT_GT(object, 32 * 32 / 20) << "the object covers " << object << " pixels";
+  }
+  if (const char* keep = std::getenv("GLOSSY_KEEP_GLTF_MODELS"); keep && *keep) {
+    std::filesystem::create_directories(keep);
+    for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+      if (entry.path().extension() != ".exr")
+        std::filesystem::copy(entry.path(), std::filesystem::path(keep) / entry.path().filename(),
+                              std::filesystem::copy_options::overwrite_existing);
   }
 }
 
