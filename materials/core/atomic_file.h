@@ -1,5 +1,6 @@
 // Writing outputs so that a reader never sees half a file: write a temporary beside the target, then
-// rename it over the target (atomic on POSIX within one file system).
+// rename it over the target (atomic on POSIX within one file system). A temporary that exists when the
+// process is stopped by SIGINT, SIGTERM or SIGHUP is removed by the signal handler, once installed.
 #pragma once
 
 #include <filesystem>
@@ -9,5 +10,31 @@ namespace glossy {
 
 // Throws std::runtime_error naming the path if anything fails; the temporary is removed on failure.
 void writeFileAtomically(const std::filesystem::path& path, std::string_view contents);
+
+// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove the temporaries being written, then end the
+// process by the same signal with its default action (so it still stops at once, with the usual status).
+void removeTemporariesOnSignal();
+
+// A temporary file beside `path` (`path`.tmp.XXXXXX, created empty), known to the signal handler until
+// released by rename or removal. Neither copyable nor movable: the handler knows it by its slot.
+class PendingTemporary {
+ public:
+  explicit PendingTemporary(const std::filesystem::path& path);
+  ~PendingTemporary();  // removes the file unless it was renamed into place
+  PendingTemporary(const PendingTemporary&) = delete;
+  PendingTemporary& operator=(const PendingTemporary&) = delete;
+
+  int fd() const { return fd_; }
+  const std::filesystem::path& path() const { return tmp_; }
+  // Closes the descriptor; returns close()'s result (errno set on failure).
+  int close();
+  // Renames the temporary over `target`; returns rename()'s result. On success the file is no longer ours.
+  int renameTo(const std::filesystem::path& target);
+
+ private:
+  std::filesystem::path tmp_;
+  int fd_ = -1;
+  int slot_ = -1;
+};
 
 }  // namespace glossy

@@ -1,5 +1,6 @@
 // glossy: compare analytic BRDF models with measured ones. Exit status (shared/spec/interfaces.md):
 // 0 success, 2 bad usage or bad input (one line on stderr naming the file and problem), 1 anything else.
+#include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/core/notes.h"
 #include "renderer/cli/command.h"
@@ -37,6 +38,7 @@ std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>&
 
 int main(int argc, char** argv) {
   using namespace glossy;
+  removeTemporariesOnSignal();  // an interrupted write leaves no NAME.exr.tmp.* behind
   CLI::App app{"glossy " GLOSSY_VERSION ": render and compare glossy BRDF models (Löw et al. 2012) with measured data"};
   app.set_version_flag("--version", std::string(GLOSSY_VERSION));
   app.require_subcommand(1);
