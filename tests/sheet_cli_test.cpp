@@ -200,6 +200,14 @@ TEST(CliSheet, TimeBudgetRendersProgressively) {
   EXPECT_EQ(readImageAttribute(tmp / "t.exr", "glossy:panel.smooth_E2.spp"), readImageAttribute(tmp / "t.exr", "glossy:spp"));
 }
 
+TEST(CliSheet, SppCapsATimeBudget) {
+  TempDir tmp;
+  const RunResult r = runGlossy({"sheet", "--material", (materialsDir() / "chrome.toml").string(), "--width", "16",
+                                 "--height", "16", "--time", "2", "--spp", "24", "-o", (tmp / "t.exr").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readImageAttribute(tmp / "t.exr", "glossy:spp"), "24") << "--spp is the most a --time budget may spend";
+}
+
 TEST(CliSheet, TargetErrorRendersUntilEveryIntervalIsThatNarrow) {
   GLOSSY_REQUIRE_SHARED("merl/gold-paint.binary.xz");
   TempDir tmp;

@@ -70,9 +70,9 @@ class PassPlan {
       return std::max(n, 0);
     }
     if (budget_ > 0.0) {
-      if (done == 0) return lastPass_ = 1;
-      if (seconds + 2.0 * lastPassSeconds > budget_) return 0;
-      return lastPass_ = done;  // doubling
+      if (done == 0) return lastPass_ = std::min(1, cap);
+      if (done >= cap || seconds + 2.0 * lastPassSeconds > budget_) return 0;
+      return lastPass_ = std::min(done, cap - done);  // doubling, up to the --spp cap
     }
     return done == 0 ? cap : 0;
   }
