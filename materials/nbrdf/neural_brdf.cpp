@@ -1,6 +1,7 @@
 #include "materials/nbrdf/neural_brdf.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/input_file.h"
 #include "materials/core/toml_input.h"
 
 #include <tbb/blocked_range.h>
@@ -9,8 +10,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 namespace glossy {
 
@@ -70,17 +69,7 @@ std::vector<double> requireNumbers(const toml::table& t, std::string_view name, 
 }  // namespace
 
 NeuralBrdf NeuralBrdf::load(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a .nbrdf file");
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string() + ": cannot open");
-  if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxBytes)
-    throw InputError(path.string() + ": " + std::to_string(size) + " bytes, too large for a Neural BRDF (at most " +
-                     std::to_string(kMaxBytes) + ")");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) throw InputError(path.string() + ": read failed");
-  return parse(text.str(), path.string());
+  return parse(readInputFile(path, kMaxBytes, "Neural BRDF (.nbrdf)"), path.string());
 }
 
 NeuralBrdf NeuralBrdf::parse(std::string_view text, const std::string& source) {

@@ -1,11 +1,11 @@
 #include "materials/params/importer.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/input_file.h"
 #include "materials/core/text.h"
 #include "materials/models/registry.h"
 #include "materials/params/material_name.h"
 
-#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -201,11 +201,8 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
 }
 
 void Importer::addFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (std::error_code ec; !in || std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": cannot open");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
+  // The supplement's text for all 100 materials is well under a megabyte.
+  const std::string s = readInputFile(path, 64 << 20, "supplement or .fit file");
   if (s.find("Aggregate(") != std::string::npos)
     add(importFitLines(s, path.string()), kPrecisionFitLines);
   else if (s.find("Material Name:") != std::string::npos)

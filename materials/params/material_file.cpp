@@ -1,6 +1,7 @@
 #include "materials/params/material_file.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/input_file.h"
 #include "materials/core/toml_input.h"
 #include "materials/models/registry.h"
 #include "materials/params/material_name.h"
@@ -9,7 +10,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 namespace glossy {
@@ -259,14 +259,8 @@ MaterialFile parseMaterialToml(std::string_view text, const std::string& source)
 }
 
 MaterialFile loadMaterialFile(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a material file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot open material file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(path.string() + ": read failed");
-  return parseMaterialToml(text.str(), path.string());
+  // A material file is a few kilobytes; a megabyte leaves room for long comments and notes.
+  return parseMaterialToml(readInputFile(path, 1 << 20, "material file"), path.string());
 }
 
 std::string toToml(const MaterialFile& m) {

@@ -2,17 +2,12 @@
 
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "renderer/util/memory.h"
 
-#include <unistd.h>
 
 namespace glossy::cli {
 
 namespace {
-
-double physicalMemoryBytes() {
-  const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
-  return pages > 0 && pageSize > 0 ? double(pages) * double(pageSize) : 0.0;
-}
 
 std::string gigabytes(double bytes) { return formatted("%.3g GB", bytes / 1e9); }
 

@@ -197,7 +197,8 @@ int runSheets(const SheetOptions& options) {
   checkImageMemory(o.settings.width, o.settings.height, int(o.settings.panels.size()), kSheetBytesPerPanelPixel);
   for (const std::string& in : o.inputs)
     if (std::error_code ec; !std::filesystem::is_directory(in, ec) && !std::filesystem::is_regular_file(in, ec))
-      throw InputError(in + ": no such material file or folder");
+      throw InputError(in + (std::filesystem::exists(in, ec) ? ": is not a material file or folder (a device, FIFO or socket)"
+                                                             : ": no such material file or folder"));
   std::vector<std::filesystem::path> files = materialFiles(o.inputs);
   const std::pair<int, int> shard = o.shard.empty() ? std::pair(0, 1) : parseShard(o.shard);
   // Validate every file, and where each sheet goes, before rendering any, so a typo fails in a second, not
