@@ -43,13 +43,16 @@ extern "C" {
 __m128d _ZGVbN2vv_atan2(__m128d y, __m128d x);
 __m128d _ZGVbN2v_sin(__m128d a);
 __m128d _ZGVbN2v_cos(__m128d a);
-__m256d _ZGVdN4vv_atan2(__m256d y, __m256d x);
-__m256d _ZGVdN4v_sin(__m256d a);
-__m256d _ZGVdN4v_cos(__m256d a);
 __m128d _ZGVbN2v_exp(__m128d a);
 __m128d _ZGVbN2v_log1p(__m128d a);
-__m256d _ZGVdN4v_exp(__m256d a);
-__m256d _ZGVdN4v_log1p(__m256d a);
+// Declared AVX2 like the blocks that call them: clang refuses a ymm argument to a baseline-ISA function.
+#define GLOSSY_AVX2 __attribute__((target("avx2,fma")))
+GLOSSY_AVX2 __m256d _ZGVdN4vv_atan2(__m256d y, __m256d x);
+GLOSSY_AVX2 __m256d _ZGVdN4v_sin(__m256d a);
+GLOSSY_AVX2 __m256d _ZGVdN4v_cos(__m256d a);
+GLOSSY_AVX2 __m256d _ZGVdN4v_exp(__m256d a);
+GLOSSY_AVX2 __m256d _ZGVdN4v_log1p(__m256d a);
+#undef GLOSSY_AVX2
 }
 
 namespace glossy::lanes {

@@ -218,7 +218,8 @@ void validateFit(const Fit& fit, const std::string& context) {
   const ModelInfo* model = &requireModel(fit.id.model, context);
   checkMetric(fit.id.metric, context + ": metric");
   for (const auto& [key, value] : fit.params.values()) {
-    auto spec = std::find_if(model->params.begin(), model->params.end(), [&](const ParamSpec& s) { return s.key == key; });
+    // An init-capture: clang before 16 cannot capture a structured binding.
+    auto spec = std::find_if(model->params.begin(), model->params.end(), [&k = key](const ParamSpec& s) { return s.key == k; });
     if (spec == model->params.end()) throw InputError(context + ": key '" + key + "': unknown for the " + fit.id.model + " model");
     checkParam(*spec, value, context + ": key '" + key + "'");
   }
