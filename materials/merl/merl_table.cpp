@@ -32,23 +32,35 @@ std::vector<std::byte> readFile(const std::filesystem::path& path) {
 }
 
 // Decompresses an .xz stream; stops one byte past the size a MERL file may have, so a wrong file is
-// reported as the wrong size without decompressing all of it.
+// reported as the wrong size without decompressing all of it. The output grows as it is produced, so that
+// a file that is not xz, or a short one, costs what it holds rather than a table's 35 MB.
 std::vector<std::byte> decompressXz(std::span<const std::byte> in, const std::string& source) {
+  constexpr size_t kLimit = MerlTable::kFileBytes + 1;
   lzma_stream strm = LZMA_STREAM_INIT;
-  if (lzma_stream_decoder(&strm, UINT64_MAX, 0) != LZMA_OK) throw InputError(source + ": cannot start xz decoder");
-  std::vector<std::byte> out(MerlTable::kFileBytes + 1);
+  // The decoder's memory follows the dictionary size the file declares (up to 1.5 GB); xz -9 needs 65 MB.
+  constexpr uint64_t kMemoryLimit = uint64_t(256) << 20;
+  if (lzma_stream_decoder(&strm, kMemoryLimit, 0) != LZMA_OK) throw InputError(source + ": cannot start xz decoder");
+  std::vector<std::byte> out(std::min<size_t>(kLimit, 1 << 20));
   strm.next_in = reinterpret_cast<const uint8_t*>(in.data());
   strm.avail_in = in.size();
-  strm.next_out = reinterpret_cast<uint8_t*>(out.data());
-  strm.avail_out = out.size();
   lzma_ret ret = LZMA_OK;
-  while (ret == LZMA_OK && strm.avail_out > 0) ret = lzma_code(&strm, LZMA_FINISH);
-  const size_t produced = out.size() - strm.avail_out;
+  size_t produced = 0;
+  while (ret == LZMA_OK) {
+    if (produced == out.size()) {
+      if (out.size() == kLimit) break;
+      out.resize(std::min(kLimit, 2 * out.size()));
+    }
+    strm.next_out = reinterpret_cast<uint8_t*>(out.data() + produced);
+    strm.avail_out = out.size() - produced;
+    ret = lzma_code(&strm, LZMA_FINISH);
+    produced = out.size() - strm.avail_out;
+  }
   lzma_end(&strm);
-  if (ret != LZMA_STREAM_END && !(ret == LZMA_OK && strm.avail_out == 0)) {
+  if (ret != LZMA_STREAM_END && !(ret == LZMA_OK && produced == kLimit)) {
     const char* why = ret == LZMA_FORMAT_ERROR ? "not an xz file"
                       : ret == LZMA_DATA_ERROR ? "corrupt xz data"
                       : ret == LZMA_BUF_ERROR  ? "truncated xz data"
+                      : ret == LZMA_MEMLIMIT_ERROR ? "xz data that needs over 256 MB to decompress"
                                                : "xz decoding failed";
     throw InputError(source + ": " + why);
   }
@@ -90,28 +102,45 @@ MerlTable MerlTable::parse(std::span<const std::byte> bytes, const std::string& 
     throw InputError(source + ": " + (bytes.size() < kFileBytes ? "truncated" : "oversized") + " MERL file (" +
                      std::to_string(bytes.size()) + " bytes, expected " + std::to_string(kFileBytes) + ")");
 
-  std::vector<double> values(3 * kBins);
-  std::memcpy(values.data(), bytes.data() + sizeof dims, values.size() * sizeof(double));
-  return fromValues(values, source);
+  // Read in place (unaligned, hence memcpy): a copy of the values would be another 35 MB.
+  const std::byte* data = bytes.data() + sizeof dims;
+  return build(
+      [data](size_t k) {
+        double v;
+        std::memcpy(&v, data + k * sizeof v, sizeof v);
+        return v;
+      },
+      source);
 }
 
 MerlTable MerlTable::fromValues(std::span<const double> values, const std::string& source) {
   if (values.size() != 3 * kBins) throw InputError(source + ": " + std::to_string(values.size()) + " values, expected 3 × 1458000");
+  return build([values](size_t k) { return values[k]; }, source);
+}
+
+template <class ValueAt>
+MerlTable MerlTable::build(const ValueAt& valueAt, const std::string& source) {
+  // Every value is checked before the table is allocated: a bad file costs only the reading up to its
+  // first bad value.
+  for (int c = 0; c < 3; ++c) {
+    for (size_t i = 0; i < kBins; ++i) {
+      const double v = valueAt(c * kBins + i);
+      if (std::isfinite(v) && v * kScale[c] <= kMaxValue) continue;
+      const int iph = int(i % kPhiD), itd = int(i / kPhiD % kThetaD), ith = int(i / (size_t(kPhiD) * kThetaD));
+      const std::string bin = std::string(" in channel ") + "RGB"[c] + " at bin (θh " + std::to_string(ith) + ", θd " +
+                              std::to_string(itd) + ", φd " + std::to_string(iph) + ")";
+      if (!std::isfinite(v)) throw InputError(source + ": non-finite value" + bin);
+      throw InputError(source + ": value " + formatted("%.6g", v * kScale[c]) + " /sr" + bin + " is above the plausible maximum " +
+                       formatted("%g", kMaxValue) + " /sr of a measured BRDF");
+    }
+  }
   MerlTable t;
   t.source_ = source;
   t.raw_.assign(3 * kBins, 0.0f);
   t.valid_.assign(kBins, 1);
   for (int c = 0; c < 3; ++c) {
     for (size_t i = 0; i < kBins; ++i) {
-      const double v = values[c * kBins + i];
-      if (!std::isfinite(v) || v * kScale[c] > kMaxValue) {
-        const int iph = int(i % kPhiD), itd = int(i / kPhiD % kThetaD), ith = int(i / (size_t(kPhiD) * kThetaD));
-        const std::string bin = std::string(" in channel ") + "RGB"[c] + " at bin (θh " + std::to_string(ith) + ", θd " +
-                                std::to_string(itd) + ", φd " + std::to_string(iph) + ")";
-        if (!std::isfinite(v)) throw InputError(source + ": non-finite value" + bin);
-        throw InputError(source + ": value " + formatted("%.6g", v * kScale[c]) + " /sr" + bin + " is above the plausible maximum " +
-                         formatted("%g", kMaxValue) + " /sr of a measured BRDF");
-      }
+      const double v = valueAt(c * kBins + i);
       if (v < 0.0) t.valid_[i] = 0;
       t.raw_[3 * i + c] = static_cast<float>(v);
     }

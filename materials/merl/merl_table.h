@@ -53,6 +53,10 @@ class MerlTable {
   const std::string& source() const { return source_; }
 
  private:
+  // The table of the values valueAt(k), k < 3 × kBins, in the file's order: fromValues's, for any source.
+  template <class ValueAt>
+  static MerlTable build(const ValueAt& valueAt, const std::string& source);
+
   std::vector<float> raw_;       // unscaled stored values, RGB interleaved per bin; invalid bins hold 0
   std::vector<uint8_t> valid_;   // 1 where all three channels were measured (non-negative)
   size_t invalidBins_ = 0;
