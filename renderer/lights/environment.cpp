@@ -8,6 +8,7 @@
 #include "materials/sampling/bilinear_patch.h"
 #include "materials/sampling/blocked_distribution.h"
 #include "renderer/lights/default_sky.h"
+#include "renderer/lights/exr_preflight.h"
 #include "renderer/lights/latlong.h"
 #include "renderer/util/memory.h"
 
@@ -58,18 +59,31 @@ LatLongImage readLatLong(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path, ec)) throw fail("environment map not found");
   // OpenImageIO would read a device such as /dev/zero for ever.
   if (!std::filesystem::is_regular_file(path, ec)) throw fail("is not a regular file (a folder, device or FIFO)");
-  auto input = OIIO::ImageInput::open(name);
+  preflightExr(path);
+  // The reader of the file's extension alone, made by its format's name: ImageInput::open, and create with
+  // the file's name, hand a file that reader refuses to every other format OpenImageIO has (video and
+  // camera-raw decoders among them), each a parser of hostile bytes and some slow to give up.
+  const std::string extension = path.extension().string();
+  if (extension.size() < 2) throw fail("environment map has no extension (.hdr, .exr, ...) to choose its reader by");
+  auto input = OIIO::ImageInput::create(extension.substr(1));
   if (!input) throw fail("cannot read environment map (" + OIIO::geterror() + ")");
+  if (OIIO::ImageSpec opened; !input->open(name, opened))
+    throw fail("cannot read environment map (" + input->geterror() + ")");
   const OIIO::ImageSpec& spec = input->spec();
   if (spec.width <= 0 || spec.height <= 0) throw fail("environment map has no pixels");
   if (spec.depth > 1) throw fail("environment map is a volume, not a lat-long image");
   if (spec.nchannels < 3)
     throw fail("environment map has " + std::to_string(spec.nchannels) + " channel(s), needs RGB or RGBA");
-  // A header may claim any size; what it asks for is checked before the texels are allocated.
+  // A header may claim any size; what it asks for is checked before the texels are allocated: against the
+  // memory here, then against glossy's limits, which hold on any machine.
   const double bytes = double(spec.width) * double(std::max(spec.height, 2)) * kEnvironmentBytesPerTexel;
   if (const double have = physicalMemoryBytes(); have > 0.0 && bytes > have)
     throw fail(formatted("environment map is %dx%d: about %.3g GB to sample, more than the %.3g GB of memory here",
                          spec.width, spec.height, bytes / 1e9, have / 1e9));
+  if (spec.width > Environment::kMaxSide || spec.height > Environment::kMaxSide ||
+      std::int64_t(spec.width) * std::max(spec.height, 2) > Environment::kMaxTexels)
+    throw fail(formatted("environment map is %dx%d texels; glossy loads at most %d on a side and %lld in all",
+                         spec.width, spec.height, Environment::kMaxSide, (long long)Environment::kMaxTexels));
 
   // Rows are interpolated pole to pole, so a single row stands for both poles (copied below).
   LatLongImage image(spec.width, std::max(spec.height, 2));

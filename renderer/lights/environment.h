@@ -8,6 +8,7 @@
 #include "materials/core/types.h"
 #include "renderer/lights/latlong.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -23,9 +24,17 @@ class Environment {
     double pdf;  // solid angle; 0 = invalid
   };
 
-  // .exr or .hdr via OpenImageIO. Throws InputError naming the file (unreadable, not RGB(A), non-finite
-  // or negative texels). rotateDegrees rotates the map about +Y (right-handed): a positive angle turns its
-  // features counter-clockwise seen from above, +Z towards +X (90° moves what was at +X to −Z).
+  // The largest map: at most 2^28 texels (16384 × 16384, or 32768 × 8192: 4.8 GB at the 18 bytes a texel a
+  // map costs), and at most 65536 on a side (OpenImageIO's reading buffer holds whole rows). Checked on the
+  // header, before anything is allocated, so that a file claiming more (which a few bytes of header can)
+  // is refused as bad input instead of exhausting memory.
+  static constexpr std::int64_t kMaxTexels = std::int64_t(1) << 28;
+  static constexpr int kMaxSide = 65536;
+
+  // .exr or .hdr via OpenImageIO. Throws InputError naming the file (unreadable, not RGB(A), larger than
+  // the limits above or the memory here, non-finite or negative texels). rotateDegrees rotates the map
+  // about +Y (right-handed): a positive angle turns its features counter-clockwise seen from above, +Z
+  // towards +X (90° moves what was at +X to −Z).
   static Environment load(const std::filesystem::path& path, double rotateDegrees = 0.0);
   static Environment constant(const Rgb& radiance);
   // A procedural sky the project makes itself: soft gradient sky, a bright sun-like key, a darker ground.
