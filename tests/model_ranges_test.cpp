@@ -54,7 +54,7 @@ std::string describe(const ModelInfo& model, const ParamSet& p) {
   std::string s(model.name);
   for (const ParamSpec& spec : model.params) {
     const ParamSet::Value* v = p.find(spec.key);
-    s += " " + std::string(spec.key) + "=";
+    s.append(" ").append(spec.key).append("=");
     if (std::holds_alternative<double>(*v)) s += formatted("%g", std::get<double>(*v));
     else if (std::holds_alternative<Rgb>(*v)) s += formatted("%g", std::get<Rgb>(*v).r);
     else s += std::get<std::string>(*v);
@@ -110,7 +110,7 @@ TEST(ModelRanges, FileValuesOutsideARangeAreRefusedNamingFileLineAndKey) {
   TempDir dir;
   const std::filesystem::path file = dir / "tiny-m.toml";
   // Values a "positive" check lets through and that evaluate to NaN.
-  for (const std::string& bad : {"m = 1e-308", "m = 5e-324", "eta = 1e308", "m = 11.0"}) {
+  for (const std::string bad : {"m = 1e-308", "m = 5e-324", "eta = 1e308", "m = 11.0"}) {
     std::string text = "name = \"tiny-m\"\n\n[[fit]]\nmodel = \"cook-torrance\"\nmetric = \"E2\"\n"
                        "kd = [0.1, 0.1, 0.1]\nks = [0.5, 0.5, 0.5]\n";
     text += bad.starts_with("m ") ? bad + "\neta = 1.5\n" : "m = 0.1\n" + bad + "\n";
