@@ -7,7 +7,6 @@
 #include <cstring>
 #include <fstream>
 #include <string>
-#include <utility>
 
 namespace glossy {
 
@@ -30,20 +29,24 @@ bool readName(std::istream& in, std::string& name) {
 }
 
 // A channel list (type "chlist"): per channel its NUL-terminated name, then its pixel type (int32), linear
-// flag (1 byte), 3 reserved bytes and x and y sampling (int32 each); an empty name ends it. The name of the
-// first channel whose pixel type is not UINT (0), HALF (1) or FLOAT (2), with that type; "" if none.
-std::pair<std::string, int32_t> badPixelType(const std::string& list) {
+// flag (1 byte), 3 reserved bytes and x and y sampling (int32 each); an empty name ends it. OpenEXR reads
+// the entries until that empty name whatever size the attribute claims, so the list must end exactly at its
+// claimed size for the types checked here to be the ones OpenEXR sees. "" when it does and every pixel type
+// is UINT (0), HALF (1) or FLOAT (2); else what is wrong.
+std::string channelListProblem(const std::string& list) {
   for (size_t at = 0; at < list.size();) {
     const size_t end = list.find('\0', at);
-    if (end == std::string::npos || end == at) break;  // truncated or ended: OpenEXR reports which
+    if (end == std::string::npos) break;
+    if (end == at) return at + 1 == list.size() ? "" : "channel list ends before the size it claims";
     const std::string name = list.substr(at, end - at);
     if (list.size() - (end + 1) < 16) break;
     int32_t type;
     std::memcpy(&type, list.data() + end + 1, sizeof type);
-    if (type < 0 || type > 2) return {name, type};
+    if (type < 0 || type > 2)
+      return "channel '" + name + "' has pixel type " + std::to_string(type) + ", not UINT (0), HALF (1) or FLOAT (2)";
     at = end + 1 + 16;
   }
-  return {"", 0};
+  return "channel list runs past the size it claims";
 }
 
 }  // namespace
@@ -83,9 +86,7 @@ void preflightExr(const std::filesystem::path& path) {
                      std::to_string(kMaxChannelList) + " of any real file");
         std::string list(size_t(bytes), '\0');
         if (!in.read(list.data(), bytes)) throw fail("attribute '" + name + "' cannot be read");
-        if (const auto [channel, pixelType] = badPixelType(list); !channel.empty())
-          throw fail("channel '" + channel + "' has pixel type " + std::to_string(pixelType) +
-                     ", not UINT (0), HALF (1) or FLOAT (2)");
+        if (const std::string problem = channelListProblem(list); !problem.empty()) throw fail(problem);
       } else {
         in.seekg(bytes, std::ios::cur);
       }

@@ -1,7 +1,8 @@
 // What is refused about an OpenEXR file before OpenEXR reads it: a header attribute that claims more bytes
 // than the file holds (OpenEXR allocates and clears an attribute's claimed size before reading it, so a few
 // hundred bytes of file could make it take up to 2 GB before it finds the file short), and a channel of a
-// pixel type other than UINT, HALF and FLOAT (OpenEXR passes it on, and OpenImageIO 2.4 aborts on it).
+// pixel type other than UINT, HALF and FLOAT (OpenEXR passes it on, and OpenImageIO 2.4 aborts on it), or a
+// channel list that does not end where its claimed size says (OpenEXR reads on past it).
 #pragma once
 
 #include <filesystem>
