@@ -25,7 +25,6 @@ class PendingTemporary {
   PendingTemporary& operator=(const PendingTemporary&) = delete;
 
   int fd() const { return fd_; }
-  const std::filesystem::path& path() const { return tmp_; }
   // Closes the descriptor; returns close()'s result (errno set on failure).
   int close();
   // Renames the temporary over `target`; returns rename()'s result. On success the file is no longer ours.

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,9 +52,6 @@ inline CLI::Validator integerIn(long long lo, long long hi) {
       },
       "INT in " + range);
 }
-
-// A number > 0 and finite, with no upper end of its own.
-inline const CLI::Validator kFinitePositive = finiteIn(0.0, std::numeric_limits<double>::max(), true);
 
 // Threads a command may be asked for: far beyond any machine's cores, well short of what exhausts memory
 // creating them (`--threads 1e8`).

@@ -29,10 +29,6 @@ namespace glossy {
 
 namespace {
 
-// Messages are printed as a single line by the command line; names and tinygltf's errors may span several
-// and may quote bytes of a binary file.
-std::string oneLine(const std::string& text) { return printableLine(text); }
-
 std::string label(const char* kind, const std::string& name, int index) {
   return name.empty() ? std::string(kind) + " " + std::to_string(index) : std::string(kind) + " '" + name + "'";
 }
@@ -107,13 +103,13 @@ class GltfReader {
                                            " are under a singular transform)"
                                      : "the scene has no triangle meshes");
     if (skippedPrimitives_ > 0)
-      note(oneLine(path_.string() + ": warning: skipped " + std::to_string(skippedPrimitives_) +
+      note(printableLine(path_.string() + ": warning: skipped " + std::to_string(skippedPrimitives_) +
                    " primitive(s) whose mode is not TRIANGLES"));
     if (!singularNodes_.empty())
-      note(oneLine(path_.string() + ": warning: skipped the meshes of " + singularNodes_ +
+      note(printableLine(path_.string() + ": warning: skipped the meshes of " + singularNodes_ +
                    ": their world transform is singular (a scale of 0 hides them)"));
     if (!emissiveTextures_.empty())
-      note(oneLine(path_.string() + ": warning: emissive textures are not supported: " + emissiveTextures_ +
+      note(printableLine(path_.string() + ": warning: emissive textures are not supported: " + emissiveTextures_ +
                    " emit nothing"));
     std::stable_sort(cameraNodes_.begin(), cameraNodes_.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -123,7 +119,7 @@ class GltfReader {
 
  private:
   [[noreturn]] void fail(const std::string& what) const {
-    throw InputError(oneLine(path_.string() + ": " + what));
+    throw InputError(printableLine(path_.string() + ": " + what));
   }
 
   void readMaterials() {
@@ -500,9 +496,9 @@ SceneDescription loadGltf(const std::filesystem::path& path) {
   }
   if (!ok) {
     const std::string why = !err.empty() ? err : !warn.empty() ? warn : "cannot read it as glTF 2.0";
-    throw InputError(oneLine(path.string() + ": " + why));
+    throw InputError(printableLine(path.string() + ": " + why));
   }
-  if (!warn.empty()) note(oneLine(path.string() + ": warning: " + warn));
+  if (!warn.empty()) note(printableLine(path.string() + ": warning: " + warn));
   return GltfReader(path, model).read();
 }
 
