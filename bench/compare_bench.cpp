@@ -89,6 +89,9 @@ int main(int argc, char** argv) {
   app.add_option("--height", height)->capture_default_str();
   app.add_option("--max-depth", maxDepth, "Path segments at most (3 = one indirect bounce)")->capture_default_str();
   app.add_option("--write-sky", skyOut, "Write the built-in procedural sky as an EXR and exit");
+  int lightSamples = RenderSettings{}.lightSamples;
+  app.add_option("--light-samples", lightSamples, "Light samples at a path's first vertex")
+      ->capture_default_str()->check(CLI::Range(1, kMaxLightSamples));
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -115,6 +118,7 @@ int main(int argc, char** argv) {
     base.width = width;
     base.height = height;
     base.maxDepth = maxDepth;
+    base.lightSamples = lightSamples;
     base.progress = false;
 
     std::string line;

@@ -62,11 +62,16 @@ int main(int argc, char** argv) {
   const std::vector<Vec2> sobol = sobolPoints(count, rng);
   std::vector<Vec2> random(count);
   for (Vec2& u : random) u = {uniform(rng), uniform(rng)};
-  std::vector<Vec3> sampled(count), uniformDirs(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    sampled[i] = env.sample(random[i]).dir;
+  std::vector<Vec3> sampled(count), uniformDirs(count), normals(count);
+  const auto uniformDirection = [&] {
     const double z = 1.0 - 2.0 * uniform(rng), r = std::sqrt(std::max(0.0, 1.0 - z * z)), phi = 2.0 * kPi * uniform(rng);
-    uniformDirs[i] = {r * std::cos(phi), z, r * std::sin(phi)};
+    return Vec3(r * std::cos(phi), z, r * std::sin(phi));
+  };
+  // Every call is toward a surface, as the path tracer's are: normals uniform over the sphere.
+  for (std::size_t i = 0; i < count; ++i) {
+    normals[i] = uniformDirection();
+    sampled[i] = env.sample(normals[i], random[i]).dir;
+    uniformDirs[i] = uniformDirection();
   }
   // Shuffled like the rest so that neither set is walked in map order.
   std::shuffle(sampled.begin(), sampled.end(), rng);
@@ -76,8 +81,8 @@ int main(int argc, char** argv) {
   auto timeSample = [&](const std::vector<Vec2>& us) {
     return nsPerCall(us.size(), [&] {
       double sum = 0.0;
-      for (const Vec2& u : us) {
-        const Environment::Sample s = env.sample(u);
+      for (std::size_t i = 0; i < us.size(); ++i) {
+        const Environment::Sample s = env.sample(normals[i], us[i]);
         sum += s.pdf + s.dir.x + s.radiance.g;
       }
       sink += sum;
@@ -86,16 +91,16 @@ int main(int argc, char** argv) {
   auto timePdf = [&](const std::vector<Vec3>& dirs) {
     return nsPerCall(dirs.size(), [&] {
       double sum = 0.0;
-      for (const Vec3& d : dirs) sum += env.pdf(d);
+      for (std::size_t i = 0; i < dirs.size(); ++i) sum += env.pdf(normals[i], dirs[i]);
       sink += sum;
     });
   };
   auto timeRadianceAndPdf = [&](const std::vector<Vec3>& dirs) {
     return nsPerCall(dirs.size(), [&] {
       double sum = 0.0;
-      for (const Vec3& d : dirs) {
+      for (std::size_t i = 0; i < dirs.size(); ++i) {
         double pdf = 0.0;
-        sum += env.radianceAndPdf(d, pdf).g + pdf;
+        sum += env.radianceAndPdf(normals[i], dirs[i], pdf).g + pdf;
       }
       sink += sum;
     });
@@ -116,7 +121,7 @@ int main(int argc, char** argv) {
       Environment::Sample out[Environment::kMaxBatch];
       double sum = 0.0;
       for (std::size_t first = 0; first + std::size_t(n) <= us.size(); first += std::size_t(n)) {
-        env.sample(want, &us[first], out, n);
+        env.sample(want, &normals[first], &us[first], out, n);
         for (int i = 0; i < n; ++i) sum += out[i].pdf + out[i].dir.x + out[i].radiance.g;
       }
       sink += sum;
@@ -130,7 +135,7 @@ int main(int argc, char** argv) {
       double pdf[Environment::kMaxBatch];
       double sum = 0.0;
       for (std::size_t first = 0; first + std::size_t(n) <= dirs.size(); first += std::size_t(n)) {
-        env.radianceAndPdf(want, &dirs[first], radiance, pdf, n);
+        env.radianceAndPdf(want, &normals[first], &dirs[first], radiance, pdf, n);
         for (int i = 0; i < n; ++i) sum += radiance[i].g + pdf[i];
       }
       sink += sum;

@@ -85,6 +85,41 @@ TEST(CmjSampler, EveryDimensionPairIsMultiJitteredForAnyCount) {
   }
 }
 
+// A vertex's split draws (several light samples per sample) from the pattern of N × splits points: the
+// pixel's N samples' draws of that dimension together fill every thin column and thin row of that pattern,
+// as N × splits samples would; the 1D draws every interval of N × splits. With one split they are the
+// plain draws.
+TEST(CmjSampler, SplitDrawsOfAPixelAreStratifiedTogether) {
+  for (uint32_t n : {16u, 7u, 64u})
+    for (uint32_t splits : {1u, 3u, 4u}) {
+      const CmjPattern g(n, splits);
+      const uint32_t total = n * splits;
+      ASSERT_EQ(g.split().count(), total);
+      CmjPixel pixel(9, 0, 3, 4);
+      std::set<uint32_t> thinColumn, interval;
+      for (uint32_t i = 0; i < n; ++i) {
+        CmjSampler s(g, pixel, i), plain(g, pixel, i);
+        s.skip(2);
+        plain.skip(2);
+        Vec2 out[8];
+        double line[8];
+        s.getSplit2D(out);
+        s.getSplit1D(line);
+        if (splits == 1) {
+          ASSERT_EQ(out[0], plain.get2D());
+          ASSERT_EQ(line[0], plain.get1D());
+        }
+        for (uint32_t k = 0; k < splits; ++k) {
+          ASSERT_TRUE(out[k].x >= 0.0 && out[k].x < 1.0 && out[k].y >= 0.0 && out[k].y < 1.0);
+          thinColumn.insert(uint32_t(out[k].x * total));
+          interval.insert(uint32_t(line[k] * total));
+        }
+      }
+      EXPECT_EQ(thinColumn.size(), total) << "N " << n << " × " << splits << ": two draws share a thin column";
+      EXPECT_EQ(interval.size(), total) << "N " << n << " × " << splits << ": two 1D draws share an interval";
+    }
+}
+
 TEST(CmjSampler, OneDimensionalValuesFillEveryIntervalOnce) {
   for (uint32_t n : kCounts) {
     const CmjPattern g(n);

@@ -100,6 +100,25 @@ void forEachDirection(int nu, int nv, F f) {
 
 const std::vector<std::string> kMaps{"default", "panels", "studio_small_09_1k.hdr", "royal_esplanade_1k.hdr",
                                      "quarry_01_1k.hdr"};
+// The receiving normals the sampling is tested toward: none (the map's light alone), straight up, one on
+// the boundary of two faces of the bins' cube, and a tilted one.
+const std::vector<std::pair<std::string, Vec3>> kNormals{
+    {"none", Vec3(0.0)}, {"up", Vec3(0, 1, 0)}, {"edge", glm::normalize(Vec3(1, 1, 0))},
+    {"tilted", glm::normalize(Vec3(0.3, -0.2, -0.93))}};
+// The cases: "map|normal".
+std::vector<std::string> samplingCases() {
+  std::vector<std::string> cases;
+  for (const std::string& map : kMaps)
+    for (const auto& [name, normal] : kNormals) cases.push_back(map + "|" + name);
+  return cases;
+}
+Vec3 normalOf(const std::string& testCase) {
+  const std::string name = testCase.substr(testCase.find('|') + 1);
+  for (const auto& [n, normal] : kNormals)
+    if (n == name) return normal;
+  return Vec3(0.0);
+}
+std::string mapOf(const std::string& testCase) { return testCase.substr(0, testCase.find('|')); }
 constexpr int kPanelsWidth = 48, kPanelsHeight = 25;
 
 // An environment with the size of its map, which the quadrature below needs to line up with.
@@ -139,8 +158,10 @@ const MapUnderTest* mapFor(const std::string& name) {
 struct Quadrature {
   int binsU = 0, binsV = 0;
   double pdfIntegral = 0.0;
-  Rgb radianceIntegral{0.0};
+  Rgb radianceIntegral{0.0};  // of L cos⁺ θ toward a normal, of L alone for none
   std::vector<double> binProbability;
+  // Directions that bring light (L > 0, above the normal's horizon) where the pdf is 0: must be none.
+  int lightWithoutDensity = 0;
 
   std::size_t binOf(Vec2 uv) const {
     return std::size_t(std::min(int(uv.y * binsV), binsV - 1) * binsU + std::min(int(uv.x * binsU), binsU - 1));
@@ -156,7 +177,7 @@ int divisorNear(int cells, int wanted) {
   return 1;
 }
 
-const Quadrature& quadratureFor(const std::string& name, const MapUnderTest& map) {
+const Quadrature& quadratureFor(const std::string& name, const MapUnderTest& map, const Vec3& normal) {
   static std::map<std::string, Quadrature> cache;
   if (auto it = cache.find(name); it != cache.end()) return it->second;
   Quadrature q;
@@ -164,29 +185,39 @@ const Quadrature& quadratureFor(const std::string& name, const MapUnderTest& map
   q.binsV = divisorNear(2 * (map.height - 1), 48);
   q.binProbability.assign(std::size_t(q.binsU * q.binsV), 0.0);
   forEachDirection(2 * map.width, 2 * (map.height - 1), [&](const Vec3& d, double u, double v, double dOmega) {
-    const double p = map.env->pdf(d) * dOmega;
+    const double p = map.env->pdf(normal, d) * dOmega;
     q.pdfIntegral += p;
     q.binProbability[q.binOf({u, v})] += p;
-    q.radianceIntegral += map.env->radiance(d) * dOmega;
+    const double cosine = normal == Vec3(0.0) ? 1.0 : std::max(0.0, glm::dot(normal, d));
+    const Rgb radiance = map.env->radiance(d);
+    q.radianceIntegral += radiance * cosine * dOmega;
+    if (cosine > 0.0 && luminance(radiance) > 0.0 && !(p > 0.0)) ++q.lightWithoutDensity;
   });
   return cache.emplace(name, std::move(q)).first->second;
 }
 
+// Sampling toward one of kNormals from one of kMaps.
 class EnvironmentSampling : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
-    if (GetParam() != "default" && GetParam() != "panels") GLOSSY_REQUIRE_SHARED("envmaps/" + GetParam());
-    map_ = mapFor(GetParam());
+    const std::string map = mapOf(GetParam());
+    if (map != "default" && map != "panels") GLOSSY_REQUIRE_SHARED("envmaps/" + map);
+    map_ = mapFor(map);
     ASSERT_NE(map_, nullptr);
     env_ = map_->env.get();
+    normal_ = normalOf(GetParam());
   }
-  const Quadrature& quadrature() const { return quadratureFor(GetParam(), *map_); }
+  const Quadrature& quadrature() const { return quadratureFor(GetParam(), *map_, normal_); }
+  Environment::Sample sample(Vec2 u) const { return env_->sample(normal_, u); }
+  double pdf(const Vec3& d) const { return env_->pdf(normal_, d); }
   const MapUnderTest* map_ = nullptr;
   const Environment* env_ = nullptr;
+  Vec3 normal_{0.0};
 };
 
 std::string mapTestName(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = info.param.substr(0, info.param.find('.'));
+  const std::string map = mapOf(info.param);
+  std::string name = map.substr(0, map.find('.')) + "_" + info.param.substr(info.param.find('|') + 1);
   for (char& c : name)
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return name;
@@ -268,7 +299,8 @@ TEST(Environment, RotationTurnsTheMapRightHandedAboutY) {
       const Vec3 d = specDirection(uniform(rng), uniform(rng));
       // What the unrotated map shows at d appears at R·d once rotated.
       expectRgbNear(env.radiance(rotateAboutY(d, degrees)), plain.radiance(d), 1e-9, "rotated lookup");
-      EXPECT_NEAR(env.pdf(rotateAboutY(d, degrees)), plain.pdf(d), 1e-9 * plain.pdf(d) + 1e-12);
+      const Vec3 none(0.0);  // the bins toward a normal do not turn with the map
+      EXPECT_NEAR(env.pdf(none, rotateAboutY(d, degrees)), plain.pdf(none, d), 1e-9 * plain.pdf(none, d) + 1e-12);
     }
   }
 }
@@ -425,26 +457,31 @@ TEST_P(EnvironmentSampling, BatchFormsEqualTheSingleCalls) {
   for (int round = 0; round < 2000; ++round) {
     bool want[n];
     Vec2 u[n];
-    Vec3 dirs[n];
+    Vec3 dirs[n], normals[n];
+    const auto randomDirection = [&] {
+      const double z = 2.0 * uniform(rng) - 1.0, phi = 2.0 * kPi * uniform(rng), r = std::sqrt(1.0 - z * z);
+      return Vec3(r * std::cos(phi), z, r * std::sin(phi));
+    };
     for (int i = 0; i < n; ++i) {
       want[i] = (round + i) % 5 != 0;
       u[i] = {uniform(rng), uniform(rng)};
-      const double z = 2.0 * uniform(rng) - 1.0, phi = 2.0 * kPi * uniform(rng), r = std::sqrt(1.0 - z * z);
-      dirs[i] = i % 2 ? Vec3(r * std::cos(phi), z, r * std::sin(phi)) : env_->sample(u[i]).dir;
+      // Lanes toward this case's normal and lanes toward others, each its own.
+      normals[i] = i % 3 == 0 ? normal_ : randomDirection();
+      dirs[i] = i % 2 ? randomDirection() : env_->sample(normals[i], u[i]).dir;
     }
     Environment::Sample samples[n];
     Rgb radiance[n];
     double pdf[n];
-    env_->sample(want, u, samples, n);
-    env_->radianceAndPdf(want, dirs, radiance, pdf, n);
+    env_->sample(want, normals, u, samples, n);
+    env_->radianceAndPdf(want, normals, dirs, radiance, pdf, n);
     for (int i = 0; i < n; ++i) {
       if (!want[i]) continue;
-      const Environment::Sample one = env_->sample(u[i]);
+      const Environment::Sample one = env_->sample(normals[i], u[i]);
       ASSERT_EQ(samples[i].dir, one.dir);
       ASSERT_EQ(samples[i].radiance, one.radiance);
       ASSERT_EQ(samples[i].pdf, one.pdf);
       double onePdf = 0.0;
-      ASSERT_EQ(radiance[i], env_->radianceAndPdf(dirs[i], onePdf));
+      ASSERT_EQ(radiance[i], env_->radianceAndPdf(normals[i], dirs[i], onePdf));
       ASSERT_EQ(pdf[i], onePdf);
     }
   }
@@ -455,13 +492,13 @@ TEST_P(EnvironmentSampling, PdfIsTheDensitySampleDrawsFrom) {
   std::uniform_real_distribution<double> uniform;
   int invalid = 0;
   for (int k = 0; k < 20000; ++k) {
-    const auto s = env_->sample({uniform(rng), uniform(rng)});
+    const auto s = sample({uniform(rng), uniform(rng)});
     if (s.pdf == 0.0) {
       ++invalid;
       continue;
     }
     ASSERT_NEAR(glm::length(s.dir), 1.0, 1e-12);
-    ASSERT_NEAR(env_->pdf(s.dir), s.pdf, 1e-9 * s.pdf);
+    ASSERT_NEAR(pdf(s.dir), s.pdf, 1e-9 * s.pdf);
     const Rgb expected = env_->radiance(s.dir);
     for (int c = 0; c < 3; ++c) ASSERT_NEAR(s.radiance[c], expected[c], 1e-9 * (expected[c] + 1e-6));
     ASSERT_GT(glm::dot(s.radiance, Rgb(1.0)), 0.0) << "sampled a black direction";
@@ -475,12 +512,13 @@ TEST_P(EnvironmentSampling, PdfIsTheDensitySampleDrawsFrom) {
 TEST_P(EnvironmentSampling, PdfIsNormalisedAndSamplesFollowIt) {
   const Quadrature& q = quadrature();
   ASSERT_NEAR(q.pdfIntegral, 1.0, 3e-8);
+  EXPECT_EQ(q.lightWithoutDensity, 0) << "directions that bring light but cannot be sampled";
   const int n = 200000;
   std::vector<double> observed(q.binProbability.size(), 0.0);
   std::mt19937_64 rng(12345);
   std::uniform_real_distribution<double> uniform;
   for (int k = 0; k < n; ++k) {
-    const auto s = env_->sample({uniform(rng), uniform(rng)});
+    const auto s = sample({uniform(rng), uniform(rng)});
     ASSERT_GT(s.pdf, 0.0);
     observed[q.binOf(specUv(s.dir))] += 1.0;
   }
@@ -511,6 +549,7 @@ TEST_P(EnvironmentSampling, PdfIsNormalisedAndSamplesFollowIt) {
   EXPECT_GT(p, 0.01) << "χ² = " << chi2 << " with " << dof << " degrees of freedom";
 }
 
+// Toward a normal the integral of L cos⁺ θ (the surface's irradiance), without one that of L.
 TEST_P(EnvironmentSampling, EstimatesTheIntegralOfRadianceWithoutBias) {
   const Rgb reference = quadrature().radianceIntegral;
   const int n = 200000;
@@ -518,8 +557,9 @@ TEST_P(EnvironmentSampling, EstimatesTheIntegralOfRadianceWithoutBias) {
   std::mt19937_64 rng(99);
   std::uniform_real_distribution<double> uniform;
   for (int k = 0; k < n; ++k) {
-    const auto s = env_->sample({uniform(rng), uniform(rng)});
-    if (s.pdf > 0.0) sum += s.radiance / s.pdf;
+    const auto s = sample({uniform(rng), uniform(rng)});
+    const double cosine = normal_ == Vec3(0.0) ? 1.0 : std::max(0.0, glm::dot(normal_, s.dir));
+    if (s.pdf > 0.0) sum += s.radiance * (cosine / s.pdf);
   }
   const Rgb estimate = sum / double(n);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(estimate[c], reference[c], 0.01 * reference[c]) << "channel " << c;
@@ -528,7 +568,7 @@ TEST_P(EnvironmentSampling, EstimatesTheIntegralOfRadianceWithoutBias) {
 TEST_P(EnvironmentSampling, NoNanAtTheEndsOfTheSquareOrThePoles) {
   for (double a : {0.0, 0.5, kJustBelowOne, 1.0})
     for (double b : {0.0, 1e-300, 0.5, kJustBelowOne, 1.0}) {
-      const auto s = env_->sample({a, b});
+      const auto s = sample({a, b});
       EXPECT_TRUE(std::isfinite(s.pdf) && s.pdf >= 0.0) << a << ", " << b;
       if (s.pdf > 0.0) {
         EXPECT_TRUE(std::isfinite(s.dir.x) && std::isfinite(s.dir.y) && std::isfinite(s.dir.z));
@@ -537,13 +577,13 @@ TEST_P(EnvironmentSampling, NoNanAtTheEndsOfTheSquareOrThePoles) {
     }
   for (const Vec3& d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(1e-300, 1, 0), Vec3(0, -1, -1e-300),
                         glm::normalize(Vec3(1e-9, 1, 1e-9))}) {
-    const double p = env_->pdf(d);
+    const double p = pdf(d);
     EXPECT_TRUE(std::isfinite(p) && p >= 0.0) << d.x << " " << d.y << " " << d.z;
     EXPECT_TRUE(std::isfinite(glm::dot(env_->radiance(d), Rgb(1.0))));
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Maps, EnvironmentSampling, ::testing::ValuesIn(kMaps), mapTestName);
+INSTANTIATE_TEST_SUITE_P(Maps, EnvironmentSampling, ::testing::ValuesIn(samplingCases()), mapTestName);
 
 // Drawn by the bilinear function of its cell's corners' luminance × sin θ, a light sample's luminance over
 // its pdf is nearly the same wherever it lands in a bright texel's cells (a density constant over each
@@ -551,7 +591,7 @@ INSTANTIATE_TEST_SUITE_P(Maps, EnvironmentSampling, ::testing::ValuesIn(kMaps), 
 // interpolations: where one corner outshines the others, its row's sin θ stands for the whole cell, off by
 // up to Δθ·cot θ (1.2 % at 45° on this 512 × 257 map, a row apart being 0.7°). The density follows
 // luminance × sin θ everywhere, so the ratio is close to the map's whole integral of luminance; the dim
-// sky's cells are left out, as their shares of the 16-bit CDFs (blocked_distribution.h) are coarse.
+// sky's cells are left out, as they keep the floor share every lit patch has (compact_cdf.h).
 TEST(Environment, SamplesOfABrightTexelCarryNearlyEqualWeights) {
   constexpr int kWidth = 512, kHeight = 257;
   const TempDir dir;
@@ -565,7 +605,7 @@ TEST(Environment, SamplesOfABrightTexelCarryNearlyEqualWeights) {
   double lowest = 1e300, highest = 0.0;
   int bright = 0;
   for (int k = 0; k < 100000; ++k) {
-    const auto s = env.sample({uniform(rng), uniform(rng)});
+    const auto s = env.sample(Vec3(0.0), {uniform(rng), uniform(rng)});
     ASSERT_GT(s.pdf, 0.0);
     if (luminance(s.radiance) < 2.0 || std::abs(s.dir.y) > 0.99) continue;  // in the dim sky, or by a pole
     const double ratio = luminance(s.radiance) / s.pdf / integral;
@@ -582,6 +622,28 @@ TEST(Environment, SamplesOfABrightTexelCarryNearlyEqualWeights) {
 // ---------------------------------------------------------------------------------------------------
 // Constant and default environments
 
+// Toward a surface the constant environment is sampled by cos θ about its normal, L cos θ itself: the
+// estimate of the irradiance π L is exact at every sample, and nothing is drawn below the horizon.
+TEST(Environment, ConstantTowardASurfaceIsCosineWeighted) {
+  const Environment env = Environment::constant({0.5, 0.25, 1.0});
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> uniform;
+  for (const Vec3& normal : {Vec3(0, 1, 0), glm::normalize(Vec3(0.3, -0.2, -0.93)), Vec3(0, 0, -1)}) {
+    for (int k = 0; k < 2000; ++k) {
+      const auto s = env.sample(normal, {uniform(rng), uniform(rng)});
+      ASSERT_GT(s.pdf, 0.0);
+      ASSERT_NEAR(glm::length(s.dir), 1.0, 1e-12);
+      const double cosine = glm::dot(normal, s.dir);
+      ASSERT_GT(cosine, 0.0);
+      ASSERT_NEAR(s.pdf, cosine / kPi, 1e-12);
+      ASSERT_DOUBLE_EQ(env.pdf(normal, s.dir), s.pdf);
+      const Rgb irradiance = s.radiance * (cosine / s.pdf);
+      ASSERT_NEAR(irradiance.b, kPi, 1e-9);
+    }
+    EXPECT_EQ(env.pdf(normal, -normal), 0.0);
+  }
+}
+
 TEST(Environment, ConstantIsUniformAndSampledUniformly) {
   const Environment env = Environment::constant({0.5, 0.25, 1.0});
   EXPECT_EQ(env.description(), "constant 0.5,0.25,1");
@@ -589,8 +651,9 @@ TEST(Environment, ConstantIsUniformAndSampledUniformly) {
   std::uniform_real_distribution<double> uniform;
   Vec3 mean{0.0};
   const int n = 20000;
+  const Vec3 none(0.0);
   for (int k = 0; k < n; ++k) {
-    const auto s = env.sample({uniform(rng), uniform(rng)});
+    const auto s = env.sample(none, {uniform(rng), uniform(rng)});
     EXPECT_DOUBLE_EQ(s.pdf, 1.0 / (4.0 * kPi));
     EXPECT_NEAR(glm::length(s.dir), 1.0, 1e-12);
     EXPECT_EQ(s.radiance, Rgb(0.5, 0.25, 1.0));
@@ -599,12 +662,12 @@ TEST(Environment, ConstantIsUniformAndSampledUniformly) {
   EXPECT_LT(glm::length(mean), 0.03);  // no preferred direction
   for (double a : {0.0, kJustBelowOne, 1.0})
     for (double b : {0.0, kJustBelowOne, 1.0}) {
-      const auto s = env.sample({a, b});
+      const auto s = env.sample(none, {a, b});
       EXPECT_NEAR(glm::length(s.dir), 1.0, 1e-12);
     }
   for (const Vec3& d : {Vec3(0, 1, 0), Vec3(0, -1, 0), Vec3(0.6, 0, 0.8)}) {
     EXPECT_EQ(env.radiance(d), Rgb(0.5, 0.25, 1.0));
-    EXPECT_DOUBLE_EQ(env.pdf(d), 1.0 / (4.0 * kPi));
+    EXPECT_DOUBLE_EQ(env.pdf(none, d), 1.0 / (4.0 * kPi));
   }
   EXPECT_NE(inputError([] { Environment::constant({-1, 0, 0}); }), "");
 }

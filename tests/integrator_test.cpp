@@ -125,7 +125,8 @@ void expectUnbiased(const RgbImage& a, const RgbImage& b, const std::function<bo
 
 // Every configuration the wave batches differently: the environment alone (its batch lookups), with
 // emitters (lights chosen by power, per-light batches), a measured table (no batch forms), Russian
-// roulette, and depths 1 (emitters only) and 8. A dimension drawn out of order in either fails this.
+// roulette, depths 1 (emitters only) and 8, and one, three or the default light samples at the first
+// vertex. A dimension drawn out of order in either fails this.
 TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
   const Environment sky = Environment::makeDefault();
   const Brdf cookTorrance = CookTorrance{Rgb(0.1, 0.08, 0.05), Rgb(0.8, 0.6, 0.4), 0.12, 1.6};
@@ -136,6 +137,7 @@ TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
     bool lamp;
     const Environment* environment;
     int maxDepth, rouletteDepth;
+    int lightSamples = RenderSettings{}.lightSamples;
   };
   const Case cases[] = {
       {"environment only", cookTorrance, false, &sky, 8, 100},
@@ -144,6 +146,8 @@ TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
       {"measured table", measured, true, &sky, 4, 100},
       {"Russian roulette", cookTorrance, true, &sky, 8, 2},
       {"max depth 1", cookTorrance, true, &sky, 1, 100},
+      {"one light sample", cookTorrance, true, &sky, 8, 100, 1},
+      {"three light samples", cookTorrance, true, &sky, 8, 100, 3},
   };
   const Camera camera = perspective({0, 1.5, 5}, {0, 0, 0}, 0.7);
   for (const Case& c : cases) {
@@ -151,6 +155,7 @@ TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
     RenderSettings settings = quiet(40, 32, 9);
     settings.maxDepth = c.maxDepth;
     settings.rouletteDepth = c.rouletteDepth;
+    settings.lightSamples = c.lightSamples;
     const RgbImage wave = renderScene(stage.description, stage.brdfs, c.environment, camera, settings);
     settings.reference = true;
     const RgbImage reference = renderScene(stage.description, stage.brdfs, c.environment, camera, settings);
@@ -160,8 +165,11 @@ TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
 
 // A Lambertian floor under a constant environment and a square lamp whose back hides part of the sky:
 // E = Le·Ω⊥(lamp) + L_env·(π − Ω⊥(lamp)), Ω⊥ the lamp's projected solid angle (Lambert's polygon formula).
-// Light samples of either light and BSDF samples that find either are weighted by MIS against each other.
-TEST(Integrator, AnEnvironmentAndAnEmitterTogetherGiveTheirAnalyticIrradiance) {
+// Light samples of either light and BSDF samples that find either are weighted by MIS against each other,
+// counting the first vertex's light samples: one, three (a split pattern that is no grid) and the default.
+class LightSamples : public ::testing::TestWithParam<int> {};
+
+TEST_P(LightSamples, AnEnvironmentAndAnEmitterTogetherGiveTheirAnalyticIrradiance) {
   const Rgb emission(10.0, 5.0, 2.0), sky(0.3, 0.6, 0.9);
   const LampOverFloor stage(emission);
   const Environment environment = Environment::constant(sky);
@@ -169,6 +177,7 @@ TEST(Integrator, AnEnvironmentAndAnEmitterTogetherGiveTheirAnalyticIrradiance) {
   // lamp's (the sky's power, over the scene's bounds, is chosen far more often).
   RenderSettings settings = quiet(LampOverFloor::kSize, LampOverFloor::kSize, 2048, 1);
   settings.maxDepth = 2;
+  settings.lightSamples = GetParam();
   const RgbImage a = renderScene(stage.description, stage.brdfs, &environment, stage.camera, settings);
   settings.seed = 2;
   const RgbImage b = renderScene(stage.description, stage.brdfs, &environment, stage.camera, settings);
@@ -185,8 +194,9 @@ TEST(Integrator, AnEnvironmentAndAnEmitterTogetherGiveTheirAnalyticIrradiance) {
 // drawn within each cell by its bilinear function: E = Le·Ω⊥(lamp) + ∫ L_env cos θ dω over the sky the
 // lamp leaves, that is the map's whole upper hemisphere (a fine midpoint rule in u, v) less what lies
 // behind the lamp (a midpoint rule over the lamp's area, dω cos θ = dA / r⁴ for a lamp at height 1 facing
-// down). One half from the wave, the other from the reference path tracer.
-TEST(Integrator, AMapOfBrightPanelsAndAnOccludingEmitterGiveTheirIrradiance) {
+// down). One half from the wave, the other from the reference path tracer. The map's light samples toward
+// the floor are drawn from the cells its normal's bin weighs by their cosine bound (cosine_bins.h).
+TEST_P(LightSamples, AMapOfBrightPanelsAndAnOccludingEmitterGiveTheirIrradiance) {
   const Rgb emission(2.0, 3.0, 4.0);
   const LampOverFloor stage(emission);
   const TempDir dir;
@@ -218,6 +228,7 @@ TEST(Integrator, AMapOfBrightPanelsAndAnOccludingEmitterGiveTheirIrradiance) {
 
   RenderSettings settings = quiet(LampOverFloor::kSize, LampOverFloor::kSize, 1024, 3);
   settings.maxDepth = 2;
+  settings.lightSamples = GetParam();
   const RgbImage a = renderScene(stage.description, stage.brdfs, &environment, stage.camera, settings);
   settings.seed = 4;
   settings.reference = true;
@@ -233,6 +244,8 @@ TEST(Integrator, AMapOfBrightPanelsAndAnOccludingEmitterGiveTheirIrradiance) {
     return (emission[c] * omega + hemisphere[c] - hidden) * (0.5 / kPi);
   });
 }
+
+INSTANTIATE_TEST_SUITE_P(Integrator, LightSamples, ::testing::Values(1, 3, RenderSettings{}.lightSamples));
 
 TEST(Integrator, TheLightChooserDrawsByPower) {
   SceneDescription description;

@@ -1,6 +1,6 @@
 // Piecewise-constant probability densities on [0,1) and [0,1)², sampled by exact inversion of their CDFs
-// (after pbrt's Distribution1D/2D). Distribution2D samples the measured BRDFs' half vectors; the environment
-// light uses Distribution1D for its rows and BlockedDistribution2D (blocked_distribution.h) within them.
+// (after pbrt's Distribution1D/2D). Distribution2D samples the measured BRDFs' half vectors; the light
+// chooser uses Distribution1D. (The environment's tables are compact CDFs in cells: nested_grid.h.)
 //
 // A tabulated function f of n non-negative bins defines the density p(x) = f(⌊x·n⌋) / ∫f on [0,1).
 // Degenerate tables never produce NaN: when every value is zero the density is uniform (p ≡ 1), so the

@@ -69,6 +69,7 @@ int runRender(RenderOptions o) {
       o.settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(o.settings.seed)}
                                              : ImageAttribute{"glossy:seed", std::to_string(o.settings.seed)},
       {"glossy:maxDepth", o.settings.maxDepth},
+      {"glossy:lightSamples", o.settings.lightSamples},
       {"glossy:brdfSampling", o.brdfSampling},
       {"glossy:scene", scenePath},
       {"glossy:env", environment.description()},
@@ -111,6 +112,9 @@ Command addRenderCommand(CLI::App& parent) {
   app->add_option("--height", o->settings.height, "Image height")->check(CLI::Range(1, 1 << 15))->capture_default_str();
   app->add_option("--max-depth", o->settings.maxDepth, "Path segments at most (1 = emitters only, 3 = one indirect bounce)")
       ->check(CLI::Range(1, 1000))->capture_default_str();
+  app->add_option("--light-samples", o->settings.lightSamples,
+                  "Light samples at a path's first vertex (more: less noise from the lights at less than a path's cost)")
+      ->check(CLI::Range(1, kMaxLightSamples))->capture_default_str();
   app->add_flag("--half", o->half, "Write half-float EXR (default: float)");
   app->add_option("--brdf-sampling", o->brdfSampling,
                   "lobe: each model samples its own lobe (default); cosine: the cosine lobe, to see what lobe sampling is worth")

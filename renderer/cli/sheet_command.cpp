@@ -81,6 +81,7 @@ std::string sheetSettings(const MaterialFile& m, const Stage& stage, const Sheet
          "; spp=" + std::to_string(s.spp) + "; time=" + formatted("%.17g", s.secondsPerPanel) +
          "; targetError=" + formatted("%.17g", s.targetError) + "; size=" + std::to_string(s.width) + "x" +
          std::to_string(s.height) + "; seed=" + std::to_string(s.seed) + "; maxDepth=" + std::to_string(s.maxDepth) +
+         "; lightSamples=" + std::to_string(s.lightSamples) +
          "; half=" + (o.half ? "1" : "0") + "; exposure=" + formatted("%.17g", o.exposure) +
          "; measured=" + (measured ? measured->string() : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
          contentDigest(m.path) + "; version=" + GLOSSY_VERSION;
@@ -104,6 +105,7 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       o.settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(o.settings.seed)}
                                              : ImageAttribute{"glossy:seed", std::to_string(o.settings.seed)},
       {"glossy:maxDepth", o.settings.maxDepth},
+      {"glossy:lightSamples", o.settings.lightSamples},
       {"glossy:scene", stage.description.source.string()},
       {"glossy:env", stage.environment.description()},
       {"glossy:smoothFresnel", smoothFresnel.empty() ? std::string("projected") : smoothFresnel},
@@ -156,6 +158,8 @@ void addRenderOptions(CLI::App* app, SheetOptions& o) {
   app->add_option("--seed", o.settings.seed, "Random seed (the same for every panel)")->capture_default_str();
   app->add_option("--threads", o.settings.threads, "Threads (0 = all cores)")->check(integerIn(0, kMaxThreads));
   app->add_option("--max-depth", o.settings.maxDepth, "Path segments at most")->check(CLI::Range(1, 1000))->capture_default_str();
+  app->add_option("--light-samples", o.settings.lightSamples, "Light samples at a path's first vertex")
+      ->check(CLI::Range(1, kMaxLightSamples))->capture_default_str();
   app->add_option("--exposure", o.exposure, "Exposure of the PNG preview in stops (the EXR stays linear)")
       ->check(finiteIn(-64.0, 64.0))
       ->capture_default_str();

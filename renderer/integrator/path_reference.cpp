@@ -23,7 +23,7 @@ bool walk(const PathContext& context, Ray ray, CmjSampler& sampler, PathState& p
       // Left the scene: the distant lights.
       for (const ChosenLight& distant : lights.distant()) {
         double pdf = 0.0;
-        const Rgb arriving = distant.light->arriving(ray.dir, pdf);
+        const Rgb arriving = distant.light->arriving(ray.dir, path.from, pdf);
         radiance += path.throughput * weightedEmission(path, arriving, distant.probability * pdf);
       }
       return false;
@@ -54,7 +54,7 @@ bool walk(const PathContext& context, Ray ray, CmjSampler& sampler, PathState& p
 Rgb tracePath(const PathContext& context, Ray ray, CmjSampler& sampler) {
   Rgb radiance(0.0);
   PathState path;
-  path.from = ray.origin;
+  path.from.point = ray.origin;
   walk(context, ray, sampler, path, 1, radiance, nullptr);
   return radiance;
 }
@@ -63,7 +63,7 @@ bool traceToObject(const PathContext& context, Ray ray, CmjSampler& sampler, Rgb
   radiance = Rgb(0.0);
   vertex.depth = 0;
   PathState path;
-  path.from = ray.origin;
+  path.from.point = ray.origin;
   return walk(context, ray, sampler, path, 1, radiance, &vertex);
 }
 

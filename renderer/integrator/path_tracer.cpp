@@ -57,7 +57,7 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
   if (!settings.progress) progress.finish();
 
   const CameraRays cameraRays(camera, settings.width, settings.height);
-  const CmjPattern pattern(uint32_t(std::max(1, settings.spp)));
+  const CmjPattern pattern(uint32_t(std::max(1, settings.spp)), uint32_t(std::clamp(settings.lightSamples, 1, kMaxLightSamples)));
   auto renderTiles = [&](const tbb::blocked_range2d<int>& tiles) {
     uint64_t localDropped = 0, localObjectPaths = 0;
     CmjSampler samplers[kWaveSize];

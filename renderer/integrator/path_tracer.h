@@ -15,12 +15,17 @@
 
 namespace glossy {
 
+// The most light samples a vertex takes (RenderSettings::lightSamples).
+constexpr int kMaxLightSamples = 8;
+
 struct RenderSettings {
   int width = 512, height = 512;
   int spp = 64;
   int firstSample = 0;    // samples of each pixel before this pass: seeds a progressive pass's own pattern
   int maxDepth = 8;
   int rouletteDepth = 4;  // Russian roulette from this depth on
+  // Light samples at a camera path's first vertex (path_vertex.h), 1 … kMaxLightSamples; one at the others.
+  int lightSamples = 4;
   uint32_t seed = 0;
   int threads = 0;        // 0 = all cores
   bool progress = true;

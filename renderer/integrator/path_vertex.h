@@ -27,26 +27,46 @@ struct PathContext {
 // stratified across the pixel's samples. A dimension the vertex cannot use (the light choice when one
 // light has all the power, roulette before rouletteDepth) is skipped, not computed: a value depends only on
 // its dimension's index, so skipping gives every other dimension what drawing would.
+//
+// The first vertex of a camera path takes RenderSettings::lightSamples light samples, drawn from the pixel's
+// pattern of spp × lightSamples points (CmjSampler::getSplit2D), and deeper vertices one: what the first
+// vertex's light brings is most of the image, and its extra samples share the camera ray and the BSDF
+// sample, while a whole extra path would trace both again.
 struct VertexDraws {
   static constexpr uint32_t kDimensions = 5;  // what drawVertex takes of the sampler
-  double lightChoice = 0.0;  // which light (LightSet::choose)
-  Vec2 light{0.0};           // where on it (Light::sample)
+  int lightSamples = 1;
+  double lightChoice[kMaxLightSamples] = {};  // which light (LightSet::choose), per light sample
+  Vec2 light[kMaxLightSamples] = {};          // where on it (Light::sample)
   double lobe = 0.0;         // which of the BRDF's lobes
   Vec2 bsdf{0.0};            // the direction in that lobe
   double roulette = 0.0;     // whether the path survives Russian roulette
 };
 
-// Which of the skippable draws a vertex at this depth uses.
+// Which of the skippable draws a vertex at this depth uses, and its light samples.
 struct DrawsUsed {
   bool lightChoice, roulette;
+  int lightSamples;
   DrawsUsed(const PathContext& context, int depth)
-      : lightChoice(context.lights.hasChoice()), roulette(depth >= context.settings.rouletteDepth) {}
+      : lightChoice(context.lights.hasChoice()), roulette(depth >= context.settings.rouletteDepth),
+        lightSamples(depth == 1 ? context.settings.lightSamples : 1) {}
 };
+
+// The light draws of a vertex: split draws (as many as the sampler's pattern splits, which is
+// RenderSettings::lightSamples) at the first vertex, one elsewhere.
+inline void drawLights(CmjSampler& sampler, DrawsUsed used, VertexDraws& d) {
+  d.lightSamples = used.lightSamples > 1 ? int(sampler.splits()) : 1;
+  if (d.lightSamples > 1) {
+    if (used.lightChoice) sampler.getSplit1D(d.lightChoice); else sampler.skip(1);
+    sampler.getSplit2D(d.light);
+  } else {
+    if (used.lightChoice) d.lightChoice[0] = sampler.get1D(); else sampler.skip(1);
+    d.light[0] = sampler.get2D();
+  }
+}
 
 inline VertexDraws drawVertex(CmjSampler& sampler, DrawsUsed used) {
   VertexDraws d;
-  if (used.lightChoice) d.lightChoice = sampler.get1D(); else sampler.skip(1);
-  d.light = sampler.get2D();
+  drawLights(sampler, used, d);
   d.lobe = sampler.get1D();
   d.bsdf = sampler.get2D();
   if (used.roulette) d.roulette = sampler.get1D(); else sampler.skip(1);
@@ -64,14 +84,26 @@ inline void drawVertices(CmjSampler* samplers, const int* lanes, int n, DrawsUse
   const auto skip = [&] {
     for (int k = 0; k < n; ++k) samplers[lanes[k]].skip(1);
   };
-  if (used.lightChoice) CmjSampler::get1D(samplers, lanes, n, choice); else skip();
-  CmjSampler::get2D(samplers, lanes, n, light);
+  if (used.lightSamples > 1) {
+    for (int k = 0; k < n; ++k) drawLights(samplers[lanes[k]], used, out[lanes[k]]);
+  } else {
+    if (used.lightChoice) CmjSampler::get1D(samplers, lanes, n, choice); else skip();
+    CmjSampler::get2D(samplers, lanes, n, light);
+  }
   CmjSampler::get1D(samplers, lanes, n, lobe);
   CmjSampler::get2D(samplers, lanes, n, bsdf);
   if (used.roulette) CmjSampler::get1D(samplers, lanes, n, roulette); else skip();
   for (int k = 0; k < n; ++k) {
     const int i = lanes[k];
-    out[i] = {used.lightChoice ? choice[i] : 0.0, light[i], lobe[i], bsdf[i], used.roulette ? roulette[i] : 0.0};
+    VertexDraws& d = out[i];
+    if (used.lightSamples == 1) {
+      d.lightSamples = 1;
+      d.lightChoice[0] = used.lightChoice ? choice[i] : 0.0;
+      d.light[0] = light[i];
+    }
+    d.lobe = lobe[i];
+    d.bsdf = bsdf[i];
+    d.roulette = used.roulette ? roulette[i] : 0.0;
   }
 }
 
@@ -86,14 +118,16 @@ inline double maxComponent(const Rgb& c) { return std::max({c.r, c.g, c.b}); }
 struct PathState {
   Rgb throughput{1.0};
   double bsdfPdf = 0.0;  // solid-angle pdf of the BSDF sample that made the ray; 0 for the camera ray
-  Vec3 from{0.0};        // the vertex the ray left (the light densities of MIS are seen from it)
+  int lightSamples = 1;  // that the vertex the ray left took (MIS counts them)
+  Receiver from;         // the vertex the ray left (the light densities of MIS are seen from it)
 };
 
 // Emission found by the path's ray (from a light it hit or a distant light it escaped to), weighted
-// against the light sample that could have found it: lightPdf is that density, its light's choice
-// included. A camera ray's is unweighted.
+// against the light samples that could have found it: lightPdf is one's density, its light's choice
+// included, and the vertex took path.lightSamples of them (the power heuristic with sample counts). A
+// camera ray's is unweighted.
 inline Rgb weightedEmission(const PathState& path, const Rgb& emitted, double lightPdf) {
-  return path.bsdfPdf > 0.0 ? emitted * powerHeuristic(path.bsdfPdf, lightPdf) : emitted;
+  return path.bsdfPdf > 0.0 ? emitted * powerHeuristic(path.bsdfPdf, path.lightSamples * lightPdf) : emitted;
 }
 
 // Where a path meets a reflecting surface.
@@ -125,6 +159,9 @@ inline bool shade(const RenderScene& scene, const Ray& ray, const Hit& hit, Shad
   return sp.woLocal.z > 0.0;
 }
 
+// The shading point as its lights see it.
+inline Receiver receiver(const ShadingPoint& sp) { return {sp.position, sp.frame.n}; }
+
 // A light sample as the shading point sees it: the shadow ray to trace and what the light brings along it,
 // before the BRDF's value there.
 struct LightPath {
@@ -154,25 +191,31 @@ inline bool toLight(const ShadingPoint& sp, const ChosenLight& chosen, const Lig
   return true;
 }
 
-// The light sample of a vertex with its shadow ray's verdict: none of it depends on the vertex's BRDF, so
-// the panels of a sheet share it (ObjectVertex).
+// The light samples of a vertex with their shadow rays' verdicts: none of it depends on the vertex's BRDF,
+// so the panels of a sheet share it (ObjectVertex).
 struct VertexLight {
-  LightPath path;
-  bool visible = false;  // a sample arrived from above the surface and nothing blocks it
+  int count = 0;
+  LightPath path[kMaxLightSamples];
+  bool visible[kMaxLightSamples] = {};  // the sample arrived from above the surface and nothing blocks it
 };
 inline VertexLight sampleLight(const PathContext& context, const ShadingPoint& sp, const VertexDraws& u) {
   VertexLight v;
-  if (const ChosenLight chosen = context.lights.choose(u.lightChoice))
-    v.visible = toLight(sp, chosen, chosen.light->sample(sp.position, u.light), v.path) && !context.scene.bvh->occluded(v.path.shadow);
+  v.count = u.lightSamples;
+  for (int k = 0; k < v.count; ++k)
+    if (const ChosenLight chosen = context.lights.choose(u.lightChoice[k]))
+      v.visible[k] = toLight(sp, chosen, chosen.light->sample(receiver(sp), u.light[k]), v.path[k]) &&
+                     !context.scene.bvh->occluded(v.path[k].shadow);
   return v;
 }
 
-// What the light sample brings if nothing blocks it, MIS-weighted against the BRDF's own sampling, before
-// the path's throughput. False when that is nothing.
-inline bool lightContribution(const LightPath& light, const BrdfValue& value, Rgb& contribution) {
+// What one of a vertex's `count` light samples brings if nothing blocks it, MIS-weighted against the
+// BRDF's own sampling (the power heuristic with sample counts), before the path's throughput. False when
+// that is nothing.
+inline bool lightContribution(const LightPath& light, int count, const BrdfValue& value, Rgb& contribution) {
   if (maxComponent(value.f) <= 0.0) return false;
-  const double w = powerHeuristic(light.pdf, value.pdf);
-  contribution = value.f * light.radiance * (light.wiLocal.z * w / light.pdf);
+  const double pdf = count * light.pdf;
+  const double w = powerHeuristic(pdf, value.pdf);
+  contribution = value.f * light.radiance * (light.wiLocal.z * w / pdf);
   return true;
 }
 
@@ -190,13 +233,15 @@ inline BrdfSample sampleBsdf(const RenderSettings& settings, const ShadingPoint&
 
 // The BSDF sample s continues the path: the next ray, the throughput and pdf it carries. False ends it.
 inline bool continuePath(int depth, const RenderSettings& settings, const ShadingPoint& sp, const BrdfSample& s,
-                         double uRoulette, PathState& path, Ray& ray) {
+                         const VertexDraws& u, PathState& path, Ray& ray) {
+  const double uRoulette = u.roulette;
   if (!s.valid()) return false;
   const Vec3 wi = sp.frame.toWorld(s.L);
   if (glm::dot(wi, sp.ng) <= 0.0) return false;  // below the geometric surface: no leaking through it
   path.throughput *= s.weight;
   path.bsdfPdf = s.pdf;
-  path.from = sp.position;
+  path.lightSamples = u.lightSamples;
+  path.from = receiver(sp);
   if (depth >= settings.rouletteDepth) {
     const double survive = std::min(0.95, maxComponent(path.throughput));
     if (uRoulette >= survive) return false;
@@ -210,10 +255,13 @@ inline bool continuePath(int depth, const RenderSettings& settings, const Shadin
 // samples the path's next direction. False ends the path.
 inline bool reflect(const PathContext& context, int depth, const ShadingPoint& sp, const VertexDraws& u,
                     const VertexLight& light, PathState& path, Rgb& radiance, Ray& ray) {
-  Rgb contribution;
-  if (light.visible && lightContribution(light.path, valueToward(context.settings, sp, light.path.wiLocal), contribution))
-    radiance += path.throughput * contribution;
-  return continuePath(depth, context.settings, sp, sampleBsdf(context.settings, sp, u), u.roulette, path, ray);
+  for (int k = 0; k < light.count; ++k) {
+    Rgb contribution;
+    if (light.visible[k] &&
+        lightContribution(light.path[k], light.count, valueToward(context.settings, sp, light.path[k].wiLocal), contribution))
+      radiance += path.throughput * contribution;
+  }
+  return continuePath(depth, context.settings, sp, sampleBsdf(context.settings, sp, u), u, path, ray);
 }
 
 // A path at its first vertex on a sheet's object (RenderScene::objectMeshes), before the vertex's BRDF is
@@ -263,7 +311,7 @@ class WaveTracer {
   void sampleLights(int depth, const Lanes& lanes, SharedDraws* shared);
   void reflectAll(int depth, const Lanes& lanes, Ray* rays, bool* alive, Rgb* radiance);
   void sampleBrdf(const Brdf& brdf, const int* lanes, int n);
-  void evalBrdf(const Brdf& brdf, const int* lanes, int n);
+  void evalBrdf(const Brdf& brdf, int j, const int* lanes, int n);
 
   const PathContext& context_;
   SharedDraws* shared_;
@@ -276,7 +324,7 @@ class WaveTracer {
   ShadingPoint point_[kWaveSize];
   VertexDraws draws_[kWaveSize];
   ChosenLight chosen_[kWaveSize];
-  Vec3 position_[kWaveSize];
+  Receiver from_[kWaveSize];  // the escaped rays' vertices; the shading points as their lights see them
   Vec2 uLight_[kWaveSize];
   LightSample lightSample_[kWaveSize];
   BrdfSample bsdfSample_[kWaveSize];

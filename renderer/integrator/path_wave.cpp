@@ -42,7 +42,7 @@ void WaveTracer::trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* 
     alive[i] = start[i];
     radiance[i] = Rgb(0.0);
     path_[i] = PathState{};
-    path_[i].from = rays[i].origin;
+    path_[i].from = Receiver{rays[i].origin, Vec3(0.0)};
     if (stops) stops[i].depth = 0;
   }
   walk(1, rays, samplers, alive, radiance, stops);
@@ -84,6 +84,7 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
       if (!found_[i]) {
         escaped.add(i);
         direction_[i] = rays[i].dir;
+        from_[i] = path_[i].from;
       } else if (const ChosenLight light = lights.at(hit_[i])) {
         double pdf = 0.0;
         const Rgb emitted = light.light->emitted(hit_[i], path_[i].from, pdf);
@@ -95,7 +96,7 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
       }
     }
     for (const ChosenLight& distant : lights.distant()) {
-      distant.light->arriving(direction_, escaped.lane, escaped.n, arriving_, pdf_);
+      distant.light->arriving(direction_, from_, escaped.lane, escaped.n, arriving_, pdf_);
       for (int k = 0; k < escaped.n; ++k) {
         const int i = escaped.lane[k];
         radiance[i] += path_[i].throughput * weightedEmission(path_[i], arriving_[i], distant.probability * pdf_[i]);
@@ -116,43 +117,54 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
   }
 }
 
-// light_ of the lanes: sampleLight, as batches per light and shadow-ray packets; distant lights' samples
-// from `shared` where it keeps them.
+// light_ of the lanes: sampleLight, the j-th light samples of all lanes at a time, as batches per light and
+// shadow-ray packets; distant lights' first samples from `shared` where it keeps them (deeper vertices,
+// the only ones shared, take one).
 void WaveTracer::sampleLights(int depth, const Lanes& lanes, SharedDraws* shared) {
   const LightSet& lights = context_.lights;
-  Lanes sampled, drawn;
+  int most = 0;
   for (int k = 0; k < lanes.n; ++k) {
     const int i = lanes.lane[k];
-    light_[i].visible = false;
-    chosen_[i] = lights.choose(draws_[i].lightChoice);
-    if (!chosen_[i]) continue;
-    sampled.add(i);
-    position_[i] = point_[i].position;
-    uLight_[i] = draws_[i].light;
-    const Light* light = chosen_[i].light;
-    const LightSample* kept = shared && light->distant() ? shared->find(depth, i, light, uLight_[i]) : nullptr;
-    if (kept)
-      lightSample_[i] = *kept;
-    else
-      drawn.add(i);
+    light_[i].count = draws_[i].lightSamples;
+    most = std::max(most, light_[i].count);
+    from_[i] = receiver(point_[i]);
   }
-  forEachGroup(drawn, [&](int i) { return chosen_[i].light; },
-               [&](const Light* light, const int* group, int n) { light->sample(position_, uLight_, group, n, lightSample_); });
-  if (shared)
-    for (int k = 0; k < drawn.n; ++k) {
-      const int i = drawn.lane[k];
-      if (chosen_[i].light->distant()) shared->keep(depth, i, chosen_[i].light, uLight_[i], lightSample_[i]);
+  for (int j = 0; j < most; ++j) {
+    Lanes sampled, drawn;
+    for (int k = 0; k < lanes.n; ++k) {
+      const int i = lanes.lane[k];
+      if (j >= light_[i].count) continue;
+      light_[i].visible[j] = false;
+      chosen_[i] = lights.choose(draws_[i].lightChoice[j]);
+      if (!chosen_[i]) continue;
+      sampled.add(i);
+      uLight_[i] = draws_[i].light[j];
+      const Light* light = chosen_[i].light;
+      const LightSample* kept =
+          shared && light->distant() ? shared->find(depth, i, light, from_[i].normal, uLight_[i]) : nullptr;
+      if (kept)
+        lightSample_[i] = *kept;
+      else
+        drawn.add(i);
     }
-  std::fill(shadowed_, shadowed_ + kWaveSize, false);
-  for (int k = 0; k < sampled.n; ++k) {
-    const int i = sampled.lane[k];
-    shadowed_[i] = toLight(point_[i], chosen_[i], lightSample_[i], light_[i].path);
-    shadow_[i] = light_[i].path.shadow;
-  }
-  for (int p = 0; p < kWaveSize; p += kPacketSize) context_.scene.bvh->occluded(shadowed_ + p, shadow_ + p, occluded_ + p);
-  for (int k = 0; k < sampled.n; ++k) {
-    const int i = sampled.lane[k];
-    light_[i].visible = shadowed_[i] && !occluded_[i];
+    forEachGroup(drawn, [&](int i) { return chosen_[i].light; },
+                 [&](const Light* light, const int* group, int n) { light->sample(from_, uLight_, group, n, lightSample_); });
+    if (shared)
+      for (int k = 0; k < drawn.n; ++k) {
+        const int i = drawn.lane[k];
+        if (chosen_[i].light->distant()) shared->keep(depth, i, chosen_[i].light, from_[i].normal, uLight_[i], lightSample_[i]);
+      }
+    std::fill(shadowed_, shadowed_ + kWaveSize, false);
+    for (int k = 0; k < sampled.n; ++k) {
+      const int i = sampled.lane[k];
+      shadowed_[i] = toLight(point_[i], chosen_[i], lightSample_[i], light_[i].path[j]);
+      shadow_[i] = light_[i].path[j].shadow;
+    }
+    for (int p = 0; p < kWaveSize; p += kPacketSize) context_.scene.bvh->occluded(shadowed_ + p, shadow_ + p, occluded_ + p);
+    for (int k = 0; k < sampled.n; ++k) {
+      const int i = sampled.lane[k];
+      light_[i].visible[j] = shadowed_[i] && !occluded_[i];
+    }
   }
 }
 
@@ -161,19 +173,27 @@ void WaveTracer::sampleLights(int depth, const Lanes& lanes, SharedDraws* shared
 void WaveTracer::reflectAll(int depth, const Lanes& lanes, Ray* rays, bool* alive, Rgb* radiance) {
   forEachGroup(lanes, [&](int i) { return point_[i].brdf; },
                [&](const Brdf* brdf, const int* group, int n) { sampleBrdf(*brdf, group, n); });
-  Lanes lit;
-  for (int k = 0; k < lanes.n; ++k)
-    if (light_[lanes.lane[k]].visible) lit.add(lanes.lane[k]);
-  forEachGroup(lit, [&](int i) { return point_[i].brdf; },
-               [&](const Brdf* brdf, const int* group, int n) { evalBrdf(*brdf, group, n); });
-  for (int k = 0; k < lit.n; ++k) {
-    const int i = lit.lane[k];
-    Rgb contribution;
-    if (lightContribution(light_[i].path, value_[i], contribution)) radiance[i] += path_[i].throughput * contribution;
+  int most = 0;
+  for (int k = 0; k < lanes.n; ++k) most = std::max(most, light_[lanes.lane[k]].count);
+  // The light samples in the reference's order: the j-th of every lane, j = 0, 1, ….
+  for (int j = 0; j < most; ++j) {
+    Lanes lit;
+    for (int k = 0; k < lanes.n; ++k) {
+      const int i = lanes.lane[k];
+      if (j < light_[i].count && light_[i].visible[j]) lit.add(i);
+    }
+    forEachGroup(lit, [&](int i) { return point_[i].brdf; },
+                 [&](const Brdf* brdf, const int* group, int n) { evalBrdf(*brdf, j, group, n); });
+    for (int k = 0; k < lit.n; ++k) {
+      const int i = lit.lane[k];
+      Rgb contribution;
+      if (lightContribution(light_[i].path[j], light_[i].count, value_[i], contribution))
+        radiance[i] += path_[i].throughput * contribution;
+    }
   }
   for (int k = 0; k < lanes.n; ++k) {
     const int i = lanes.lane[k];
-    alive[i] = continuePath(depth, context_.settings, point_[i], bsdfSample_[i], draws_[i].roulette, path_[i], rays[i]);
+    alive[i] = continuePath(depth, context_.settings, point_[i], bsdfSample_[i], draws_[i], path_[i], rays[i]);
   }
 }
 
@@ -197,16 +217,17 @@ void WaveTracer::sampleBrdf(const Brdf& brdf, const int* lanes, int n) {
   for (int k = 0; k < n; ++k) bsdfSample_[lanes[k]] = samples[k];
 }
 
-// value_ of the lanes: valueToward their light samples, as one batch.
-void WaveTracer::evalBrdf(const Brdf& brdf, const int* lanes, int n) {
+// value_ of the lanes: valueToward their j-th light samples, as one batch.
+void WaveTracer::evalBrdf(const Brdf& brdf, int j, const int* lanes, int n) {
   if (context_.settings.cosineBrdfSampling) {
-    for (int k = 0; k < n; ++k) value_[lanes[k]] = valueToward(context_.settings, point_[lanes[k]], light_[lanes[k]].path.wiLocal);
+    for (int k = 0; k < n; ++k)
+      value_[lanes[k]] = valueToward(context_.settings, point_[lanes[k]], light_[lanes[k]].path[j].wiLocal);
     return;
   }
   Vec3 wi[kWaveSize] = {}, wo[kWaveSize] = {};  // zeroed for GCC, as in sampleBrdf
   BrdfValue values[kWaveSize];
   for (int k = 0; k < n; ++k) {
-    wi[k] = light_[lanes[k]].path.wiLocal;
+    wi[k] = light_[lanes[k]].path[j].wiLocal;
     wo[k] = point_[lanes[k]].woLocal;
   }
   evalPdfBatch(brdf, wi, wo, values, n);

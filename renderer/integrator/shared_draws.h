@@ -1,12 +1,13 @@
 // What a sheet's panels would each compute alike after the object. Every panel continues a path from its
 // object vertex with the same sampler, so at each later depth its path reaches, a panel draws the values
-// the others draw there (VertexDraws), and a distant light, whose samples do not depend on the point,
-// makes the same sample from them. The panels' wave tracers on a thread share one SharedDraws: the first
+// the others draw there (VertexDraws), and a distant light, whose samples depend on the surface's normal
+// but not on the point, makes the same sample from them where the panels' paths meet surfaces of the same
+// normal (a floor, a wall). The panels' wave tracers on a thread share one SharedDraws: the first
 // panel to reach a (path, depth) computes these and keeps them, and the others copy them. So the draws and
 // the environment's samples are paid once per path, not once per panel (docs/sheets.md, "Cost").
 //
 // An entry answers only a sampler in the state it was drawn from (a sampler's values are a function of
-// CmjSampler::Key) and a light and draw its sample was made from, so each panel gets exactly what it
+// CmjSampler::Key) and a light, normal and draw its sample was made from, so each panel gets exactly what it
 // would have computed itself, bit for bit (tests/sheet_coherence_test.cpp).
 #pragma once
 
@@ -41,14 +42,15 @@ class SharedDraws {
     for (int k = 0; k < fresh.n; ++k) at(depth, fresh.lane[k]).draws = out[fresh.lane[k]];
   }
 
-  // The sample the distant `light` made from draw u for the lane at depth, if one is kept.
-  const LightSample* find(int depth, int lane, const Light* light, Vec2 u) {
+  // The sample the distant `light` made toward `normal` from draw u for the lane at depth, if one is kept.
+  const LightSample* find(int depth, int lane, const Light* light, const Vec3& normal, Vec2 u) {
     const Entry& e = at(depth, lane);
-    return e.light == light && e.u == u ? &e.sample : nullptr;
+    return e.light == light && e.normal == normal && e.u == u ? &e.sample : nullptr;
   }
-  void keep(int depth, int lane, const Light* light, Vec2 u, const LightSample& sample) {
+  void keep(int depth, int lane, const Light* light, const Vec3& normal, Vec2 u, const LightSample& sample) {
     Entry& e = at(depth, lane);
     e.light = light;
+    e.normal = normal;
     e.u = u;
     e.sample = sample;
   }
@@ -58,6 +60,7 @@ class SharedDraws {
     CmjSampler::Key sampler;  // the state draws were drawn from (a default key matches no sampler)
     VertexDraws draws;
     const Light* light = nullptr;  // of sample; null: none kept
+    Vec3 normal{0.0};
     Vec2 u{0.0};
     LightSample sample;
   };

@@ -1,18 +1,25 @@
 // The environment light: loading lat-long maps, the constant and default skies, and importance sampling
-// of the bilinearly interpolated map: a cell (bilinear patch) by its share of the light, then a point in it
-// by the bilinear function of its corners (bilinear_patch.h), so that a sample's L/pdf barely varies.
+// of the bilinearly interpolated map toward a receiving surface: a cell of the map by its light and the
+// surface's horizon (cosine_bins.h), a patch in it by its share of the cell's light (nested_grid.h), then a
+// point in the patch by the bilinear function of its corners (bilinear_patch.h), so that a sample's L/pdf
+// barely varies.
 #include "renderer/lights/environment.h"
 
+#include "materials/core/frame.h"
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "materials/sampling/bilinear_patch.h"
-#include "materials/sampling/blocked_distribution.h"
+#include "materials/sampling/nested_grid.h"
+#include "materials/sampling/unit_interval.h"
+#include "renderer/lights/cosine_bins.h"
 #include "renderer/lights/default_sky.h"
 #include "renderer/lights/exr_preflight.h"
 #include "renderer/lights/latlong.h"
 #include "renderer/util/memory.h"
 
 #include <OpenImageIO/imageio.h>
+
+#include <glm/geometric.hpp>
 
 #include <limits>
 #include <sstream>
@@ -105,14 +112,6 @@ LatLongImage readLatLong(const std::filesystem::path& path) {
   return image;
 }
 
-// The sample's lookup position: the sampled point's cell is the patch of the lookup, where
-// x = u_map·W − ½ = s·W and y = v·(H − 1).
-LatLongPosition cellPosition(const BlockedDistribution2D::Sample& cell, int width, int height) {
-  const int column = int(cell.column), row = int(cell.row);
-  return {column, column + 1 == width ? 0 : column + 1, row, cell.point.x * width - double(column),
-          cell.point.y * (height - 1) - double(row)};
-}
-
 }  // namespace
 
 struct Environment::Impl {
@@ -125,17 +124,18 @@ struct Environment::Impl {
   // Rotation about +Y by α shifts every feature's u by −α/(2π) (φ ↦ φ − α for a right-handed turn):
   // the map is looked up at u_world + uOffset.
   double uOffset = 0.0;
-  // The sampling density over (s, v), s = u_map − ½/W, is proportional to the bilinear interpolation of
-  // the texels' luminance × sin θ of their row: nearly the light the lookup finds there (whose luminance
-  // is the bilinear one, times the lat-long Jacobian's sin θ), and a function the patch warp can invert.
-  // rowSin[j] is row j's sin θ, except that the poles' rows, where it is 0, take that of a quarter row
-  // in: light at a pole keeps a positive density.
+  // The sampling density over (s, v), s = u_map − ½/W, is proportional, within each cell of the map, to
+  // the bilinear interpolation of the texels' luminance × sin θ of their row: nearly the light the lookup
+  // finds there (whose luminance is the bilinear one, times the lat-long Jacobian's sin θ), and a function
+  // the patch warp can invert. rowSin[j] is row j's sin θ, except that the poles' rows, where it is 0, take
+  // that of a quarter row in: light at a pole keeps a positive density.
   std::vector<double> rowSin;
-  // The cells: the bilinear patches between adjacent texel centres, W × (H − 1) of them, each weighted by
-  // the mean of its corners' weights (the integral of the patch's function). Cell (i, j) is patch (i, j)
-  // of the map. Blocked (blocked_distribution.h): a tenth of the memory of full CDFs, and a sample reads
-  // one cache line of it per level, the top ones cached.
-  BlockedDistribution2D distribution;
+  // The patches: the bilinear patches between adjacent texel centres, W × (H − 1) of them, each weighted
+  // by the mean of its corners' weights (the integral of the patch's function); patch (i, j) is the map's
+  // cell (i, j). Grouped into up to 64 × 32 cells, of which the bins choose one for the receiving normal.
+  static constexpr std::size_t kCellColumns = 64, kCellRows = 32;
+  NestedGrid patches;
+  CosineBins bins;
 
   // Directions to cells and back (the rotation included).
   LatLongGrid grid;
@@ -152,17 +152,19 @@ struct Environment::Impl {
     return {l[0] * top, l[1] * top, l[2] * bottom, l[3] * bottom};
   }
 
-  // The density on the (s, v) square at the lookup position `at`: its cell's, as the map keeps it (in
-  // float, beside the cell's texel), times the patch warp's density at the position's weights.
-  double densityAt(const LatLongPosition& at, const BilinearPatch& patch) const {
-    return map.cellValue(at) * patch.density({at.fx, at.fy});
+  // The density on the (s, v) square at the lookup position `at`, for normal bin `bin`: the patch's
+  // within its cell, as the map keeps it (in float, beside the patch's texel), times the bin's probability
+  // of the cell and the patch warp's density at the position's weights.
+  double densityAt(int bin, const LatLongPosition& at, const BilinearPatch& patch) const {
+    const double cell = bins.probability(bin, patches.cellOfColumn(std::size_t(at.c0)), patches.cellOfRow(std::size_t(at.r0)));
+    return map.cellValue(at) * cell * patch.density({at.fx, at.fy});
   }
 
-  // The solid-angle density of sample() at dir, whose lookup position is at.
-  double pdfAt(const Vec3& dir, const LatLongPosition& at) const {
+  // The solid-angle density of sample(normal, ·) at dir, whose lookup position is at.
+  double pdfAt(int bin, const Vec3& dir, const LatLongPosition& at) const {
     const double sinTheta = std::sqrt(dir.x * dir.x + dir.z * dir.z);
     if (!(sinTheta > 0.0)) return 0.0;
-    return solidAngleDensity(densityAt(at, patchAt(at)), sinTheta);
+    return solidAngleDensity(densityAt(bin, at, patchAt(at)), sinTheta);
   }
 
   // The sample of the map in direction dir (with its sin θ), at the lookup position `at` the warp chose,
@@ -173,31 +175,33 @@ struct Environment::Impl {
     return {dir, map.interpolate(at), solidAngleDensity(density, sinTheta)};
   }
 
-  // The map takes the image's texels; the distribution is built a row of cells at a time from them, and
+  // The map takes the image's texels; the patches' distribution is built a row at a time from them, and
   // its densities go into the map's cell values: nothing the size of the map is made besides the texels
-  // (16 bytes each) and the distribution's blocks (about 2).
+  // (16 bytes each) and the patches' CDFs (2).
   void buildDistribution(LatLongImage image) {
-    const int width = image.width, cells = image.height - 1;
+    const int width = image.width, rows = image.height - 1;
     map = LatLongMap(std::move(image));
 
-    rowSin.resize(std::size_t(cells) + 1);
-    for (int row = 0; row <= cells; ++row)
-      rowSin[std::size_t(row)] = std::sin(kPi * std::clamp(double(row), 0.25, cells - 0.25) / cells);
+    rowSin.resize(std::size_t(rows) + 1);
+    for (int row = 0; row <= rows; ++row)
+      rowSin[std::size_t(row)] = std::sin(kPi * std::clamp(double(row), 0.25, rows - 0.25) / rows);
 
-    // A row of texels' luminance; a cell row reads two.
+    // A row of texels' luminance; a row of patches reads two.
     std::vector<double> top(static_cast<std::size_t>(width)), bottom(static_cast<std::size_t>(width));
     const auto luminances = [&](int row, std::vector<double>& out) {
       for (int column = 0; column < width; ++column) out[std::size_t(column)] = luminance(map.texel(column, row));
     };
-    double radiance = 0.0;  // Σ over the cells of mean luminance × mean sin θ
-    distribution = BlockedDistribution2D(std::size_t(width), std::size_t(cells), [&](std::size_t y, std::span<double> weights) {
-      const int cell = int(y);
-      luminances(cell, top);
-      luminances(cell + 1, bottom);
-      // Mean of sin θ over the cell's latitude band: the Jacobian of (u, v) ↦ direction, up to 2π².
-      const double v0 = double(cell) / cells, v1 = double(cell + 1) / cells;
+    double radiance = 0.0;  // Σ over the patches of mean luminance × mean sin θ
+    const std::size_t cellColumns = std::min<std::size_t>(kCellColumns, std::size_t(width));
+    const std::size_t cellRows = std::min<std::size_t>(kCellRows, std::size_t(rows));
+    patches = NestedGrid(std::size_t(width), std::size_t(rows), cellColumns, cellRows, [&](std::size_t y, std::span<double> weights) {
+      const int row = int(y);
+      luminances(row, top);
+      luminances(row + 1, bottom);
+      // Mean of sin θ over the row's latitude band: the Jacobian of (u, v) ↦ direction, up to 2π².
+      const double v0 = double(row) / rows, v1 = double(row + 1) / rows;
       const double meanSinTheta = (std::cos(kPi * v0) - std::cos(kPi * v1)) / (kPi * (v1 - v0));
-      const double sinTop = rowSin[std::size_t(cell)], sinBottom = rowSin[std::size_t(cell) + 1];
+      const double sinTop = rowSin[std::size_t(row)], sinBottom = rowSin[std::size_t(row) + 1];
       for (int column = 0; column < width; ++column) {
         const std::size_t c = std::size_t(column), next = column + 1 == width ? 0 : c + 1;
         // The patch's integral is its corners' mean; it is zero only where the whole patch is black, so
@@ -207,16 +211,50 @@ struct Environment::Impl {
         radiance += 0.25 * (top[c] + top[next] + bottom[c] + bottom[next]) * meanSinTheta;
       }
     });
-    // Σ mean luminance × mean sin θ × (the cells' area, 2π²/(W·cells)), over 4π.
-    meanLuminance = radiance * kPi / (2.0 * width * cells);
-    for (int cell = 0; cell < cells; ++cell)
+    // Σ mean luminance × mean sin θ × (the patches' area, 2π²/(W·rows)), over 4π.
+    meanLuminance = radiance * kPi / (2.0 * width * rows);
+    const double patchesPerSquare = double(width) * double(rows);
+    for (int row = 0; row < rows; ++row)
       for (int column = 0; column < width; ++column) {
-        const double d = distribution.cellDensity(std::size_t(column), std::size_t(cell));
+        const double d = patches.probabilityInCell(std::size_t(column), std::size_t(row)) * patchesPerSquare;
         float f = float(d);
-        // A cell that can be drawn keeps a positive pdf, however faint (MIS divides by it).
+        // A patch that can be drawn keeps a positive pdf, however faint (MIS divides by it).
         if (d > 0.0 && f == 0.0f) f = std::numeric_limits<float>::denorm_min();
-        map.setCellValue(column, cell, f);
+        map.setCellValue(column, row, f);
       }
+  }
+
+  // The bins over the cells, once the grid (and so the cells' directions) is known.
+  void buildBins() {
+    const std::size_t columns = patches.cellColumns(), rows = patches.cellRows();
+    std::vector<double> light(columns * rows);
+    std::vector<CosineBins::Cone> cones(columns * rows);
+    for (std::size_t cr = 0; cr < rows; ++cr)
+      for (std::size_t cc = 0; cc < columns; ++cc) {
+        light[cr * columns + cc] = patches.cellWeight(cc, cr);
+        cones[cr * columns + cc] = cellCone(cc, cr);
+      }
+    bins = CosineBins(columns, rows, light, cones);
+  }
+
+  // The directions of cell (cc, cr): its patches span x from columnStart(cc) to columnStart(cc + 1) and
+  // y likewise, in the lookup's coordinates. Its sides are meridians and parallels, so the farthest of its
+  // points from its centre is a corner.
+  CosineBins::Cone cellCone(std::size_t cc, std::size_t cr) const {
+    const auto direction = [&](double x, double y) {
+      // A point at x = W lies at the last column's far edge, one at y = rows at the last row's.
+      const int column = std::min(int(x), int(patches.width()) - 1), row = std::min(int(y), int(patches.height()) - 1);
+      double sinTheta;
+      return grid.direction(column, row, x - column, y - row, sinTheta);
+    };
+    const double x0 = double(patches.columnStart(cc)), x1 = double(patches.columnStart(cc + 1));
+    const double y0 = double(patches.rowStart(cr)), y1 = double(patches.rowStart(cr + 1));
+    const Vec3 axis = glm::normalize(direction(0.5 * (x0 + x1), 0.5 * (y0 + y1)));
+    double radius = 0.0;
+    for (const double x : {x0, x1})
+      for (const double y : {y0, y1})
+        radius = std::max(radius, std::acos(std::clamp(glm::dot(axis, direction(x, y)), -1.0, 1.0)));
+    return {axis, radius};
   }
 
   static std::unique_ptr<Impl> fromMap(LatLongImage image, double rotateDegrees, std::string description) {
@@ -226,6 +264,7 @@ struct Environment::Impl {
     const int width = image.width, height = image.height;
     impl->buildDistribution(std::move(image));
     impl->grid = LatLongGrid(width, height, impl->uOffset);
+    impl->buildBins();
     return impl;
   }
 };
@@ -264,43 +303,73 @@ Rgb Environment::radiance(const Vec3& dir) const {
   return impl_->map.interpolate(impl_->grid.position(dir));
 }
 
-Environment::Sample Environment::sample(Vec2 u) const {
-  const Impl& env = *impl_;
-  if (env.isConstant) {
-    // Uniform over the sphere: no direction is more important than another.
-    const double cosTheta = 1.0 - 2.0 * std::clamp(u.x, 0.0, 1.0);
-    const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
-    const double phi = 2.0 * kPi * u.y;
-    return {Vec3(sinTheta * std::cos(phi), cosTheta, sinTheta * std::sin(phi)), env.constantRadiance, kInv4Pi};
-  }
-
+Environment::Sample Environment::sample(const Vec3& normal, Vec2 u) const {
   const bool want = true;
   Sample out;
-  sample(&want, &u, &out, 1);
+  sample(&want, &normal, &u, &out, 1);
   return out;
 }
 
-static_assert(Environment::kMaxBatch <= BlockedDistribution2D::kMaxBatch, "a batch of samples is one distribution batch");
+namespace {
 
-void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) const {
+// The constant environment toward a normal: cosine-weighted about it, the light's own L cos θ; with no
+// normal (zero), uniform over the sphere, as no direction is more important than another.
+Environment::Sample constantSample(const Rgb& radiance, const Vec3& normal, Vec2 u) {
+  const double r = std::sqrt(clampUnit(u.x)), phi = 2.0 * kPi * u.y;
+  if (CosineBins::bin(normal) != CosineBins::kUnweighted) {
+    const Frame frame(glm::normalize(normal));
+    const double z = std::sqrt(std::max(0.0, 1.0 - r * r));
+    if (!(z > 0.0)) return {frame.n, radiance, 0.0};
+    const Vec3 dir = frame.toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), z));
+    // The density as pdf() computes it from the direction, so that the two agree to the bit.
+    return {dir, radiance, std::max(0.0, glm::dot(frame.n, dir)) * kInvPi};
+  }
+  const double cosTheta = 1.0 - 2.0 * std::clamp(u.x, 0.0, 1.0);
+  const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
+  return {Vec3(sinTheta * std::cos(phi), cosTheta, sinTheta * std::sin(phi)), radiance, kInv4Pi};
+}
+
+double constantPdf(const Vec3& normal, const Vec3& dir) {
+  if (CosineBins::bin(normal) == CosineBins::kUnweighted) return kInv4Pi;
+  return std::max(0.0, glm::dot(glm::normalize(normal), dir)) * kInvPi;
+}
+
+}  // namespace
+
+void Environment::sample(const bool* want, const Vec3* normals, const Vec2* u, Sample* out, int n) const {
   const Impl& env = *impl_;
   if (env.isConstant) {
     for (int i = 0; i < n; ++i)
-      if (want[i]) out[i] = sample(u[i]);
+      if (want[i]) out[i] = constantSample(env.constantRadiance, normals[i], u[i]);
     return;
   }
-  BlockedDistribution2D::Sample cells[kMaxBatch];
-  env.distribution.sample(want, u, cells, n);  // the map holds the densities
-  // The wanted lanes, packed.
-  int lane[kMaxBatch] = {}, count = 0;
-  LatLongPosition at[kMaxBatch];
+  // The wanted lanes, packed: each lane's cell for its normal, then its patch in the cell, a row and a
+  // column, each step's table lines fetched for all lanes before any lane reads them.
+  int lane[kMaxBatch] = {}, bin[kMaxBatch] = {}, count = 0;
+  CosineBins::Cell cell[kMaxBatch];
+  std::size_t row[kMaxBatch];
+  Vec2 v[kMaxBatch];
   for (int i = 0; i < n; ++i) {
     if (!want[i]) continue;
-    at[count] = cellPosition(cells[i], env.map.width(), env.map.height());
+    bin[count] = CosineBins::bin(normals[i]);
+    v[count] = u[i];
+    cell[count] = env.bins.sample(bin[count], v[count]);
+    env.patches.prefetchRows(cell[count].column, cell[count].row);
     lane[count++] = i;
   }
+  for (int k = 0; k < count; ++k) {
+    row[k] = env.patches.sampleRow(cell[k].column, cell[k].row, v[k].x);
+    env.patches.prefetchColumns(cell[k].column, row[k]);
+  }
+  LatLongPosition at[kMaxBatch];
+  const int width = env.map.width();
+  for (int k = 0; k < count; ++k) {
+    const int column = int(env.patches.sampleColumn(cell[k].column, row[k], v[k].y));
+    // What is left of u.x, which chose the row, places the point down the patch; of u.y, across it.
+    at[k] = {column, column + 1 == width ? 0 : column + 1, int(row[k]), v[k].y, v[k].x};
+  }
   env.map.prefetch(at, count);
-  // The point's place in its cell, uniform so far, drawn again by the cell's bilinear function: step by
+  // The point's place in its patch, uniform so far, drawn again by the patch's bilinear function: step by
   // step for all lanes, so that the lanes' square roots and divisions overlap, where a lane at a time
   // would wait on each in turn.
   BilinearPatch patch[kMaxBatch];
@@ -308,18 +377,19 @@ void Environment::sample(const bool* want, const Vec2* u, Sample* out, int n) co
   for (int k = 0; k < count; ++k) patch[k] = env.patchAt(at[k]);
   for (int k = 0; k < count; ++k) at[k].fy = patch[k].sampleY(at[k].fy);
   for (int k = 0; k < count; ++k) at[k].fx = patch[k].sampleX(at[k].fx, at[k].fy);
-  for (int k = 0; k < count; ++k) density[k] = env.densityAt(at[k], patch[k]);
+  for (int k = 0; k < count; ++k) density[k] = env.densityAt(bin[k], at[k], patch[k]);
   Vec3 dirs[kMaxBatch];
   double sinTheta[kMaxBatch];
   env.grid.directions(at, dirs, sinTheta, count);
   for (int k = 0; k < count; ++k) out[lane[k]] = env.sampleAt(at[k], density[k], dirs[k], sinTheta[k]);
 }
 
-void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const {
+void Environment::radianceAndPdf(const bool* want, const Vec3* normals, const Vec3* dirs, Rgb* radiance, double* pdf,
+                                 int n) const {
   const Impl& env = *impl_;
   if (env.isConstant) {
     for (int i = 0; i < n; ++i)
-      if (want[i]) radiance[i] = radianceAndPdf(dirs[i], pdf[i]);
+      if (want[i]) radiance[i] = radianceAndPdf(normals[i], dirs[i], pdf[i]);
     return;
   }
   int lane[kMaxBatch] = {}, count = 0;
@@ -330,25 +400,25 @@ void Environment::radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radian
   env.map.prefetch(at, count);
   for (int k = 0; k < count; ++k) {
     const int i = lane[k];
-    pdf[i] = env.pdfAt(dirs[i], at[k]);
+    pdf[i] = env.pdfAt(CosineBins::bin(normals[i]), dirs[i], at[k]);
     radiance[i] = env.map.interpolate(at[k]);
   }
 }
 
-double Environment::pdf(const Vec3& dir) const {
-  const Impl& env = *impl_;
-  if (env.isConstant) return kInv4Pi;
-  return env.pdfAt(dir, env.grid.position(dir));
+double Environment::pdf(const Vec3& normal, const Vec3& dir) const {
+  double p = 0.0;
+  radianceAndPdf(normal, dir, p);
+  return p;
 }
 
-Rgb Environment::radianceAndPdf(const Vec3& dir, double& pdf) const {
+Rgb Environment::radianceAndPdf(const Vec3& normal, const Vec3& dir, double& pdf) const {
   const Impl& env = *impl_;
   if (env.isConstant) {
-    pdf = kInv4Pi;
+    pdf = constantPdf(normal, dir);
     return env.constantRadiance;
   }
   const LatLongPosition at = env.grid.position(dir);
-  pdf = env.pdfAt(dir, at);
+  pdf = env.pdfAt(CosineBins::bin(normal), dir, at);
   return env.map.interpolate(at);
 }
 

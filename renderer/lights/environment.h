@@ -24,7 +24,7 @@ class Environment {
     double pdf;  // solid angle; 0 = invalid
   };
 
-  // The largest map: at most 2^28 texels (16384 × 16384, or 32768 × 8192: 4.8 GB at the 18 bytes a texel a
+  // The largest map: at most 2^28 texels (16384 × 16384, or 32768 × 8192: 4.9 GB at the 18 bytes a texel a
   // map costs), and at most 65536 on a side (OpenImageIO's reading buffer holds whole rows). Checked on the
   // header, before anything is allocated, so that a file claiming more (which a few bytes of header can)
   // is refused as bad input instead of exhausting memory.
@@ -41,16 +41,20 @@ class Environment {
   static Environment makeDefault(double rotateDegrees = 0.0);
 
   Rgb radiance(const Vec3& dir) const;     // radiance arriving from direction dir
-  Sample sample(Vec2 u) const;              // importance-sampled by sin θ-weighted luminance
-  double pdf(const Vec3& dir) const;        // exactly the density sample() draws from
+  // Directions toward a surface of the given normal (unit, world space), importance-sampled by the map's
+  // luminance × sin θ within each cell of the map and by the cells' light × the largest cos θ the normal's
+  // bin can make with them (cosine_bins.h); the constant environment cosine-weighted about the normal.
+  // The zero normal: no surface, the map's luminance alone (the constant environment uniform).
+  Sample sample(const Vec3& normal, Vec2 u) const;
+  double pdf(const Vec3& normal, const Vec3& dir) const;  // exactly the density sample(normal, ·) draws from
   // Both at once, from one direction-to-map conversion (the path tracer's escaping rays need both).
-  Rgb radianceAndPdf(const Vec3& dir, double& pdf) const;
+  Rgb radianceAndPdf(const Vec3& normal, const Vec3& dir, double& pdf) const;
   // Batch forms for the path tracer's waves: for the lanes with want[i] (i < n ≤ kMaxBatch), exactly
-  // what sample(u[i]) and radianceAndPdf(dirs[i], pdf[i]) return. The lanes' map lines are prefetched
-  // together before any is read, so that their cache misses overlap instead of queueing.
+  // what sample(normals[i], u[i]) and radianceAndPdf(normals[i], dirs[i], pdf[i]) return. The lanes' map
+  // lines are prefetched together before any is read, so that their cache misses overlap instead of queueing.
   static constexpr int kMaxBatch = 128;
-  void sample(const bool* want, const Vec2* u, Sample* out, int n) const;
-  void radianceAndPdf(const bool* want, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const;
+  void sample(const bool* want, const Vec3* normals, const Vec2* u, Sample* out, int n) const;
+  void radianceAndPdf(const bool* want, const Vec3* normals, const Vec3* dirs, Rgb* radiance, double* pdf, int n) const;
   double meanLuminance() const;  // over the sphere of directions
   const std::string& description() const;  // for image metadata: file name, "constant r,g,b", "default sky"
 

@@ -1,5 +1,5 @@
-// The environment (environment.h) as a distant light: its samples do not depend on the point they are
-// seen from, and rays that leave the scene see it.
+// The environment (environment.h) as a distant light: its samples depend on the normal they are seen
+// with, not on the point, and rays that leave the scene see it.
 #include "renderer/lights/environment.h"
 #include "renderer/lights/light.h"
 
@@ -18,22 +18,28 @@ class EnvironmentLight final : public Light {
   }
   bool distant() const override { return true; }
 
-  LightSample sample(const Vec3& /*point*/, Vec2 u) const override { return lightSample(environment_.sample(u)); }
+  LightSample sample(const Receiver& at, Vec2 u) const override { return lightSample(environment_.sample(at.normal, u)); }
   // The map's reads for all lanes at once (environment.h): the same values as one at a time. The
   // environment's batches take the lanes as a mask over the first kMaxBatch.
-  void sample(const Vec3* points, const Vec2* u, const int* lanes, int n, LightSample* out) const override {
+  void sample(const Receiver* at, const Vec2* u, const int* lanes, int n, LightSample* out) const override {
     bool want[Environment::kMaxBatch] = {};
-    if (!mask(lanes, n, want)) return Light::sample(points, u, lanes, n, out);
+    if (!mask(lanes, n, want)) return Light::sample(at, u, lanes, n, out);
+    Vec3 normals[Environment::kMaxBatch];
+    for (int k = 0; k < n; ++k) normals[lanes[k]] = at[lanes[k]].normal;
     Environment::Sample samples[Environment::kMaxBatch];
-    environment_.sample(want, u, samples, lanes[n - 1] + 1);
+    environment_.sample(want, normals, u, samples, lanes[n - 1] + 1);
     for (int k = 0; k < n; ++k) out[lanes[k]] = lightSample(samples[lanes[k]]);
   }
 
-  Rgb arriving(const Vec3& dir, double& pdf) const override { return environment_.radianceAndPdf(dir, pdf); }
-  void arriving(const Vec3* dirs, const int* lanes, int n, Rgb* radiance, double* pdf) const override {
+  Rgb arriving(const Vec3& dir, const Receiver& from, double& pdf) const override {
+    return environment_.radianceAndPdf(from.normal, dir, pdf);
+  }
+  void arriving(const Vec3* dirs, const Receiver* from, const int* lanes, int n, Rgb* radiance, double* pdf) const override {
     bool want[Environment::kMaxBatch] = {};
-    if (!mask(lanes, n, want)) return Light::arriving(dirs, lanes, n, radiance, pdf);
-    environment_.radianceAndPdf(want, dirs, radiance, pdf, lanes[n - 1] + 1);
+    if (!mask(lanes, n, want)) return Light::arriving(dirs, from, lanes, n, radiance, pdf);
+    Vec3 normals[Environment::kMaxBatch];
+    for (int k = 0; k < n; ++k) normals[lanes[k]] = from[lanes[k]].normal;
+    environment_.radianceAndPdf(want, normals, dirs, radiance, pdf, lanes[n - 1] + 1);
   }
 
  private:

@@ -16,6 +16,14 @@ namespace glossy {
 
 class Environment;
 
+// Where a light is seen from: a point and the normal of the surface there (the shading normal, on the
+// side the light must arrive from). Below the normal's horizon the surface takes no light, so a light may
+// shape its samples by it (the environment does). The zero normal: no surface, e.g. a camera.
+struct Receiver {
+  Vec3 point{0.0};
+  Vec3 normal{0.0};
+};
+
 // A light sample seen from a point.
 struct LightSample {
   Vec3 wi{0.0};        // unit, from the point toward the light
@@ -33,25 +41,25 @@ class Light {
   virtual double power() const = 0;
   virtual bool distant() const { return false; }
 
-  virtual LightSample sample(const Vec3& point, Vec2 u) const = 0;
-  // out[lanes[k]] = sample(points[lanes[k]], u[lanes[k]]) for k < n: a kind whose samples read memory at
+  virtual LightSample sample(const Receiver& at, Vec2 u) const = 0;
+  // out[lanes[k]] = sample(at[lanes[k]], u[lanes[k]]) for k < n: a kind whose samples read memory at
   // random overrides it to issue the lanes' reads together.
-  virtual void sample(const Vec3* points, const Vec2* u, const int* lanes, int n, LightSample* out) const {
-    for (int k = 0; k < n; ++k) out[lanes[k]] = sample(points[lanes[k]], u[lanes[k]]);
+  virtual void sample(const Receiver* at, const Vec2* u, const int* lanes, int n, LightSample* out) const {
+    for (int k = 0; k < n; ++k) out[lanes[k]] = sample(at[lanes[k]], u[lanes[k]]);
   }
 
-  // Distant lights: the radiance from direction dir, and the density sample() draws dir with.
-  virtual Rgb arriving(const Vec3& /*dir*/, double& pdf) const {
+  // Distant lights: the radiance from direction dir, and the density sample(from, ·) draws dir with.
+  virtual Rgb arriving(const Vec3& /*dir*/, const Receiver& /*from*/, double& pdf) const {
     pdf = 0.0;
     return Rgb(0.0);
   }
-  virtual void arriving(const Vec3* dirs, const int* lanes, int n, Rgb* radiance, double* pdf) const {
-    for (int k = 0; k < n; ++k) radiance[lanes[k]] = arriving(dirs[lanes[k]], pdf[lanes[k]]);
+  virtual void arriving(const Vec3* dirs, const Receiver* from, const int* lanes, int n, Rgb* radiance, double* pdf) const {
+    for (int k = 0; k < n; ++k) radiance[lanes[k]] = arriving(dirs[lanes[k]], from[lanes[k]], pdf[lanes[k]]);
   }
 
   // Surface lights: the radiance leaving the hit point toward the ray's origin `from`, and the density
   // (solid angle at `from`) with which sample(from, ·) would have drawn it.
-  virtual Rgb emitted(const Hit& /*hit*/, const Vec3& /*from*/, double& pdf) const {
+  virtual Rgb emitted(const Hit& /*hit*/, const Receiver& /*from*/, double& pdf) const {
     pdf = 0.0;
     return Rgb(0.0);
   }

@@ -22,12 +22,12 @@ class TriangleLight final : public Light {
 
   double power() const override { return kPi * area_ * luminance(radiance_); }
 
-  LightSample sample(const Vec3& point, Vec2 u) const override {
+  LightSample sample(const Receiver& at, Vec2 u) const override {
     if (!(area_ > 0.0)) return {};
     // Uniform on the triangle: p0 + √u₁(1 − u₂) e1 + √u₁ u₂ e2 (the square-root warp).
     const double r = std::sqrt(u.x);
     const Vec3 p = p0_ + r * (1.0 - u.y) * e1_ + r * u.y * e2_;
-    const Vec3 d = p - point;
+    const Vec3 d = p - at.point;
     const double distance = glm::length(d);
     if (!(distance > 0.0)) return {};
     const Vec3 wi = d / distance;
@@ -36,8 +36,8 @@ class TriangleLight final : public Light {
     return {wi, radiance_, distance * distance / (cosLight * area_), false, p + normal_ * margin_};
   }
 
-  Rgb emitted(const Hit& hit, const Vec3& from, double& pdf) const override {
-    const Vec3 d = hit.position - from;
+  Rgb emitted(const Hit& hit, const Receiver& from, double& pdf) const override {
+    const Vec3 d = hit.position - from.point;
     const double distance2 = glm::dot(d, d);
     const double cosLight = -glm::dot(d, normal_) / std::sqrt(distance2);
     pdf = 0.0;

@@ -17,6 +17,7 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <memory>
 
 namespace glossy {
 
@@ -90,7 +91,11 @@ inline double belowOne(double x) { return x < 1.0 ? x : 0x1.fffffffffffffp-1; }
 // Thin columns are 1/N wide everywhere; thin rows split a column's cells among the columns of its height.
 class CmjPattern {
  public:
-  explicit CmjPattern(uint32_t count) : count_(count == 0 ? 1 : count) {
+  // splits > 1: the pattern also holds one of count · splits points, from which a sample may take that
+  // many draws of one dimension (CmjSampler::getSplit2D).
+  explicit CmjPattern(uint32_t count, uint32_t splits = 1) : count_(count == 0 ? 1 : count) {
+    if (splits > 1) split_ = std::make_shared<const CmjPattern>(count_ * splits);
+    splits_ = splits > 1 ? splits : 1;
     uint32_t root = 1;
     while ((root + 1) * (root + 1) <= count_) ++root;
     // A full grid if there is one (N < 4 has only 1 × N), else ⌊√N⌋ columns.
@@ -115,6 +120,9 @@ class CmjPattern {
   uint32_t columns() const { return columns_; }          // m
   uint32_t rows() const { return rows_; }                // cells in each of the narrow columns, ⌊N/m⌋
   uint32_t wideColumns() const { return bands_[0].columns; }  // the first r columns hold rows() + 1 cells
+  uint32_t splits() const { return splits_; }
+  // The pattern of count() · splits() points; this one when splits() is 1.
+  const CmjPattern& split() const { return split_ ? *split_ : *this; }
 
  private:
   friend class CmjSampler;
@@ -129,7 +137,8 @@ class CmjPattern {
     cmj_detail::PermutationRange heightRange, columnRange;
     double perThinRow = 1.0;  // 1 / (height · columns): a thin row's height
   };
-  uint32_t count_, columns_ = 1, rows_ = 1;
+  uint32_t count_, columns_ = 1, rows_ = 1, splits_ = 1;
+  std::shared_ptr<const CmjPattern> split_;
   Band bands_[2];  // the wide columns (possibly none), then the narrow ones
   cmj_detail::PermutationRange countRange_;
   double perCount_ = 1.0;  // 1 / N
@@ -184,20 +193,21 @@ class CmjSampler {
   // The dimension's shuffle of the index picks cell i of column c; inside it the point's thin column is
   // a permutation of i and its thin row one of c, the same permutations in every column of a height (the
   // "correlated" offsets, which put one point in each thin column and row), plus jitter.
-  Vec2 get2D() {
-    using namespace cmj_detail;
-    const CmjPattern& g = *pattern_;
+  Vec2 get2D() { return point2D(*pattern_, pixel_->seeds(dimension_++), index_); }
+  // The pattern's splits() draws of the next dimension for this sample: points index·splits() + k of the
+  // pixel's split pattern, so that the N samples' N·splits() draws are stratified together, as a pattern
+  // of N·splits() samples would stratify them. With splits() = 1, get2D() (get1D()).
+  void getSplit2D(Vec2* out) {
     const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
-    const uint32_t cell = permute(index_, g.countRange_, p.cell);
-    const CmjPattern::Band& band = g.bands_[cell >= g.bands_[1].start];
-    const uint32_t k = cell - band.start, i = k / band.columns, c = k - i * band.columns;
-    const uint32_t thinColumn = permute(i, band.heightRange, p.column);
-    const uint32_t thinRow = permute(c, band.columnRange, p.row);
-    const uint64_t jitter = mix(cell, uint32_t(p.cell >> 32));
-    // The column's first thin column + (thinColumn + j), over N; (i + (thinRow + j) / columns) / height.
-    return {belowOne((band.start + c * band.height + thinColumn + toUnit(uint32_t(jitter >> 32))) * g.perCount_),
-            belowOne((i * band.columns + thinRow + toUnit(uint32_t(jitter))) * band.perThinRow)};
+    const uint32_t k = pattern_->splits();
+    for (uint32_t j = 0; j < k; ++j) out[j] = point2D(pattern_->split(), p, index_ * k + j);
   }
+  void getSplit1D(double* out) {
+    const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
+    const uint32_t k = pattern_->splits();
+    for (uint32_t j = 0; j < k; ++j) out[j] = point1D(pattern_->split(), p, index_ * k + j);
+  }
+  uint32_t splits() const { return pattern_->splits(); }
 
   // The same draws for many samplers at once: out[lanes[k]] = samplers[lanes[k]].get2D() (get1D), for
   // k < n, the same values. The lanes' hashes and permutations are computed stage by stage for all of them
@@ -219,15 +229,28 @@ class CmjSampler {
   Key key() const { return {pattern_, pixel_->seed(), index_, dimension_}; }
 
   // One point in each of the N intervals [k/N, (k+1)/N).
-  double get1D() {
+  double get1D() { return point1D(*pattern_, pixel_->seeds(dimension_++), index_); }
+
+ private:
+  // Point `index` of pattern g in the dimension whose seeds are p.
+  static Vec2 point2D(const CmjPattern& g, const CmjPixel::Seeds& p, uint32_t index) {
     using namespace cmj_detail;
-    const CmjPattern& g = *pattern_;
-    const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
-    const uint32_t k = permute(index_, g.countRange_, p.cell);
+    const uint32_t cell = permute(index, g.countRange_, p.cell);
+    const CmjPattern::Band& band = g.bands_[cell >= g.bands_[1].start];
+    const uint32_t k = cell - band.start, i = k / band.columns, c = k - i * band.columns;
+    const uint32_t thinColumn = permute(i, band.heightRange, p.column);
+    const uint32_t thinRow = permute(c, band.columnRange, p.row);
+    const uint64_t jitter = mix(cell, uint32_t(p.cell >> 32));
+    // The column's first thin column + (thinColumn + j), over N; (i + (thinRow + j) / columns) / height.
+    return {belowOne((band.start + c * band.height + thinColumn + toUnit(uint32_t(jitter >> 32))) * g.perCount_),
+            belowOne((i * band.columns + thinRow + toUnit(uint32_t(jitter))) * band.perThinRow)};
+  }
+  static double point1D(const CmjPattern& g, const CmjPixel::Seeds& p, uint32_t index) {
+    using namespace cmj_detail;
+    const uint32_t k = permute(index, g.countRange_, p.cell);
     return belowOne((k + toUnit(hash(k, uint32_t(p.cell >> 32)))) * g.perCount_);
   }
 
- private:
   const CmjPattern* pattern_ = nullptr;
   CmjPixel* pixel_ = nullptr;
   uint32_t index_ = 0;

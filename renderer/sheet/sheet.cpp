@@ -210,7 +210,7 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     const auto passStart = std::chrono::steady_clock::now();
     for (int j = 0; j < sheet.replicates; ++j) {
       RenderSettings r{.width = w, .height = h, .spp = n, .firstSample = sheet.replicates * done + j * n,
-                       .maxDepth = settings.maxDepth, .seed = settings.seed, .threads = settings.threads,
+                       .maxDepth = settings.maxDepth, .lightSamples = settings.lightSamples, .seed = settings.seed, .threads = settings.threads,
                        .progress = settings.progress && settings.secondsPerPanel <= 0.0 && settings.targetError <= 0.0};
       RenderStats stats;
       const std::vector<RgbImage> images = renderPanels(scenes, *scene.camera, r, stats);

@@ -50,6 +50,7 @@ struct SheetSettings {
   uint32_t seed = 0;
   int threads = 0;
   int maxDepth = 8;
+  int lightSamples = RenderSettings{}.lightSamples;  // at a path's first vertex
   bool progress = true;
   std::vector<SheetPanel> panels{sheetPanels().begin(), sheetPanels().end()};
 };

@@ -12,7 +12,8 @@ void envmapEntry(Bytes data) {
   const TempFile file(data[0] % 2 == 1 ? "map.exr" : "map.hdr", data.subspan(1));
   const Environment env = Environment::load(file.path());
   (void)env.radiance({0.0, 1.0, 0.0});
-  (void)env.sample({0.3, 0.7});
+  (void)env.sample(Vec3(0.0), {0.3, 0.7});
+  (void)env.sample(Vec3(0.0, 1.0, 0.0), {0.3, 0.7});
 }
 
 }  // namespace glossy::fuzz
