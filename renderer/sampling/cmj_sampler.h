@@ -179,7 +179,7 @@ class CmjPixel {
 
   uint32_t pixelSeed_;
   uint32_t known_ = 0;  // bit d: cache_[d] is filled
-  std::array<Seeds, kCached> cache_;
+  std::array<Seeds, kCached> cache_{};  // zeroed only because GCC cannot see that known_ guards it
 };
 
 // One sample of a pixel: its 2D and 1D values, dimension after dimension.

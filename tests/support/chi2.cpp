@@ -344,4 +344,24 @@ double sidakAlpha(double familyAlpha, int tests) { return -std::expm1(std::log1p
 
 double chi2Survival(double x, int dof) { return gammaQ(0.5 * dof, 0.5 * x); }
 
+PooledChi2 pooledChi2(const std::vector<double>& observed, const std::vector<double>& expected, double minExpected) {
+  PooledChi2 r;
+  double pooledObserved = 0.0, pooledExpected = 0.0;
+  for (std::size_t b = 0; b < observed.size() && b < expected.size(); ++b) {
+    if (expected[b] < minExpected) {
+      pooledObserved += observed[b];
+      pooledExpected += expected[b];
+      continue;
+    }
+    r.statistic += (observed[b] - expected[b]) * (observed[b] - expected[b]) / expected[b];
+    ++r.bins;
+  }
+  if (pooledExpected >= minExpected) {
+    r.statistic += (pooledObserved - pooledExpected) * (pooledObserved - pooledExpected) / pooledExpected;
+    ++r.bins;
+  }
+  r.p = r.bins > 1 ? chi2Survival(r.statistic, r.bins - 1) : 1.0;
+  return r;
+}
+
 }  // namespace glossy::test

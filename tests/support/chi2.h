@@ -97,4 +97,13 @@ double sidakAlpha(double familyAlpha, int tests);
 // P(X ≥ x) for X ~ χ²(dof): the regularised upper incomplete gamma Q(dof/2, x/2).
 double chi2Survival(double x, int dof);
 
+// Pearson's χ² of observed counts against expected ones, bins expected to hold fewer than minExpected
+// pooled into one (kept if it reaches minExpected itself); p is its survival at bins − 1 degrees of
+// freedom (1 when there is at most one bin).
+struct PooledChi2 {
+  double statistic = 0.0, p = 1.0;
+  int bins = 0;
+};
+PooledChi2 pooledChi2(const std::vector<double>& observed, const std::vector<double>& expected, double minExpected = 5.0);
+
 }  // namespace glossy::test
