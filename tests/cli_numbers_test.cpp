@@ -1,6 +1,7 @@
 // Numbers on the command line: every floating-point option of every subcommand refuses NaN, ±Inf and
 // values out of its range as bad input (exit 2, one short line naming the option), before any work;
 // --threads and image sizes have limits that are checked up front; --shard takes exactly i/N.
+#include "renderer/cli/image_memory.h"
 #include "tests/support/test_support.h"
 
 #include <unistd.h>
@@ -91,8 +92,8 @@ TEST(CliNumbers, ShardMustBeExactlyIOverN) {
 TEST(CliNumbers, ImagesLargerThanMemoryAreRefusedUpFront) {
   TempDir tmp;
   const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-  // Seven 16384² panels need about 240 GB.
-  if (memory >= 16384.0 * 16384.0 * 7 * 128) GTEST_SKIP() << "this machine has the memory for the largest sheet";
+  // Seven 16384² panels need about 600 GB.
+  if (memory >= 16384.0 * 16384.0 * 7 * cli::kSheetBytesPerPanelPixel) GTEST_SKIP() << "this machine has the memory for the largest sheet";
   for (const char* command : {"sheet", "sheets"}) {
     std::vector<std::string> args = {command, "--width", "16384", "--height", "16384", "--spp", "1"};
     if (std::string(command) == "sheet") args.insert(args.end(), {"--material", (materialsDir() / "chrome.toml").string()});

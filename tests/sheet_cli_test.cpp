@@ -1,7 +1,9 @@
 // glossy sheet and glossy sheets through the command line: the layered EXR (grid + 7 panels) and the PNG,
 // the error table and metadata, labelled empty panels, the smooth fit's Fresnel angle, --time,
 // --target-error, batch resuming and sharding, bad input.
+#include "renderer/image/colour_maps.h"
 #include "renderer/image/exr_image.h"
+#include "renderer/sheet/error_maps.h"
 #include "tests/support/test_support.h"
 
 #include <OpenImageIO/imageio.h>
@@ -44,7 +46,14 @@ TEST(CliSheet, EverySupplementMaterialGivesTheLayeredExrAndThePngWithNoNonFinite
         "ashikhmin_shirley_E2.G", "ashikhmin_shirley_E2.R", "cook_torrance_E1.B", "cook_torrance_E1.G", "cook_torrance_E1.R",
         "cook_torrance_E2.B", "cook_torrance_E2.G", "cook_torrance_E2.R", "measured.B", "measured.G", "measured.R",
         "microfacet_E2.B", "microfacet_E2.G", "microfacet_E2.R", "smooth_E2.B", "smooth_E2.G", "smooth_E2.R"};
-    EXPECT_EQ(channels, want) << name << ": the grid and the 7 panels";
+    std::vector<std::string> panels;
+    for (const std::string& c : channels)
+      if (!c.ends_with("_reldiff.Y") && !c.ends_with("_flip.Y")) panels.push_back(c);
+    EXPECT_EQ(panels, want) << name << ": the grid and the 7 panels";
+    for (const char* layer : {"microfacet_E2", "smooth_E2", "ashikhmin_shirley_E1", "ashikhmin_shirley_E2", "cook_torrance_E1", "cook_torrance_E2"})
+      for (const char* map : {"_reldiff.Y", "_flip.Y"})
+        EXPECT_NE(std::find(channels.begin(), channels.end(), layer + std::string(map)), channels.end()) << name << ": " << layer << map;
+    EXPECT_EQ(channels.size(), want.size() + 12) << name << ": two error maps per model panel";
     const RgbImage grid = readRgbImage(exr);
     EXPECT_EQ(grid.width, 7 * 16);
     EXPECT_EQ(grid.height, 16);
@@ -84,6 +93,75 @@ TEST(CliSheet, EverySupplementMaterialGivesTheLayeredExrAndThePngWithNoNonFinite
     EXPECT_TRUE(readImageAttribute(exr, "glossy:error.cook_torrance_E2.relativeRmseCi").empty());
     EXPECT_NE(r.out.find("CT E2"), std::string::npos) << r.out;
   }
+}
+
+// The error maps: the EXR's relative-difference layer is the formula of error_maps.h applied to the EXR's own
+// panel layers, and the PNG's second row shows it in the diverging colours; the ꟻLIP figures and their map
+// hang together, and the parameters are the file's.
+TEST(CliSheet, ErrorMapsAreTheRelativeDifferenceOfThePanelsShownInThePngsSecondRow) {
+  GLOSSY_REQUIRE_SHARED("merl");
+  TempDir tmp;
+  const std::filesystem::path exr = tmp / "alum-bronze.exr";
+  const RunResult r = runGlossy({"sheet", "--material", (materialsDir() / "alum-bronze.toml").string(), "--merl-dir",
+                                 (sharedDir() / "merl").string(), "--width", "32", "--height", "32", "--spp", "16", "-o", exr.string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto in = OIIO::ImageInput::open(exr.string());
+  ASSERT_TRUE(in);
+  const OIIO::ImageSpec spec = in->spec();
+  const auto channel = [&](const std::string& name) {
+    const int c = spec.channelindex(name);
+    std::vector<float> v(size_t(spec.width) * size_t(spec.height));
+    EXPECT_GE(c, 0) << name;
+    if (c >= 0) {
+      EXPECT_TRUE(in->read_image(0, 0, c, c + 1, OIIO::TypeDesc::FLOAT, v.data()));
+    }
+    return v;
+  };
+  const int w = 32, h = 32, x0 = 4 * w;  // AS E2, the fifth panel
+  ASSERT_EQ(readImageAttribute(exr, "glossy:panel.ashikhmin_shirley_E2.box"), "128 0 32 32");
+  const std::vector<float> d = channel("ashikhmin_shirley_E2_reldiff.Y"), flip = channel("ashikhmin_shirley_E2_flip.Y");
+  const RgbImage m = readImageLayer(exr, "measured"), p = readImageLayer(exr, "ashikhmin_shirley_E2");
+  const auto lum = [](const float* c) { return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2]; };
+  // The object: where the map is not 0 (an exact 0 on the object is vanishingly rare in a noisy render).
+  double sum = 0.0, flipSum = 0.0;
+  size_t object = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (d[size_t(y) * spec.width + x0 + x] != 0.0f) sum += lum(m.at(x, y)), flipSum += flip[size_t(y) * spec.width + x0 + x], ++object;
+  ASSERT_GT(object, size_t(w * h / 10)) << "the object covers the panel's middle";
+  const double lumFloor = 0.01 * sum / double(object);
+  const RgbImage png = readRgbImage(tmp / "alum-bronze.png");
+  ASSERT_EQ(png.width, 7 * w);
+  ASSERT_GT(png.height, 2 * h) << "the panels, their labels, and the row of maps";
+  const int mapTop = png.height - h;
+  size_t checked = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const float v = d[size_t(y) * spec.width + x0 + x];
+      EXPECT_EQ(d[size_t(y) * spec.width + x], 0.0f) << "nothing under the measured panel";
+      if (v == 0.0f) continue;
+      const double ym = lum(m.at(x, y)), yp = lum(p.at(x0 + x, y));
+      EXPECT_NEAR(v, (yp - ym) / std::max(ym, lumFloor), 1e-4 * std::max(1.0, std::abs(double(v)))) << x << "," << y;
+      const DisplayColour c = divergingColour(v / kRelativeDifferenceRange);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(png.at(x0 + x, mapTop + y)[k], c[size_t(k)], 1.5 / 255.0) << x << "," << y;
+      ++checked;
+    }
+  EXPECT_EQ(checked, object);
+  // ꟻLIP: the figure is the map's mean over the object, inside its interval; the noise floor is below it.
+  const double flipFigure = std::stod(readImageAttribute(exr, "glossy:error.ashikhmin_shirley_E2.flip"));
+  EXPECT_NEAR(flipSum / double(object), flipFigure, 1e-5);
+  EXPECT_GT(flipFigure, 0.0);
+  double lo = 0.0, hi = 0.0;
+  ASSERT_EQ(std::sscanf(readImageAttribute(exr, "glossy:error.ashikhmin_shirley_E2.flipCi").c_str(), "%lf %lf", &lo, &hi), 2);
+  EXPECT_LE(lo, flipFigure);
+  EXPECT_GE(hi, flipFigure);
+  const double floor = std::stod(readImageAttribute(exr, "glossy:flipNoiseFloor"));
+  EXPECT_GT(floor, 0.0);
+  EXPECT_LT(floor, flipFigure) << "AS E2 differs from the measured panel by more than 16 spp of noise";
+  EXPECT_NE(r.out.find("HDR-FLIP"), std::string::npos) << r.out;
+  EXPECT_EQ(readImageAttribute(exr, "glossy:panel.ashikhmin_shirley_E1.params"),
+            "kd = [0.1062, 0.0815, 0.0556]; ks = [0.248103, 0.184284, 0.220735]; n = 6679.521974; eta = 1.453599");
+  EXPECT_EQ(readImageAttribute(exr, "glossy:panel.measured.params"), "");
 }
 
 TEST(CliSheet, MissingMeasuredDataAndMissingFitsGiveLabelledEmptyPanels) {

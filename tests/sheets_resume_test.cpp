@@ -66,6 +66,16 @@ TEST(CliSheetsResume, ASheetAtOtherSettingsOrOfAnEditedMaterialIsRenderedAgain) 
   EXPECT_TRUE(mentions(r, "chrome: made with other settings")) << r.err;
   EXPECT_TRUE(mentions(r, "gold-paint: complete, skipped")) << r.err;
   EXPECT_TRUE(mentions(r, "1 sheets rendered")) << r.err;
+
+  // A sheet of an older format (before the error maps: its settings say no format) is made again.
+  const std::string settings = readImageAttribute(b.out("gold-paint.exr"), "glossy:settings");
+  ASSERT_NE(settings.find("; format="), std::string::npos) << settings;
+  writeExr(b.out("gold-paint.exr"), readRgbImage(b.out("gold-paint.exr")),
+           {{"glossy:settings", settings.substr(0, settings.find("; format="))}});
+  r = b.run({"--seed", "7"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(mentions(r, "gold-paint: made with other settings")) << r.err;
+  EXPECT_TRUE(mentions(r, "chrome: complete, skipped")) << r.err;
 }
 
 TEST(CliSheetsResume, AFolderInTheWayOrTwoFilesOfOneNameStopBeforeRendering) {

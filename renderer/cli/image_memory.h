@@ -7,10 +7,11 @@
 namespace glossy::cli {
 
 // Bytes per pixel the renderers hold, estimated from their buffers with room to spare: render's image,
-// its accumulation and the EXR being written; a sheet panel's mean and four replicates, the figures'
-// per-pixel statistics, the EXR layers and the PNG.
+// its accumulation and the EXR being written; a sheet panel's mean and four replicates (60), its error maps
+// and the ꟻLIP images behind them (~40), the EXR's interleaved channels (144: grid, panels, two maps each),
+// the PNG (~30) and the figures' per-pixel statistics.
 inline constexpr double kRenderBytesPerPixel = 64.0;
-inline constexpr double kSheetBytesPerPanelPixel = 128.0;
+inline constexpr double kSheetBytesPerPanelPixel = 320.0;
 
 // InputError naming --width and --height and the size asked for when width × height × panels ×
 // bytesPerPixel exceeds the machine's physical memory.

@@ -84,7 +84,7 @@ std::string sheetSettings(const MaterialFile& m, const Stage& stage, const Sheet
          "; lightSamples=" + std::to_string(s.lightSamples) +
          "; half=" + (o.half ? "1" : "0") + "; exposure=" + formatted("%.17g", o.exposure) +
          "; measured=" + (measured ? measured->string() : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
-         contentDigest(m.path) + "; version=" + GLOSSY_VERSION;
+         contentDigest(m.path) + "; version=" + GLOSSY_VERSION + "; format=" + std::to_string(kSheetFormat);
 }
 
 std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& stage, const SheetOptions& o, const Sheet& sheet,

@@ -49,32 +49,39 @@ void writeLayeredExr(const std::filesystem::path& path, const std::vector<ExrLay
                      const std::vector<ImageAttribute>& attributes, PixelType type) {
   if (layers.empty()) throw std::runtime_error(path.string() + ": no layers to write");
   const int w = layers.front().image->width, h = layers.front().image->height;
-  const int n = int(layers.size()) * 3;
+  int n = 0;
+  for (const ExrLayer& l : layers) n += l.greyscale ? 1 : 3;
   OIIO::ImageSpec spec(w, h, n, type == PixelType::Half ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
   spec.channelnames.clear();
   for (const ExrLayer& l : layers)
-    for (const char* c : {"R", "G", "B"}) spec.channelnames.push_back(l.prefix.empty() ? c : l.prefix + "." + c);
+    for (const char* c : l.greyscale ? std::vector<const char*>{"Y"} : std::vector<const char*>{"R", "G", "B"})
+      spec.channelnames.push_back(l.prefix.empty() ? c : l.prefix + "." + c);
   spec.attribute("compression", "zip");
   addAttributes(spec, attributes);
   // No Inf or NaN in the file: a value beyond the type's largest finite one is written as that (half's is
   // 65504, which bright light easily exceeds), NaN as 0, and the pixels so changed are counted in the metadata.
   const float largest = type == PixelType::Half ? kLargestHalf : std::numeric_limits<float>::max();
-  std::vector<float> pixels(size_t(w) * size_t(h) * size_t(n));
-  int64_t clamped = 0;
-  for (size_t k = 0; k < layers.size(); ++k) {
-    const RgbImage& img = *layers[k].image;
-    if (img.width != w || img.height != h) throw std::runtime_error(path.string() + ": layers of different sizes");
-    for (size_t p = 0; p < size_t(w) * size_t(h); ++p) {
-      bool changed = false;
-      for (int c = 0; c < 3; ++c) {
-        const float v = img.pixels[p * 3 + c];
-        const float out = std::isnan(v) ? 0.0f : std::clamp(v, -largest, largest);
-        changed |= !(out == v);
-        pixels[p * n + k * 3 + c] = out;
+  std::vector<float> pixels(size_t(w) * size_t(h) * size_t(n), 0.0f);
+  std::vector<char> changed(size_t(w) * size_t(h), 0);
+  int first = 0;  // the layer's first channel
+  for (const ExrLayer& l : layers) {
+    const RgbImage& img = *l.image;
+    const int channels = l.greyscale ? 1 : 3;
+    if (l.x < 0 || img.height != h || l.x + img.width > w)
+      throw std::runtime_error(path.string() + ": layer " + l.prefix + " does not fit the file");
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const size_t p = size_t(y) * size_t(w) + size_t(l.x + x);
+        for (int c = 0; c < channels; ++c) {
+          const float v = img.at(x, y)[c];
+          const float out = std::isnan(v) ? 0.0f : std::clamp(v, -largest, largest);
+          changed[p] |= !(out == v);
+          pixels[p * size_t(n) + size_t(first + c)] = out;
+        }
       }
-      clamped += changed;
-    }
+    first += channels;
   }
+  const int64_t clamped = std::count(changed.begin(), changed.end(), 1);
   const int count = int(std::min<int64_t>(clamped, INT32_MAX));
   if (type == PixelType::Half) spec.attribute("glossy:halfClampedPixels", count);
   else if (clamped > 0) spec.attribute("glossy:nonFinitePixels", count);

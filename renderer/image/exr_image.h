@@ -36,11 +36,15 @@ inline constexpr float kLargestHalf = 65504.0f;
 void writeExr(const std::filesystem::path& path, const RgbImage& image, const std::vector<ImageAttribute>& attributes,
               PixelType type = PixelType::Float);
 
-// An EXR with named layers: `layers` are RGB images of one size, written as channels PREFIX.R/G/B (an
-// empty prefix gives the default R, G, B layer). Atomic like writeExr.
+// An EXR with named layers, written as channels PREFIX.R/G/B (an empty prefix gives the default R, G, B
+// layer), or PREFIX.Y for a greyscale layer (the image's first channel). The file is as large as the first
+// layer; a smaller layer sits with its left column at x and its top at row 0, black elsewhere, so a sheet's
+// panels each fill their own box without a grid-sized copy each. Atomic like writeExr.
 struct ExrLayer {
   std::string prefix;
   const RgbImage* image;
+  int x = 0;
+  bool greyscale = false;
 };
 void writeLayeredExr(const std::filesystem::path& path, const std::vector<ExrLayer>& layers,
                      const std::vector<ImageAttribute>& attributes, PixelType type = PixelType::Float);

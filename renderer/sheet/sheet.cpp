@@ -4,10 +4,13 @@
 #include "materials/fitting/metric.h"
 #include "materials/models/registry.h"
 #include "renderer/camera/camera_rays.h"
+#include "renderer/image/colour_maps.h"
+#include "renderer/image/flip.h"
 #include "renderer/scene/material_binding.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>
@@ -19,13 +22,6 @@
 namespace glossy {
 
 namespace {
-
-// sRGB transfer function (IEC 61966-2-1) of a linear value, clamped to [0, 1]; NaN (which std::clamp passes
-// through) is black.
-float srgbEncode(double v) {
-  v = std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 1.0);
-  return float(v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055);
-}
 
 // Above this share of noise in the plain figure's square, the intervals were seen to cover less than they
 // say: where the noise swamps the error, a seed that misses the rare bright paths underestimates both the
@@ -96,15 +92,39 @@ std::string fitted(std::string text, int width, int fontSize, const std::string&
   return text;
 }
 
+// A fit's parameters as its file has them, on one line: "kd = [0.1, 0.2, 0.3]; ks = [...]; n = 6679.5".
+std::string paramsText(const Fit& fit) {
+  MaterialFile one;
+  one.name = "fit";
+  one.fits = {fit};
+  std::istringstream toml(toToml(one));
+  std::string line, text;
+  bool inFit = false;
+  while (std::getline(toml, line)) {
+    if (line == "[[fit]]") inFit = true;
+    if (!inFit || line.empty() || line[0] == '[' || line[0] == '#' || line.starts_with("model =") || line.starts_with("metric =")) continue;
+    text.append(text.empty() ? "" : "; ").append(line);
+  }
+  return text;
+}
+
 }  // namespace
 
-SheetPanel SheetPanel::measured() { return {"measured", "Measured", ""}; }
+SheetPanel SheetPanel::measured() { return {"measured", "Measured", "", "#000000"}; }
 
 SheetPanel SheetPanel::ofFit(const FitId& fit) {
   const ModelInfo* model = findModel(fit.model);
   std::string layer = fit.model + "_" + fit.metric;
   std::replace(layer.begin(), layer.end(), '-', '_');
-  return {layer, std::string(model ? model->shortLabel : fit.model) + " " + fit.metric, fit.str()};
+  // The grid's six first, then the two fits a file may have beyond it.
+  static const std::pair<const char*, const char*> colours[] = {
+      {"microfacet:E2", "#e69f00"},        {"smooth:E2", "#56b4e9"},        {"ashikhmin-shirley:E1", "#009e73"},
+      {"ashikhmin-shirley:E2", "#cc79a7"}, {"cook-torrance:E1", "#0072b2"}, {"cook-torrance:E2", "#d55e00"},
+      {"microfacet:E1", "#f0e442"},        {"smooth:E1", "#999999"}};
+  std::string colour = "#999999";
+  for (const auto& [name, c] : colours)
+    if (fit.str() == name) colour = c;
+  return {layer, std::string(model ? model->shortLabel : fit.model) + " " + fit.metric, fit.str(), colour};
 }
 
 std::span<const SheetPanel> sheetPanels() {
@@ -173,6 +193,7 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     } else if (const Fit* fit = material.find(FitId::parse(panel.fit, material.path.string()))) {
       brdf = makeBrdf(*fit);
       if (measured) r.brdfE1 = e1->error(*brdf), r.brdfE2 = e2->error(*brdf);
+      r.params = paramsText(*fit);
     } else {
       r.note = "no " + panel.fit + " fit in " + material.name;
     }
@@ -256,6 +277,14 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     ++analytic;
   }
   for (size_t& model : sheet.verdict.models) model = analyticPanel[model];
+  if (const PanelRender* m = sheet.measured(); m && !m->empty) {
+    tbb::parallel_for(size_t(0), analyticPanel.size(), [&](size_t i) {
+      PanelRender& p = sheet.panels[analyticPanel[i]];
+      if (!p.empty && p.figures.compared) p.maps = errorMaps(p.replicates, m->replicates, sheet.objectMask);
+    });
+    if (std::any_of(sheet.panels.begin(), sheet.panels.end(), [](const PanelRender& p) { return p.maps.available; }))
+      sheet.flipNoiseFloor = flipNoiseFloor(m->replicates, sheet.objectMask);
+  }
 
   sheet.grid = RgbImage(w * int(sheet.panels.size()), h);
   for (size_t k = 0; k < sheet.panels.size(); ++k)
@@ -266,18 +295,24 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
 
 void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::vector<ImageAttribute> metadata, PixelType type) {
   const int w = sheet.panels.front().image.width, h = sheet.panels.front().image.height;
-  std::vector<RgbImage> placed;
-  placed.reserve(sheet.panels.size());
+  std::vector<ExrLayer> layers = {{"", &sheet.grid}};
+  std::vector<RgbImage> maps;  // each analytic panel's two maps, as one-channel images
+  maps.reserve(2 * sheet.panels.size());
   std::string names;
   for (size_t k = 0; k < sheet.panels.size(); ++k) {
     const PanelRender& p = sheet.panels[k];
-    RgbImage img(sheet.grid.width, sheet.grid.height);
-    for (int y = 0; y < h; ++y) std::copy_n(p.image.at(0, y), 3 * w, img.at(int(k) * w, y));
-    placed.push_back(std::move(img));
+    layers.push_back({p.panel.layer, &p.image, int(k) * w});
     names += (names.empty() ? "" : ",") + p.panel.layer;
+    if (p.maps.available)
+      for (const auto& [suffix, values] : {std::pair{"_reldiff", &p.maps.relativeDifference}, std::pair{"_flip", &p.maps.flipMap}}) {
+        RgbImage& map = maps.emplace_back(w, h);
+        for (size_t i = 0; i < values->size(); ++i) map.pixels[3 * i] = (*values)[i];
+        layers.push_back({p.panel.layer + suffix, &map, int(k) * w, true});
+      }
     const std::string key = "glossy:panel." + p.panel.layer;
     metadata.push_back({key + ".box", std::to_string(int(k) * w) + " 0 " + std::to_string(w) + " " + std::to_string(h)});
     metadata.push_back({key + ".label", p.panel.label});
+    metadata.push_back({key + ".colour", p.panel.colour});
     metadata.push_back({key + ".fit", p.panel.fit.empty() ? std::string("measured") : p.panel.fit});
     metadata.push_back({key + ".empty", int(p.empty)});
     if (!p.note.empty()) metadata.push_back({key + ".note", p.note});
@@ -301,6 +336,11 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
       metadata.push_back({error + ".E1", float(p.brdfE1)});
       metadata.push_back({error + ".E2", float(p.brdfE2)});
     }
+    if (p.maps.available) {
+      metadata.push_back({error + ".flip", float(p.maps.flip)});
+      if (p.maps.hasFlipCi) metadata.push_back({error + ".flipCi", formatted("%.6g %.6g", p.maps.flipCi.lo, p.maps.flipCi.hi)});
+    }
+    if (!p.params.empty()) metadata.push_back({key + ".params", p.params});
   }
   metadata.push_back({"glossy:panels", names});
   metadata.push_back({"glossy:panelSize", std::to_string(w) + "x" + std::to_string(h)});
@@ -310,12 +350,20 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
                                          "(cross-products of independent replicates), relativeRmseNoisy without, luminanceRatio; *Ci: 95 % "
                                          "intervals; E1, E2: the fit against the measured table on the grid ") + MetricGrid::describe()
                            : std::string("none: no measured panel")});
+  metadata.push_back({"glossy:errorMaps",
+                       formatted("<panel>_reldiff.Y: (Y_panel - Y_measured) / max(Y_measured, 0.01 mean Y_measured) over the "
+                                 "object's pixels, 0 elsewhere (Y: Rec. 709 luminance); the PNG's second row shows it clamped "
+                                 "to +/-%g. <panel>_flip.Y: HDR-FLIP (Andersson et al. 2021) of the panel against the measured "
+                                 "panel, %g pixels per degree; flip: its mean over the object's pixels (render noise included: it "
+                                 "raises the figure), flipCi: the render noise's 95 %% spread of it (jackknife over the "
+                                 "replicates); glossy:flipNoiseFloor: the same figure between two halves of the measured "
+                                 "panel's samples, what noise alone shows",
+                                 kRelativeDifferenceRange, FlipSettings{}.pixelsPerDegree)});
+  if (sheet.flipNoiseFloor >= 0.0) metadata.push_back({"glossy:flipNoiseFloor", float(sheet.flipNoiseFloor)});
   metadata.push_back({"glossy:verdict", verdictText(sheet)});
   metadata.push_back({"glossy:replicates", sheet.replicates});
   metadata.push_back({"glossy:passes", sheet.passes});
   metadata.push_back({"glossy:objectShare", float(sheet.objectShare)});
-  std::vector<ExrLayer> layers = {{"", &sheet.grid}};
-  for (size_t k = 0; k < sheet.panels.size(); ++k) layers.push_back({sheet.panels[k].panel.layer, &placed[k]});
   writeLayeredExr(path, layers, metadata, type);
 }
 
@@ -323,8 +371,11 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
   const int w = sheet.panels.front().image.width, h = sheet.panels.front().image.height;
   const int n = int(sheet.panels.size());
   const int fontSize = std::clamp(w / 13, 9, 16);
-  const int strip = 3 * fontSize + fontSize / 2 + 8;
-  OIIO::ImageBuf buf(OIIO::ImageSpec(w * n, h + strip, 3, OIIO::TypeDesc::FLOAT));
+  const int small = std::max(8, fontSize - 2);
+  const int strip = 4 * fontSize + fontSize / 2 + 10;
+  const bool mapRow = sheet.hasMeasured();
+  const int height = h + strip + (mapRow ? h : 0);
+  OIIO::ImageBuf buf(OIIO::ImageSpec(w * n, height, 3, OIIO::TypeDesc::FLOAT));
   const float stripColour[3] = {0.12f, 0.12f, 0.12f}, emptyColour[3] = {0.25f, 0.25f, 0.25f};
   OIIO::ImageBufAlgo::fill(buf, stripColour);
   const double scale = std::exp2(exposure);
@@ -342,12 +393,12 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
       }
   }
   const float white[3] = {0.95f, 0.95f, 0.95f}, grey[3] = {0.7f, 0.7f, 0.7f};
-  const int small = std::max(8, fontSize - 2);
+  const auto text = [&](const std::string& line, int x, int y, int size, OIIO::cspan<float> colour, int width) {
+    OIIO::ImageBufAlgo::render_text(buf, x, y, fitted(line, width, size, fontPath), size, fontPath, colour);
+  };
   for (int k = 0; k < n; ++k) {
     const PanelRender& p = sheet.panels[size_t(k)];
-    auto label = [&](const std::string& text, int y, int size, OIIO::cspan<float> colour) {
-      OIIO::ImageBufAlgo::render_text(buf, k * w + 3, h + y, fitted(text, w - 6, size, fontPath), size, fontPath, colour);
-    };
+    auto label = [&](const std::string& line, int y, int size, OIIO::cspan<float> colour) { text(line, k * w + 3, h + y, size, colour, w - 6); };
     std::string second;
     if (p.empty)
       second = p.panel.fit.empty() ? "no MERL data (--merl-dir)" : "no fit";
@@ -366,11 +417,58 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
     label(p.panel.label, fontSize + 2, fontSize, white);
     if (!second.empty()) label(second, 2 * fontSize + 5, small, grey);
     if (p.brdfE1 >= 0.0) label(formatted(w >= 120 ? "E1 %.3g  E2 %.3g" : "%.2g %.2g", p.brdfE1, p.brdfE2), 3 * fontSize + 7, small, grey);
+    if (p.maps.available)
+      label(p.maps.hasFlipCi ? formatted(w >= 120 ? "FLIP %.3f +/-%.3f" : "F %.3f+/-%.3f", p.maps.flip, p.maps.flipCi.halfWidth())
+                             : formatted("FLIP %.3f", p.maps.flip),
+            4 * fontSize + 9, small, grey);
+  }
+
+  // The second row: where each model is brighter (red) or darker (blue) than the measured panel.
+  if (mapRow) {
+    const int top = h + strip;
+    const float background[3] = {0.2f, 0.2f, 0.2f};
+    for (int k = 0; k < n; ++k) {
+      const PanelRender& p = sheet.panels[size_t(k)];
+      const OIIO::ROI box(k * w, (k + 1) * w, top, top + h);
+      if (p.panel.fit.empty()) {
+        // The legend, under the measured panel: a colour bar over the map's range and what it shows (not in
+        // thumbnails, where it would not be legible).
+        OIIO::ImageBufAlgo::fill(buf, stripColour, box);
+        if (w < 96 || h < 64) continue;
+        const int barLeft = k * w + w / 10, barWidth = w - w / 5, barTop = top + h / 2 - fontSize, barHeight = std::max(6, h / 12);
+        for (int x = 0; x < barWidth; ++x) {
+          const DisplayColour c = divergingColour(2.0 * (x + 0.5) / barWidth - 1.0);
+          for (int y = 0; y < barHeight; ++y) buf.setpixel(barLeft + x, barTop + y, c.data(), 3);
+        }
+        const std::string range = formatted("%.0f%%", 100.0 * kRelativeDifferenceRange);
+        text("-" + range, barLeft - 2, barTop + barHeight + small + 2, small, grey, w / 3);
+        text("0", barLeft + barWidth / 2 - small / 4, barTop + barHeight + small + 2, small, grey, w / 3);
+        text("+" + range, barLeft + barWidth - 3 * small, barTop + barHeight + small + 2, small, grey, w / 3);
+        text("luminance vs measured:", k * w + 3, top + fontSize + 2, small, white, w - 6);
+        text("(model - meas.) / meas.", k * w + 3, top + 2 * fontSize + 4, small, grey, w - 6);
+        text("darker  <  >  brighter", k * w + 3, barTop + barHeight + 2 * small + 6, small, grey, w - 6);
+        continue;
+      }
+      if (!p.maps.available) {
+        OIIO::ImageBufAlgo::fill(buf, emptyColour, box);
+        continue;
+      }
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const size_t i = size_t(y) * size_t(w) + size_t(x);
+          if (!sheet.objectMask[i]) {
+            buf.setpixel(k * w + x, top + y, background, 3);
+            continue;
+          }
+          const DisplayColour c = divergingColour(p.maps.relativeDifference[i] / kRelativeDifferenceRange);
+          buf.setpixel(k * w + x, top + y, c.data(), 3);
+        }
+    }
   }
   if (buf.has_error()) std::fprintf(stderr, "glossy: %s: labels not drawn: %s\n", path.string().c_str(), buf.geterror().c_str());
-  std::vector<unsigned char> rgb(size_t(w * n) * size_t(h + strip) * 3);
+  std::vector<unsigned char> rgb(size_t(w * n) * size_t(height) * 3);
   if (!buf.get_pixels(buf.roi(), OIIO::TypeDesc::UINT8, rgb.data())) throw std::runtime_error(path.string() + ": " + buf.geterror());
-  writeRgb8(path, w * n, h + strip, rgb);
+  writeRgb8(path, w * n, height, rgb);
 }
 
 std::string verdictText(const Sheet& sheet) {
@@ -390,7 +488,7 @@ std::string errorTable(const Sheet& sheet) {
       << formatted("%d spp in %d replicates", sheet.spp, sheet.replicates) << "\n";
   else
     s << "no measured panel (" << note << "), so no errors against it\n";
-  s << "  panel            rel. RMSE, noise-free [95 %]   luminance ratio [95 %]    noisy rRMSE   BRDF E1   BRDF E2\n";
+  s << "  panel            rel. RMSE, noise-free [95 %]   luminance ratio [95 %]    HDR-FLIP [95 %]            noisy rRMSE   BRDF E1   BRDF E2\n";
   bool clamped = false;
   for (const PanelRender& p : sheet.panels) {
     const PanelFigures& f = p.figures;
@@ -408,9 +506,12 @@ std::string errorTable(const Sheet& sheet) {
                                        : formatted("%.4f%s", f.relativeRmse, f.clamped ? "*" : "");
     const std::string l = f.hasCi ? formatted("%.4f [%.4f, %.4f]", f.luminanceRatio, f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)
                                   : formatted("%.4f", f.luminanceRatio);
+    const std::string flip = !p.maps.available ? "-"
+                             : p.maps.hasFlipCi ? formatted("%.4f [%.4f, %.4f]", p.maps.flip, p.maps.flipCi.lo, p.maps.flipCi.hi)
+                                                : formatted("%.4f", p.maps.flip);
     clamped = clamped || f.clamped;
-    s << formatted("  %-14s   %-29s  %-24s  %11.4f   %7.4f   %7.4f\n", p.panel.label.c_str(), r.c_str(), l.c_str(),
-                   f.noisyRelativeRmse, p.brdfE1, p.brdfE2);
+    s << formatted("  %-14s   %-29s  %-24s  %-25s  %11.4f   %7.4f   %7.4f\n", p.panel.label.c_str(), r.c_str(), l.c_str(),
+                   flip.c_str(), f.noisyRelativeRmse, p.brdfE1, p.brdfE2);
   }
   if (clamped) s << "  * the estimate of the squared error came out negative (the model is within the noise): shown as 0\n";
   // Say so rather than let a narrow interval pass for a precise one.
@@ -420,6 +521,10 @@ std::string errorTable(const Sheet& sheet) {
     s << formatted("  noise is up to %.0f %% of the noisy figure's square: the intervals may be too narrow; render more samples\n",
                    100.0 * share);
   if (sheet.skippedPixels > 0) s << "  " << sheet.skippedPixels << " object pixels left out: not finite in some panel\n";
+  if (sheet.flipNoiseFloor >= 0.0)
+    s << formatted("  HDR-FLIP includes render noise, which raises it; the [95 %%] is the noise's spread. Noise alone gives "
+                   "%.4f (the measured panel against itself, half its samples each)\n",
+                   sheet.flipNoiseFloor);
   if (sheet.hasMeasured()) {
     s << "  " << verdictText(sheet);
     if (sheet.verdict.models.size() > 1) s << " (not separated at 95 %: more samples, e.g. --target-error, may decide)";

@@ -16,6 +16,7 @@
 #include "materials/params/material_file.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/sheet/comparison.h"
+#include "renderer/sheet/error_maps.h"
 
 #include <filesystem>
 #include <memory>
@@ -29,6 +30,7 @@ struct SheetPanel {
   std::string layer;  // EXR layer: "measured", "microfacet_E2", ...
   std::string label;  // for people: "Measured", "Microfacet E2", ...
   std::string fit;    // MODEL:METRIC; empty for the measured panel
+  std::string colour; // "#rrggbb": the panel's colour in plots and the report (Okabe-Ito, told apart by the colour-blind)
 
   static SheetPanel measured();
   // Layer "cook_torrance_E2", label "CT E2": the model's short label (registry.h) and the metric.
@@ -38,6 +40,10 @@ struct SheetPanel {
 std::span<const SheetPanel> sheetPanels();
 
 constexpr int kReplicates = 4;
+
+// What a sheet file holds, as a number: it goes up when sheets gain layers or figures (2: the error maps and
+// HDR-ꟻLIP), so that glossy sheets renders again a sheet made before, rather than resume past it.
+constexpr int kSheetFormat = 2;
 
 struct SheetSettings {
   int width = 256, height = 256;  // per panel
@@ -80,6 +86,8 @@ struct PanelRender {
   std::vector<RgbImage> replicates;  // independent estimates of the image, each from spp / replicates samples
   PanelFigures figures;              // against the measured panel (figures.compared false when there is none)
   double brdfE1 = -1.0, brdfE2 = -1.0;  // the fit's E1, E2 against the measured table (docs/fitting.md); < 0: none
+  ErrorMaps maps;                    // against the measured panel (maps.available false when there is none)
+  std::string params;                // the fit's parameters as in its file, "kd = [...]; ks = [...]; ..."; empty: none
 };
 
 struct Sheet {
@@ -95,6 +103,7 @@ struct Sheet {
   double objectShare = 0.0;         // of the paths: reached the object, where the panels part ways
   Verdict verdict;                  // indices into panels
   size_t skippedPixels = 0;         // object pixels left out of the figures: not finite
+  double flipNoiseFloor = -1.0;     // ꟻLIP of the measured panel's two halves (error_maps.h); < 0: none
   const PanelRender* measured() const;  // null when the grid has no measured panel
   bool hasMeasured() const { return measured() && !measured()->empty; }
 };
@@ -104,10 +113,14 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
                   const std::string& measuredNote, const SheetSettings& settings);
 
 // The EXR: default RGB layer = the grid; layer <panel>.R/G/B = that panel at its place in the grid (black
-// elsewhere: EXR layers share one size); glossy:* metadata including each panel's box and figures.
+// elsewhere: EXR layers share one size); for each analytic panel with maps, <panel>_reldiff.Y and
+// <panel>_flip.Y at the same place (error_maps.h); glossy:* metadata including each panel's box, figures and
+// parameters.
 void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::vector<ImageAttribute> metadata, PixelType type);
 // The preview: panels × 2^exposure, sRGB, with a label strip under each (name, error figures or why it is
-// empty). fontPath empty: OIIO's default font search.
+// empty); when the sheet has a measured panel, a second row of each model's relative-difference map over the
+// object (diverging colours, ±kRelativeDifferenceRange) with the colour bar's legend under the measured panel.
+// fontPath empty: OIIO's default font search.
 void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double exposure, const std::string& fontPath);
 // "closest: Smooth E2", "tie: Smooth E2, Microfacet E2" or why there is no verdict.
 std::string verdictText(const Sheet& sheet);

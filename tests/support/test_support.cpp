@@ -20,8 +20,6 @@ std::filesystem::path sharedDir() {
 std::filesystem::path sourceDir() { return GLOSSY_SOURCE_DIR; }
 std::filesystem::path materialsDir() { return sourceDir() / "materials"; }
 
-namespace {
-
 std::string shellQuote(const std::string& s) {
   std::string q = "'";
   for (char c : s) {
@@ -32,8 +30,6 @@ std::string shellQuote(const std::string& s) {
   }
   return q + "'";
 }
-
-}  // namespace
 
 namespace {
 

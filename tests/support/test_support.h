@@ -36,6 +36,8 @@ struct RunResult {
 };
 // Runs the glossy executable with `args` (shell-quoted here) and `input` on stdin.
 RunResult runGlossy(const std::vector<std::string>& args, const std::string& input = "");
+// `s` as one word for /bin/sh: in single quotes, each ' written '\''.
+std::string shellQuote(const std::string& s);
 // The same, run in folder `cwd` with the environment variables `unset` removed.
 RunResult runGlossyIn(const std::filesystem::path& cwd, const std::vector<std::string>& unset, const std::vector<std::string>& args);
 
