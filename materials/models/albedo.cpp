@@ -1,5 +1,7 @@
 #include "materials/models/albedo.h"
 
+#include "materials/sampling/gauss_legendre.h"
+
 #include <array>
 #include <cmath>
 
@@ -10,33 +12,10 @@ namespace {
 constexpr int kNodes = 24;
 constexpr int kPanels = 64;  // [2^-64, 2^-63], …, [½, 1], plus [0, 2^-64]
 
-struct GaussLegendre {
-  std::array<double, kNodes> x, w;  // on [-1, 1]
-  GaussLegendre() {
-    for (int i = 0; i < kNodes; ++i) {
-      double z = std::cos(kPi * (i + 0.75) / (kNodes + 0.5)), dp = 0.0;
-      for (int it = 0; it < 100; ++it) {
-        double p0 = 1.0, p1 = 0.0;
-        for (int j = 1; j <= kNodes; ++j) {
-          const double p2 = p1;
-          p1 = p0;
-          p0 = ((2.0 * j - 1.0) * z * p1 - (j - 1.0) * p2) / j;
-        }
-        dp = kNodes * (z * p0 - p1) / (z * z - 1.0);
-        const double dz = p0 / dp;
-        z -= dz;
-        if (std::abs(dz) < 1e-16) break;
-      }
-      x[i] = z;
-      w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
-    }
-  }
-};
-
 }  // namespace
 
 Rgb albedoAtNormalIncidence(const Brdf& brdf) {
-  static const GaussLegendre gl;
+  static const GaussLegendre<kNodes> gl;
   const Vec3 V(0.0, 0.0, 1.0);
   Rgb sum(0.0);
   auto panel = [&](double a, double b) {

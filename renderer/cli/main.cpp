@@ -42,8 +42,10 @@ int main(int argc, char** argv) {
   CLI::App app{"glossy " GLOSSY_VERSION ": render and compare glossy BRDF models (Löw et al. 2012) with measured data"};
   app.set_version_flag("--version", std::string(GLOSSY_VERSION));
   app.require_subcommand(1);
-  std::vector<cli::Command> commands = {cli::addErrorCommand(app), cli::addEvalCommand(app), cli::addFitCommand(app), cli::addImportCommand(app), cli::addListCommand(app), cli::addRenderCommand(app),
-                                           cli::addSampleCommand(app), cli::addSheetCommand(app), cli::addSheetsCommand(app)};
+  std::vector<cli::Command> commands = {cli::addErrorCommand(app),  cli::addEvalCommand(app),   cli::addFitCommand(app),
+                                        cli::addImportCommand(app), cli::addListCommand(app),   cli::addPlotCommand(app),
+                                        cli::addRenderCommand(app), cli::addSampleCommand(app),
+                                        cli::addSheetCommand(app),  cli::addSheetsCommand(app)};
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,93 @@
+// glossy plot: a material's BRDFs as figures — θ_h slices, image slices with the log-ratio to measured data,
+// directional albedo, in-plane polar lobes — each as SVG, PNG and the CSV of its numbers, indexed by
+// plots.json (renderer/plot/, docs/plots.md).
+#include "materials/core/input_error.h"
+#include "materials/core/notes.h"
+#include "materials/params/material_file.h"
+#include "renderer/cli/brdf_options.h"
+#include "renderer/cli/command.h"
+#include "renderer/cli/destination.h"
+#include "renderer/plot/figures.h"
+#include "renderer/plot/plot_output.h"
+#include "renderer/plot/svg_to_png.h"
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+
+namespace glossy::cli {
+
+namespace {
+
+struct PlotOptions {
+  std::string material, measured, channel = "luminance", polarScale = "log";
+  std::vector<std::string> figures;  // kinds to draw; empty: all
+  std::filesystem::path merlDir, out;
+};
+
+int runPlot(const PlotOptions& o) {
+  using namespace plot;
+  checkOutputFolder(o.out, "-o");
+  const MaterialFile m = loadMaterialFile(o.material);
+  // The measured data as the sheets find it: --measured, else the file's own under --merl-dir,
+  // $GLOSSY_MERL_DIR or the working folder, else the network embedded beside the material file.
+  const std::optional<std::filesystem::path> path =
+      o.measured.empty() ? resolveMeasured(m.measured, o.merlDir, m.path.parent_path())
+                         : std::optional(findMeasured(o.measured, o.merlDir));
+  std::shared_ptr<const MerlTable> table;
+  std::string label;
+  if (path) {
+    table = loadMeasured(*path);
+    label = measuredLabel(*path);
+  } else {
+    label = m.measured.empty() ? "none (the material names no measured data)"
+                               : "none (no " + m.measured + " in --merl-dir or $GLOSSY_MERL_DIR)";
+  }
+  const Channel channel = o.channel == "R" ? Channel::R : o.channel == "G" ? Channel::G : o.channel == "B" ? Channel::B : Channel::Luminance;
+  const PlotSet set = makePlotSet(m, table, label, channel);
+  const auto rsvg = findRsvgConvert();
+  if (!rsvg) note("rsvg-convert is not on PATH: writing the SVGs only; PNGs need librsvg2-bin");
+  if (!table) note(m.name + ": no measured data, so no log-ratio images: " + label);
+  flushNotes();
+
+  auto wanted = [&](const std::string& kind) {
+    return o.figures.empty() || std::find(o.figures.begin(), o.figures.end(), kind) != o.figures.end();
+  };
+  std::vector<PlotFigure> figures;
+  if (wanted("theta_h")) figures.push_back(thetaHFigure(set));
+  if (wanted("image_slice"))
+    for (PlotFigure& f : imageSliceFigures(set)) figures.push_back(std::move(f));
+  if (wanted("albedo")) figures.push_back(albedoFigure(set));
+  if (wanted("polar")) figures.push_back(polarFigure(set, o.polarScale == "linear" ? RadialScale::Linear : RadialScale::Log));
+  writePlots(o.out, set, figures, rsvg);
+  std::cerr << "glossy: wrote " << figures.size() << (figures.size() == 1 ? " figure of " : " figures of ") << m.name << " to "
+            << o.out.string() << " (plots.json)\n";
+  return 0;
+}
+
+}  // namespace
+
+Command addPlotCommand(CLI::App& parent) {
+  auto o = std::make_shared<PlotOptions>();
+  CLI::App* app = parent.add_subcommand("plot",
+      "Plot a material's fits and its measured data: θh slices, θh×θd image slices with the log-ratio to measured, "
+      "directional albedo, in-plane polar lobes; SVG, PNG (with rsvg-convert) and the CSV of every curve, indexed by "
+      "DIR/plots.json (docs/plots.md)");
+  app->add_option("--material", o->material, "Material parameter file (TOML)")->required();
+  app->add_option("--measured", o->measured,
+                  "Measured data instead of the file's own: a MERL .binary (or .binary.xz) table or a .nbrdf network");
+  app->add_option("--merl-dir", o->merlDir, "Folder with MERL tables (else $GLOSSY_MERL_DIR)");
+  app->add_option("-o,--out", o->out, "Output folder (created if missing)")->required();
+  app->add_option("--channel", o->channel, "Which channel to plot: R, G, B or luminance (Rec. 709)")
+      ->check(CLI::IsMember({"R", "G", "B", "luminance"}))
+      ->capture_default_str();
+  app->add_option("--figures", o->figures, "Only these kinds of figure (default: all): theta_h, image_slice, albedo, polar")
+      ->check(CLI::IsMember({"theta_h", "image_slice", "albedo", "polar"}))
+      ->delimiter(',');
+  app->add_option("--polar-scale", o->polarScale, "Radius of the polar lobes: log (decades) or linear")
+      ->check(CLI::IsMember({"log", "linear"}))
+      ->capture_default_str();
+  return {app, [o] { return runPlot(*o); }};
+}
+
+}  // namespace glossy::cli

@@ -1,0 +1,43 @@
+#include "renderer/plot/plot_output.h"
+
+#include "materials/core/atomic_file.h"
+#include "renderer/plot/svg_to_png.h"
+
+#include <nlohmann/json.hpp>
+
+namespace glossy::plot {
+
+namespace {
+
+constexpr double kPngZoom = 1.5;  // 1.5 px per SVG unit: sharp text in documents and on screens
+
+}  // namespace
+
+void writePlots(const std::filesystem::path& dir, const PlotSet& set, const std::vector<PlotFigure>& figures,
+                const std::optional<std::filesystem::path>& rsvgConvert) {
+  std::filesystem::create_directories(dir);
+  nlohmann::ordered_json index;
+  index["material"] = set.material;
+  index["measured"] = set.measuredLabel;
+  index["channel"] = channelName(set.channel);
+  index["figures"] = nlohmann::ordered_json::array();
+  for (const PlotFigure& f : figures) {
+    const std::filesystem::path svg = dir / (f.name + ".svg"), csv = dir / (f.name + ".csv"), png = dir / (f.name + ".png");
+    writeFileAtomically(svg, f.svg);
+    writeFileAtomically(csv, f.csv);
+    if (rsvgConvert) svgToPng(*rsvgConvert, svg, png, kPngZoom);
+    std::string caption;
+    for (const std::string& p : f.caption) caption.append(caption.empty() ? "" : " ").append(p);
+    nlohmann::ordered_json entry;
+    entry["kind"] = f.kind;
+    entry["title"] = f.title;
+    entry["caption"] = caption;
+    entry["svg"] = svg.filename().string();
+    entry["png"] = rsvgConvert ? nlohmann::ordered_json(png.filename().string()) : nlohmann::ordered_json(nullptr);
+    entry["csv"] = csv.filename().string();
+    index["figures"].push_back(entry);
+  }
+  writeFileAtomically(dir / "plots.json", index.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
+}
+
+}  // namespace glossy::plot

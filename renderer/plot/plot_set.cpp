@@ -1,0 +1,106 @@
+#include "renderer/plot/plot_set.h"
+
+#include <cmath>
+
+namespace glossy::plot {
+
+std::string channelName(Channel c) {
+  switch (c) {
+    case Channel::R: return "R";
+    case Channel::G: return "G";
+    case Channel::B: return "B";
+    default: return "luminance";
+  }
+}
+
+CurveStyle PlotBrdf::style() const {
+  CurveStyle s;
+  s.colour = panel.colour.empty() ? "#999999" : panel.colour;
+  s.width = isMeasured ? 2.2 : 1.6;
+  // E1 fits dashed: the pairs of one model stay apart in print and for readers who confuse the colours.
+  if (!isMeasured && panel.fit.ends_with(":E1")) s.dash = "7 4";
+  return s;
+}
+
+Vec3 asEvalReads(const Vec3& d) { return d / std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z); }
+
+const PlotBrdf* PlotSet::measured() const {
+  for (const PlotBrdf& b : brdfs)
+    if (b.isMeasured && b.present) return &b;
+  return nullptr;
+}
+
+std::vector<const PlotBrdf*> PlotSet::present() const {
+  std::vector<const PlotBrdf*> out;
+  for (const PlotBrdf& b : brdfs)
+    if (b.present) out.push_back(&b);
+  return out;
+}
+
+double PlotSet::value(const PlotBrdf& b, const Vec3& printedL, const Vec3& printedV) const {
+  const Vec3 L = asEvalReads(printedL), V = asEvalReads(printedV);
+  Rgb rho(0.0);
+  if (b.table) {
+    if (L.z > 0.0 && V.z > 0.0 && !b.table->valid(MerlTable::binOf(L, V).index())) return std::nan("");
+    rho = b.table->eval(L, V);
+  } else if (b.fit) {
+    rho = eval(*b.fit, L, V);
+  } else {
+    return std::nan("");
+  }
+  switch (channel) {
+    case Channel::R: return rho.r;
+    case Channel::G: return rho.g;
+    case Channel::B: return rho.b;
+    default: return luminance(rho);
+  }
+}
+
+std::string PlotSet::sourceLine() const {
+  return "Material " + material + "; channel " + channelName(channel) + "; measured data: " + measuredLabel + ".";
+}
+
+std::string PlotSet::fitsLine() const {
+  std::string drawn, absent;
+  for (const PlotBrdf& b : brdfs) {
+    if (b.isMeasured) continue;
+    std::string& list = b.present ? drawn : absent;
+    list.append(list.empty() ? "" : ", ").append(b.panel.label);
+  }
+  std::string s = "Fits (Löw et al. 2012; E1/E2 the metric each was fitted under): " + (drawn.empty() ? std::string("none") : drawn);
+  if (!absent.empty()) s += "; not in the file: " + absent;
+  return s + ".";
+}
+
+std::vector<LegendEntry> PlotSet::legend() const {
+  std::vector<LegendEntry> out;
+  for (const PlotBrdf& b : brdfs) out.push_back({b.panel.label, b.style(), b.present, b.note});
+  return out;
+}
+
+PlotSet makePlotSet(const MaterialFile& material, std::shared_ptr<const MerlTable> measured, const std::string& measuredNote,
+                    Channel channel) {
+  PlotSet set;
+  set.material = material.name;
+  set.channel = channel;
+  set.measuredLabel = measuredNote;
+  PlotBrdf m{SheetPanel::measured(), true, measured != nullptr, measured ? "" : "no data", std::nullopt, measured};
+  set.brdfs.push_back(std::move(m));
+  auto addFit = [&](const SheetPanel& panel) {
+    const Fit* fit = material.find(FitId::parse(panel.fit, material.path.string()));
+    PlotBrdf b{panel, false, fit != nullptr, fit ? "" : "not in the file", std::nullopt, nullptr};
+    if (fit) b.fit = makeBrdf(*fit);
+    set.brdfs.push_back(std::move(b));
+  };
+  for (const SheetPanel& panel : sheetPanels())
+    if (!panel.fit.empty()) addFit(panel);
+  // Fits beyond the grid (glossy fit may add microfacet:E1, smooth:E1), in the file's order.
+  for (const Fit& fit : material.fits) {
+    bool inGrid = false;
+    for (const SheetPanel& panel : sheetPanels()) inGrid = inGrid || panel.fit == fit.id.str();
+    if (!inGrid) addFit(SheetPanel::ofFit(fit.id));
+  }
+  return set;
+}
+
+}  // namespace glossy::plot

@@ -1,0 +1,63 @@
+// What glossy plot draws: a material's BRDFs in the sheet's order and colours (renderer/sheet/sheet.h,
+// sheetPanels(): Measured, then the six fits of the supplement's grid, then any other fit the file holds),
+// each present or absent with the reason, and the one channel plotted (R, G, B or luminance). Every figure
+// evaluates through value(), so its curves, its CSV and `glossy eval` see the same numbers.
+#pragma once
+
+#include "materials/merl/merl_table.h"
+#include "materials/models/brdf.h"
+#include "materials/params/material_file.h"
+#include "renderer/plot/chart.h"
+#include "renderer/sheet/sheet.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace glossy::plot {
+
+enum class Channel { R, G, B, Luminance };
+// "R", "G", "B", "luminance"
+std::string channelName(Channel c);
+
+struct PlotBrdf {
+  SheetPanel panel;
+  bool isMeasured = false;
+  bool present = false;
+  std::string note;                          // why it is absent; empty when present
+  std::optional<Brdf> fit;                   // an analytic fit, when present
+  std::shared_ptr<const MerlTable> table;    // the measured data, when present
+  CurveStyle style() const;                  // the panel's colour; E1 fits dashed, measured heavier
+};
+
+struct PlotSet {
+  std::string material;        // the material's name
+  std::string measuredLabel;   // the data source ("MERL (NBRDF reconstruction) FILE"), or why there is none
+  Channel channel = Channel::Luminance;
+  std::vector<PlotBrdf> brdfs;  // measured first, then the fits, in the sheet's order
+
+  const PlotBrdf* measured() const;  // null when absent
+  std::vector<const PlotBrdf*> present() const;
+  // The plotted channel of ρ(L, V) (1/sr), as `glossy eval` computes it from this L and V (normalising them); NaN where the measured table has
+  // no data (an unmeasured bin), 0 below the horizon.
+  double value(const PlotBrdf& b, const Vec3& L, const Vec3& V) const;
+  // "alum-bronze · luminance · Measured: MERL (NBRDF reconstruction) alum-bronze.binary.xz": the caption's
+  // last line, naming material, channel and data source.
+  std::string sourceLine() const;
+  // The fits drawn, "Microfacet E2, Smooth E2, …" and those absent.
+  std::string fitsLine() const;
+  std::vector<LegendEntry> legend() const;
+};
+
+// `d` divided by its length, as `glossy eval` divides what it reads. Not idempotent in the last bit (a
+// vector can flip between two roundings), so value() applies it once to the very pair the CSV prints, as
+// eval does: the same bits reach the lookup, which matters on MERL's bin edges, where the slices sit
+// (φ_d = 90°, θ_d = 30°, …) and one rounding picks the neighbouring bin.
+Vec3 asEvalReads(const Vec3& d);
+
+// `measured` null: no measured data, `measuredNote` says why.
+PlotSet makePlotSet(const MaterialFile& material, std::shared_ptr<const MerlTable> measured, const std::string& measuredNote,
+                    Channel channel);
+
+}  // namespace glossy::plot
