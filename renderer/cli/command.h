@@ -26,6 +26,7 @@ Command addImportCommand(CLI::App& parent);
 Command addListCommand(CLI::App& parent);
 Command addPlotCommand(CLI::App& parent);
 Command addRenderCommand(CLI::App& parent);
+Command addReportCommand(CLI::App& parent);
 Command addSampleCommand(CLI::App& parent);
 Command addSheetCommand(CLI::App& parent);
 Command addSheetsCommand(CLI::App& parent);

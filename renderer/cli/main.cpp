@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   std::vector<cli::Command> commands = {cli::addErrorCommand(app),  cli::addEvalCommand(app),   cli::addFitCommand(app),
                                         cli::addImportCommand(app), cli::addListCommand(app),   cli::addPlotCommand(app),
-                                        cli::addRenderCommand(app), cli::addSampleCommand(app),
+                                        cli::addRenderCommand(app), cli::addReportCommand(app), cli::addSampleCommand(app),
                                         cli::addSheetCommand(app),  cli::addSheetsCommand(app)};
 
   try {

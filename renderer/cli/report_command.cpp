@@ -1,0 +1,53 @@
+// glossy report: a static, offline HTML site over a folder of sheets and their plots
+// (renderer/report/report_site.h; docs/report.md).
+#include "renderer/cli/command.h"
+#include "renderer/cli/destination.h"
+#include "renderer/report/report_site.h"
+
+#include <cstdio>
+#include <memory>
+
+namespace glossy::cli {
+
+namespace {
+
+struct ReportCliOptions {
+  std::string sheetsDir, plotsDir, site = "out/report";
+  std::vector<std::string> plotKinds;
+  bool noPlotData = false;
+};
+
+int runReport(const ReportCliOptions& o) {
+  report::ReportOptions options;
+  options.sheetsDir = o.sheetsDir;
+  if (!o.plotsDir.empty()) options.plotsDir = std::filesystem::path(o.plotsDir);
+  options.site = o.site;
+  options.plotKinds = o.plotKinds;
+  options.plotData = !o.noPlotData;
+  std::filesystem::path parent = std::filesystem::absolute(o.site).lexically_normal();
+  if (!parent.has_filename()) parent = parent.parent_path();
+  checkOutputFolder(parent.parent_path(), "-o");
+  const report::ReportResult r = report::writeReport(options);
+  std::fprintf(stderr, "glossy: wrote %s/index.html: %zu materials, %zu images, %zu plot files\n", o.site.c_str(), r.materials, r.images,
+               r.plots);
+  return 0;
+}
+
+}  // namespace
+
+Command addReportCommand(CLI::App& parent) {
+  auto o = std::make_shared<ReportCliOptions>();
+  CLI::App* app = parent.add_subcommand("report",
+      "Make a static HTML site of a folder of sheets (from glossy sheets) and optionally their plots (from glossy plot): "
+      "an index of every material and model's error figures, sortable and filterable, and a page per material with its "
+      "sheet, a compare view, the figures, the fit parameters and the plots. Self-contained: it works from file:// offline.");
+  app->add_option("SHEETS_DIR", o->sheetsDir, "Folder of sheets: NAME.exr and NAME.png from glossy sheets")->required();
+  app->add_option("PLOTS_DIR", o->plotsDir, "Folder of plots: PLOTS_DIR/NAME/plots.json from glossy plot (optional)");
+  app->add_option("-o,--output", o->site, "The site's folder (replaces an earlier report there)")->capture_default_str();
+  app->add_option("--plot-kinds", o->plotKinds, "Only the plots of these kinds (theta_h, image_slice, albedo, polar); default: all")
+      ->delimiter(',');
+  app->add_flag("--no-plot-data", o->noPlotData, "Copy each plot's picture only, not its SVG and CSV (a lighter site)");
+  return {app, [o] { return runReport(*o); }};
+}
+
+}  // namespace glossy::cli

@@ -1,0 +1,307 @@
+// glossy report (renderer/report/): the site it writes from a folder of sheets — every page's images and
+// links resolve inside the site, the panel images match the sheet's own PNG, the figures are the EXR's,
+// strings from files are escaped, the per-model summary counts right — and the bad input it refuses before
+// writing anything. The same site in a real browser: tests/report/browser_test.py (CTest Report.Browser).
+#include "renderer/image/exr_image.h"
+#include "renderer/report/html_text.h"
+#include "renderer/report/model_summary.h"
+#include "renderer/report/sheet_record.h"
+#include "tests/support/test_support.h"
+
+#include <OpenImageIO/imagebuf.h>
+
+#include <regex>
+#include <set>
+
+namespace glossy::test {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Two tiny sheets, rendered once for the suite.
+const fs::path& sheetsDir() {
+  static TempDir tmp;
+  static const fs::path dir = [] {
+    std::vector<std::string> args{"sheets", (materialsDir() / "alum-bronze.toml").string(), (materialsDir() / "chrome.toml").string(),
+                                  "--width", "32", "--height", "32", "--spp", "8", "--seed", "1", "-o", (tmp / "sheets").string()};
+    if (fs::is_directory(sharedDir() / "merl")) args.insert(args.end(), {"--merl-dir", (sharedDir() / "merl").string()});
+    const RunResult r = runGlossy(args);
+    if (r.status != 0) throw std::runtime_error("glossy sheets failed: " + r.err);
+    return tmp / "sheets";
+  }();
+  return dir;
+}
+
+void copySheets(const fs::path& to) {
+  fs::create_directories(to);
+  for (const auto& e : fs::directory_iterator(sheetsDir())) fs::copy_file(e.path(), to / e.path().filename());
+}
+
+RunResult report(const fs::path& sheets, const fs::path& site, const std::string& plots = "") {
+  std::vector<std::string> args{"report", sheets.string()};
+  if (!plots.empty()) args.push_back(plots);
+  args.insert(args.end(), {"-o", site.string()});
+  return runGlossy(args);
+}
+
+std::vector<fs::path> pages(const fs::path& site) {
+  std::vector<fs::path> out;
+  for (const auto& e : fs::recursive_directory_iterator(site))
+    if (e.path().extension() == ".html") out.push_back(e.path());
+  return out;
+}
+
+// Every src= and href= of a page, as written.
+std::vector<std::string> references(const std::string& html) {
+  std::vector<std::string> refs;
+  static const std::regex ref(R"([ ](?:src|href|data-src|data-measured-src)="([^"]*)\")");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), ref); it != std::sregex_iterator(); ++it) refs.push_back((*it)[1]);
+  return refs;
+}
+
+}  // namespace
+
+TEST(ReportCli, EveryImageAndLinkOfEveryPageIsInTheSite) {
+  TempDir tmp;
+  const RunResult r = report(sheetsDir(), tmp / "site");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const fs::path site = tmp / "site";
+  ASSERT_TRUE(fs::is_regular_file(site / "index.html"));
+  EXPECT_TRUE(fs::is_regular_file(site / "assets/style.css"));
+  EXPECT_TRUE(fs::is_regular_file(site / "assets/report.js"));
+  const std::vector<fs::path> all = pages(site);
+  EXPECT_EQ(all.size(), 3u);  // the index and two materials
+  std::set<fs::path> images;
+  for (const fs::path& page : all) {
+    const std::string html = readText(page);
+    EXPECT_EQ(html.find("http://"), std::string::npos) << page;  // nothing from the network
+    EXPECT_EQ(html.find("https://"), std::string::npos) << page;
+    for (const std::string& ref : references(html)) {
+      if (ref.starts_with("data:")) continue;
+      EXPECT_EQ(ref.find(".."), ref.starts_with("../../") ? 0u : std::string::npos) << page << ": " << ref;
+      const fs::path target = (page.parent_path() / ref).lexically_normal();
+      EXPECT_TRUE(fs::is_regular_file(target)) << page << " refers to " << ref << ", which is not in the site";
+      EXPECT_TRUE(target.string().starts_with(site.string())) << ref;
+      if (ref.ends_with(".png")) images.insert(target);
+    }
+  }
+  // Per material: the sheet and its seven panels (the index's thumbnails are measured panels).
+  EXPECT_EQ(images.size(), 2u * 8u);
+  const std::string index = readText(site / "index.html");
+  for (const char* name : {"alum-bronze", "chrome"}) {
+    EXPECT_NE(index.find("href=\"materials/" + std::string(name) + "/index.html\""), std::string::npos) << name;
+    const RgbImage panel = readRgbImage(site / "materials" / name / "panel-measured.png");
+    EXPECT_EQ(panel.width, 32);
+    EXPECT_EQ(panel.height, 32);
+  }
+}
+
+TEST(ReportCli, PanelImagesAreTheSheetPngsPanels) {
+  TempDir tmp;
+  ASSERT_EQ(report(sheetsDir(), tmp / "site").status, 0);
+  const report::SheetRecord sheet = report::readSheetRecord(sheetsDir() / "chrome.exr");
+  const RgbImage png = readRgbImage(sheetsDir() / "chrome.png");
+  for (const report::PanelRecord& p : sheet.panels) {
+    const RgbImage panel = readRgbImage(tmp / "site/materials/chrome" / ("panel-" + p.layer + ".png"));
+    ASSERT_EQ(panel.width, p.width);
+    double worst = 0.0;
+    for (int y = 0; y < p.height; ++y)
+      for (int x = 0; x < p.width; ++x)
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, double(std::abs(panel.at(x, y)[c] - png.at(p.x + x, p.y + y)[c])));
+    EXPECT_LE(worst, 1.0 / 255.0 + 1e-6) << p.layer << ": differs from the sheet's PNG";
+  }
+}
+
+TEST(ReportCli, TheIndexShowsTheSheetsFigures) {
+  TempDir tmp;
+  ASSERT_EQ(report(sheetsDir(), tmp / "site").status, 0);
+  const std::string index = readText(tmp / "site/index.html");
+  const report::SheetRecord sheet = report::readSheetRecord(sheetsDir() / "alum-bronze.exr");
+  const report::PanelRecord* ct = sheet.panel("cook_torrance_E2");
+  ASSERT_TRUE(ct && ct->relativeRmse.value && ct->e2);
+  const std::string value = readImageAttribute(sheetsDir() / "alum-bronze.exr", "glossy:error.cook_torrance_E2.relativeRmse");
+  EXPECT_NEAR(*ct->relativeRmse.value, std::stod(value), 1e-5 * std::abs(std::stod(value)));  // the text has 6 digits
+  EXPECT_NE(index.find("data-value=\"" + report::sortValue(ct->relativeRmse.value) + "\""), std::string::npos);
+  EXPECT_NE(index.find("data-value=\"" + report::sortValue(ct->e2) + "\""), std::string::npos);
+  EXPECT_NE(index.find(report::escapeHtml(sheet.verdict)), std::string::npos);
+  // Where the measured data came from, without the files' paths: a reconstruction says so on the index too.
+  EXPECT_NE(index.find("Measured data: MERL (NBRDF reconstruction) (2 materials)."), std::string::npos);
+  const std::string page = readText(tmp / "site/materials/alum-bronze/index.html");
+  EXPECT_NE(page.find(report::shortNumber(ct->relativeRmse.lo)), std::string::npos);  // the interval
+  EXPECT_NE(page.find("CT E2"), std::string::npos);
+}
+
+TEST(ReportCli, StringsFromFilesAreEscaped) {
+  TempDir tmp;
+  copySheets(tmp / "sheets");
+  const std::string hostile = "<script>alert(\"x\")</script>&'";
+  {
+    OIIO::ImageBuf buf((tmp / "sheets/chrome.exr").string());
+    ASSERT_TRUE(buf.read(0, 0, true));
+    buf.specmod().attribute("glossy:material", hostile);
+    buf.specmod().attribute("glossy:panel.measured.note", hostile);
+    buf.specmod().attribute("glossy:panel.smooth_E2.params", hostile);
+    buf.specmod().attribute("glossy:verdict", "closest: " + hostile);
+    ASSERT_TRUE(buf.write((tmp / "sheets/evil.exr").string()));
+    fs::copy_file(tmp / "sheets/chrome.png", tmp / "sheets/evil.png");
+  }
+  fs::create_directories(tmp / "plots/evil");
+  fs::copy_file(tmp / "sheets/chrome.png", tmp / "plots/evil/p.png");
+  writeText(tmp / "plots/evil/plots.json",
+            R"({"material": "evil", "measured": "<img src=x onerror=alert(1)>", "figures": [{"kind": "polar", "title": "<i>t</i>", "caption": "<b>c</b>", "png": "p.png"}]})");
+  const RunResult r = report(tmp / "sheets", tmp / "site", (tmp / "plots").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const fs::path& page : pages(tmp / "site")) {
+    const std::string html = readText(page);
+    EXPECT_EQ(html.find("<script>alert"), std::string::npos) << page;
+    EXPECT_EQ(html.find("<img src=x"), std::string::npos) << page;
+    EXPECT_EQ(html.find("<i>t</i>"), std::string::npos) << page;
+    EXPECT_EQ(html.find("<b>c</b>"), std::string::npos) << page;
+  }
+  const std::string page = readText(tmp / "site/materials/evil/index.html");
+  EXPECT_NE(page.find("&lt;script&gt;alert(&quot;x&quot;)&lt;/script&gt;&amp;&#39;"), std::string::npos);
+  EXPECT_NE(page.find("&lt;img src=x onerror=alert(1)&gt;"), std::string::npos);
+  EXPECT_TRUE(fs::is_regular_file(tmp / "site/materials/evil/plots/p.png"));
+}
+
+TEST(ReportCli, PlotsAreCopiedLinkedAndFiltered) {
+  TempDir tmp;
+  const fs::path plots = tmp / "plots/chrome";
+  fs::create_directories(plots);
+  for (const char* kind : {"theta_h", "polar"}) {
+    fs::copy_file(sheetsDir() / "chrome.png", plots / (std::string(kind) + ".png"));
+    writeText(plots / (std::string(kind) + ".svg"), "<svg xmlns=\"http://www.w3.org/2000/svg\"/>");
+    writeText(plots / (std::string(kind) + ".csv"), "x,y\n0,1\n");
+  }
+  writeText(plots / "plots.json", R"({"material": "chrome", "figures": [
+      {"kind": "theta_h", "title": "Theta-h slices", "caption": "cap", "png": "theta_h.png", "svg": "theta_h.svg", "csv": "theta_h.csv"},
+      {"kind": "polar", "title": "Polar lobes", "caption": "cap", "png": "polar.png", "svg": "polar.svg", "csv": "polar.csv"}]})");
+  ASSERT_EQ(report(sheetsDir(), tmp / "all", (tmp / "plots").string()).status, 0);
+  const std::string all = readText(tmp / "all/materials/chrome/index.html");
+  for (const char* file : {"theta_h.png", "theta_h.svg", "theta_h.csv", "polar.png", "polar.svg", "polar.csv"}) {
+    EXPECT_TRUE(fs::is_regular_file(tmp / "all/materials/chrome/plots" / file)) << file;
+    EXPECT_NE(all.find("plots/" + std::string(file)), std::string::npos) << file;
+  }
+  EXPECT_NE(all.find("Polar lobes"), std::string::npos);
+  EXPECT_NE(readText(tmp / "all/materials/alum-bronze/index.html").find("No plots for this material"), std::string::npos);
+
+  const RunResult r = runGlossy({"report", sheetsDir().string(), (tmp / "plots").string(), "--plot-kinds", "theta_h", "--no-plot-data",
+                                 "-o", (tmp / "lean").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string lean = readText(tmp / "lean/materials/chrome/index.html");
+  EXPECT_TRUE(fs::is_regular_file(tmp / "lean/materials/chrome/plots/theta_h.png"));
+  for (const char* file : {"theta_h.svg", "theta_h.csv", "polar.png", "polar.svg", "polar.csv"}) {
+    EXPECT_FALSE(fs::exists(tmp / "lean/materials/chrome/plots" / file)) << file;
+    EXPECT_EQ(lean.find("plots/" + std::string(file)), std::string::npos) << file;
+  }
+  EXPECT_EQ(lean.find("Polar lobes"), std::string::npos);
+}
+
+TEST(ReportCli, ReplacesAnEarlierReportAndLeavesItWhenTheInputIsBad) {
+  TempDir tmp;
+  copySheets(tmp / "sheets");
+  ASSERT_EQ(report(tmp / "sheets", tmp / "site").status, 0);
+  writeText(tmp / "site/stale.txt", "from before");
+  fs::remove(tmp / "sheets/chrome.exr");
+  fs::remove(tmp / "sheets/chrome.png");
+  const RunResult again = report(tmp / "sheets", tmp / "site/");
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_FALSE(fs::exists(tmp / "site/stale.txt"));
+  EXPECT_FALSE(fs::exists(tmp / "site/materials/chrome"));
+  EXPECT_TRUE(fs::exists(tmp / "site/materials/alum-bronze/index.html"));
+  for (const auto& e : fs::directory_iterator(tmp.path())) EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+
+  // A corrupt sheet: refused, naming it, and the site stays as it was.
+  const std::string before = readText(tmp / "site/index.html");
+  writeText(tmp / "sheets/broken.exr", "not an EXR at all");
+  writeText(tmp / "sheets/broken.png", "");
+  expectOneLineError(report(tmp / "sheets", tmp / "site"), "broken.exr");
+  EXPECT_EQ(readText(tmp / "site/index.html"), before);
+  // Cut short: the header reads, the pixels do not.
+  fs::remove(tmp / "sheets/broken.exr");
+  fs::remove(tmp / "sheets/broken.png");
+  const std::string whole = readText(sheetsDir() / "chrome.exr");
+  writeText(tmp / "sheets/short.exr", whole.substr(0, whole.size() * 2 / 3));
+  fs::copy_file(sheetsDir() / "chrome.png", tmp / "sheets/short.png");
+  expectOneLineError(report(tmp / "sheets", tmp / "site"), "short.exr");
+  EXPECT_EQ(readText(tmp / "site/index.html"), before);
+  for (const auto& e : fs::directory_iterator(tmp.path())) EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+TEST(ReportCli, BadInputIsRefusedBeforeWriting) {
+  TempDir tmp;
+  expectOneLineError(report(tmp / "missing", tmp / "site"), "missing");
+  fs::create_directories(tmp / "empty");
+  expectOneLineError(report(tmp / "empty", tmp / "site"), "holds no sheets");
+  copySheets(tmp / "sheets");
+  writeText(tmp / "file", "x");
+  expectOneLineError(report(tmp / "sheets", tmp / "file"), "is a file");
+  fs::create_directories(tmp / "other");
+  writeText(tmp / "other/precious.txt", "keep me");
+  expectOneLineError(report(tmp / "sheets", tmp / "other"), "not replacing it");
+  EXPECT_EQ(readText(tmp / "other/precious.txt"), "keep me");
+  expectOneLineError(report(tmp / "sheets", tmp / "site", (tmp / "no-plots").string()), "no-plots");
+  // plots.json naming a file outside its folder, or missing.
+  fs::create_directories(tmp / "plots/chrome");
+  writeText(tmp / "plots/chrome/plots.json", R"({"figures": [{"kind": "polar", "png": "../../file"}]})");
+  expectOneLineError(report(tmp / "sheets", tmp / "site", (tmp / "plots").string()), "not a plain file name");
+  writeText(tmp / "plots/chrome/plots.json", R"({"figures": [{"kind": "polar", "png": "absent.png"}]})");
+  expectOneLineError(report(tmp / "sheets", tmp / "site", (tmp / "plots").string()), "absent.png");
+  writeText(tmp / "plots/chrome/plots.json", R"({"figures": [)");
+  expectOneLineError(report(tmp / "sheets", tmp / "site", (tmp / "plots").string()), "plots.json");
+  fs::remove_all(tmp / "plots");
+  // A sheet whose PNG is missing, or whose name is not a material name.
+  fs::remove(tmp / "sheets/chrome.png");
+  expectOneLineError(report(tmp / "sheets", tmp / "site"), "chrome.png");
+  fs::copy_file(tmp / "sheets/alum-bronze.png", tmp / "sheets/chrome.png");
+  fs::copy_file(tmp / "sheets/chrome.exr", tmp / "sheets/bad name<x>.exr");
+  expectOneLineError(report(tmp / "sheets", tmp / "site"), "bad name<x>.exr");
+  EXPECT_FALSE(fs::exists(tmp / "site"));
+}
+
+TEST(ReportSummary, CountsClosestAndTiesApartAndTakesMedians) {
+  auto sheet = [](const std::string& name, const std::string& verdict, double a, std::optional<double> b) {
+    report::SheetRecord s;
+    s.name = name;
+    s.verdict = verdict;
+    report::PanelRecord m;
+    m.layer = "measured", m.label = "Measured", m.fit = "measured";
+    report::PanelRecord pa;
+    pa.layer = "smooth_E2", pa.label = "Smooth E2", pa.fit = "smooth:E2";
+    pa.relativeRmse.value = a;
+    report::PanelRecord pb;
+    pb.layer = "cook_torrance_E2", pb.label = "CT E2", pb.fit = "cook-torrance:E2";
+    pb.relativeRmse.value = b;
+    s.panels = {m, pa, pb};
+    return s;
+  };
+  const std::vector<report::SheetRecord> sheets = {sheet("a", "closest: Smooth E2", 0.1, 0.3), sheet("b", "tie: Smooth E2, CT E2", 0.2, 0.2),
+                                                   sheet("c", "closest: CT E2", 0.4, std::nullopt), sheet("d", "no measured panel", 0.3, 0.5)};
+  EXPECT_EQ(sheets[1].closestLayers(), (std::vector<std::string>{"smooth_E2", "cook_torrance_E2"}));
+  EXPECT_TRUE(sheets[1].isTie());
+  EXPECT_TRUE(sheets[3].closestLayers().empty());
+  const std::vector<report::ModelSummary> s = report::summarizeModels(sheets);
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[0].layer, "smooth_E2");
+  EXPECT_EQ(s[0].closest, 1);
+  EXPECT_EQ(s[0].ties, 1);
+  EXPECT_EQ(s[0].compared, 4);
+  EXPECT_DOUBLE_EQ(*s[0].medianRelativeRmse, 0.25);
+  EXPECT_EQ(s[1].closest, 1);
+  EXPECT_EQ(s[1].ties, 1);
+  EXPECT_EQ(s[1].compared, 3);
+  EXPECT_DOUBLE_EQ(*s[1].medianRelativeRmse, 0.3);
+  EXPECT_FALSE(s[0].medianFlip.has_value());
+  EXPECT_FALSE(report::median({}).has_value());
+}
+
+TEST(ReportHtml, EscapesAndFormats) {
+  EXPECT_EQ(report::escapeHtml("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
+  EXPECT_EQ(report::shortNumber(std::nullopt), "–");
+  EXPECT_EQ(report::shortNumber(0.123456), "0.123");
+  EXPECT_EQ(report::sortValue(std::nullopt), "");
+  EXPECT_EQ(report::sortValue(std::numeric_limits<double>::quiet_NaN()), "");
+}
+
+}  // namespace glossy::test
