@@ -96,7 +96,8 @@ void checkCsvsAgainstEval(const std::filesystem::path& dir, const std::map<std::
 
 // The log-ratio column is log10 of the two columns beside it.
 void checkLogRatios(const std::filesystem::path& dir) {
-  for (const auto& f : readIndex(dir)["figures"]) {
+  const nlohmann::json index = readIndex(dir);  // kept alive: a range-for over a temporary's member dangles
+  for (const auto& f : index["figures"]) {
     if (f["kind"] != "image_slice") continue;
     const auto rows = readCsv(dir / std::string(f["csv"]));
     for (const Row& r : rows) {
