@@ -15,10 +15,12 @@
 // its square (the derivative kernels' positive and negative lobes to ±1 each), with image edges clamped:
 // what flip-evaluator does, so that its means can be matched to 1e-3. Everything runs in float, as there.
 // The code is deliberately plain: whole-image planes, one loop per stage, std::cbrt and std::pow. The one
-// speed layer left is the filters' inner loop (weightedSum), written for vector registers, because it
-// alone buys more than 5 % of a high-dynamic-range sheet's time; docs/flip.md has the measurements,
-// and the layers that were tried and dropped.
+// speed layer left is the filters' inner loop (weightedSum), written for vector registers, the only layer
+// that clears the project's bar for speed layers on a sheet's time; docs/flip.md has the measurements, and
+// docs/performance.md the layers that were tried and dropped.
 #include "renderer/image/flip.h"
+
+#include "materials/core/types.h"
 
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
@@ -33,8 +35,6 @@
 namespace glossy {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // The papers' constants: colour-difference exponent and the knee of its mapping to [0,1] (40 % of the
 // largest difference maps to 0.95), the feature detectors' width in degrees and their exponent.
@@ -55,7 +55,7 @@ constexpr Csf kAchromatic{1.0, 0.0047, 0.0, 1e-5}, kRedGreen{1.0, 0.0053, 0.0, 1
 
 // ---- Colour spaces ----
 
-struct Vec3 {
+struct Float3 {  // colours in float, as flip-evaluator computes them
   float x, y, z;
 };
 
@@ -91,7 +91,7 @@ struct Affine {
       offset[i] = float(shift[i]);
     }
   }
-  Vec3 operator()(const Vec3& v) const {
+  Float3 operator()(const Float3& v) const {
     return {m[0][0] * v.x + m[0][1] * v.y + m[0][2] * v.z + offset[0], m[1][0] * v.x + m[1][1] * v.y + m[1][2] * v.z + offset[1],
             m[2][0] * v.x + m[2][1] * v.y + m[2][2] * v.z + offset[2]};
   }
@@ -107,8 +107,8 @@ struct ColourSpaces {
 float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }  // NaN → 0
 
 // Hunt-adjusted CIELAB (L, 0.01 L a, 0.01 L b) of a linear RGB colour in [0,1].
-Vec3 huntLab(const Vec3& rgb, const Affine& rgbToXyzOverWhite) {
-  const Vec3 t = rgbToXyzOverWhite(rgb);
+Float3 huntLab(const Float3& rgb, const Affine& rgbToXyzOverWhite) {
+  const Float3 t = rgbToXyzOverWhite(rgb);
   auto f = [](float v) {
     constexpr float delta = 6.0f / 29.0f;
     return v > delta * delta * delta ? std::cbrt(v) : v / (3.0f * delta * delta) + 4.0f / 29.0f;
@@ -118,7 +118,7 @@ Vec3 huntLab(const Vec3& rgb, const Affine& rgbToXyzOverWhite) {
   return {l, 0.01f * l * (500.0f * (fx - fy)), 0.01f * l * (200.0f * (fy - fz))};
 }
 
-float hyab(const Vec3& p, const Vec3& q) {
+float hyab(const Float3& p, const Float3& q) {
   const float da = p.y - q.y, db = p.z - q.z;
   return std::fabs(p.x - q.x) + std::sqrt(da * da + db * db);
 }
@@ -306,7 +306,7 @@ Opponent toneMappedYcxcz(const RgbImage& image, float multiplier) {
   const Affine& toYcxcz = colourSpaces().rgbToYcxcz;
   for (size_t i = 0; i < o.y.v.size(); ++i) {
     const float* p = &image.pixels[3 * i];
-    const Vec3 c = toYcxcz({toneMap(p[0] * multiplier), toneMap(p[1] * multiplier), toneMap(p[2] * multiplier)});
+    const Float3 c = toYcxcz({toneMap(p[0] * multiplier), toneMap(p[1] * multiplier), toneMap(p[2] * multiplier)});
     o.y.v[i] = c.x, o.cx.v[i] = c.y, o.cz.v[i] = c.z;
     o.lightness.v[i] = (c.x + 16.0f) / 116.0f;
   }
@@ -326,7 +326,7 @@ Opponent csfFiltered(const Opponent& in, const Kernels& k) {
 Plane colourDifference(const Opponent& a, const Opponent& b) {
   const ColourSpaces& cs = colourSpaces();
   auto lab = [&](const Opponent& o, size_t i) {
-    const Vec3 rgb = cs.ycxczToRgb({o.y.v[i], o.cx.v[i], o.cz.v[i]});
+    const Float3 rgb = cs.ycxczToRgb({o.y.v[i], o.cx.v[i], o.cz.v[i]});
     return huntLab({clamp01(rgb.x), clamp01(rgb.y), clamp01(rgb.z)}, cs.rgbToXyzOverWhite);
   };
   const float cmax = cs.maxDifference, knee = kKneeFraction * cmax;

@@ -8,6 +8,7 @@
 #include "materials/core/frame.h"
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "materials/models/warp.h"
 #include "materials/sampling/bilinear_patch.h"
 #include "materials/sampling/nested_grid.h"
 #include "materials/sampling/unit_interval.h"
@@ -318,9 +319,9 @@ Environment::Sample constantSample(const Rgb& radiance, const Vec3& normal, Vec2
   const double r = std::sqrt(clampUnit(u.x)), phi = 2.0 * kPi * u.y;
   if (CosineBins::bin(normal) != CosineBins::kUnweighted) {
     const Frame frame(glm::normalize(normal));
-    const double z = std::sqrt(std::max(0.0, 1.0 - r * r));
-    if (!(z > 0.0)) return {frame.n, radiance, 0.0};
-    const Vec3 dir = frame.toWorld(Vec3(r * std::cos(phi), r * std::sin(phi), z));
+    const Vec3 local = diskToCosineHemisphere({r * std::cos(phi), r * std::sin(phi)});
+    if (!(local.z > 0.0)) return {frame.n, radiance, 0.0};
+    const Vec3 dir = frame.toWorld(local);
     // The density as pdf() computes it from the direction, so that the two agree to the bit.
     return {dir, radiance, std::max(0.0, glm::dot(frame.n, dir)) * kInvPi};
   }

@@ -24,8 +24,8 @@ class Environment {
     double pdf;  // solid angle; 0 = invalid
   };
 
-  // The largest map: at most 2^28 texels (16384 × 16384, or 32768 × 8192: 4.9 GB at the 18 bytes a texel a
-  // map costs), and at most 65536 on a side (OpenImageIO's reading buffer holds whole rows). Checked on the
+  // The largest map: at most 2^28 texels (16384 × 16384, or 32768 × 8192: gigabytes, at what a texel costs
+  // with its sampling tables, docs/performance.md), and at most 65536 on a side (OpenImageIO's reading buffer holds whole rows). Checked on the
   // header, before anything is allocated, so that a file claiming more (which a few bytes of header can)
   // is refused as bad input instead of exhausting memory.
   static constexpr std::int64_t kMaxTexels = std::int64_t(1) << 28;

@@ -24,7 +24,7 @@ class EnvironmentLight final : public Light {
   void sample(const Receiver* at, const Vec2* u, const int* lanes, int n, LightSample* out) const override {
     bool want[Environment::kMaxBatch] = {};
     if (!mask(lanes, n, want)) return Light::sample(at, u, lanes, n, out);
-    Vec3 normals[Environment::kMaxBatch];
+    Vec3 normals[Environment::kMaxBatch] = {};  // zeroed: only the wanted lanes are read, which GCC cannot see
     for (int k = 0; k < n; ++k) normals[lanes[k]] = at[lanes[k]].normal;
     Environment::Sample samples[Environment::kMaxBatch];
     environment_.sample(want, normals, u, samples, lanes[n - 1] + 1);
@@ -37,7 +37,7 @@ class EnvironmentLight final : public Light {
   void arriving(const Vec3* dirs, const Receiver* from, const int* lanes, int n, Rgb* radiance, double* pdf) const override {
     bool want[Environment::kMaxBatch] = {};
     if (!mask(lanes, n, want)) return Light::arriving(dirs, from, lanes, n, radiance, pdf);
-    Vec3 normals[Environment::kMaxBatch];
+    Vec3 normals[Environment::kMaxBatch] = {};  // zeroed: only the wanted lanes are read, which GCC cannot see
     for (int k = 0; k < n; ++k) normals[lanes[k]] = from[lanes[k]].normal;
     environment_.radianceAndPdf(want, normals, dirs, radiance, pdf, lanes[n - 1] + 1);
   }
