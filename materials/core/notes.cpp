@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 namespace glossy {
@@ -11,6 +12,11 @@ namespace {
 std::mutex& lock() {
   static std::mutex m;
   return m;
+}
+
+bool& keptForTaking() {
+  static bool kept = false;
+  return kept;
 }
 
 std::vector<std::string>& pending() {
@@ -27,6 +33,7 @@ void note(std::string line) {
 
 void flushNotes() {
   std::lock_guard guard(lock());
+  if (keptForTaking()) return;
   for (const std::string& line : pending()) std::fprintf(stderr, "glossy: %s\n", line.c_str());
   std::fflush(stderr);
   pending().clear();
@@ -35,6 +42,16 @@ void flushNotes() {
 void discardNotes() {
   std::lock_guard guard(lock());
   pending().clear();
+}
+
+std::vector<std::string> takeNotes() {
+  std::lock_guard guard(lock());
+  return std::exchange(pending(), {});
+}
+
+void keepNotesForTaking() {
+  std::lock_guard guard(lock());
+  keptForTaking() = true;
 }
 
 }  // namespace glossy

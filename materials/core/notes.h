@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace glossy {
 
@@ -14,5 +15,10 @@ void note(std::string line);
 void flushNotes();
 // Forgets the queued lines (the run failed on bad input: its error is the one line).
 void discardNotes();
+// Hands the queued lines over, without "glossy: ", and forgets them: for a caller that tells the user its own
+// way (the Python module turns them into warnings).
+std::vector<std::string> takeNotes();
+// From now on flushNotes() keeps the lines queued for takeNotes(): the Python module's notes are warnings.
+void keepNotesForTaking();
 
 }  // namespace glossy

@@ -1,6 +1,7 @@
 // glossy eval: BRDF values for direction pairs read from stdin (shared/spec/interfaces.md).
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "materials/core/unit_direction.h"
 #include "materials/models/brdf.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
@@ -27,11 +28,8 @@ std::pair<Vec3, Vec3> parseDirections(const std::string& line, size_t number) {
   if (v && v->size() > 6) throw InputError(where + ": trailing text after 6 numbers in '" + line + "'");
   if (!v || v->size() != 6) throw InputError(where + ": expected 6 comma-separated numbers Lx,Ly,Lz,Vx,Vy,Vz, got '" + line + "'");
   Vec3 L((*v)[0], (*v)[1], (*v)[2]), V((*v)[3], (*v)[4], (*v)[5]);
-  for (Vec3* d : {&L, &V}) {
-    const double len = std::sqrt(d->x * d->x + d->y * d->y + d->z * d->z);
-    if (!std::isfinite(len) || len == 0.0) throw InputError(where + ": a direction is zero or not finite");
-    *d /= len;
-  }
+  for (Vec3* d : {&L, &V})
+    if (!makeUnitDirection(*d)) throw InputError(where + ": a direction is zero or not finite");
   return {L, V};
 }
 

@@ -65,6 +65,7 @@ int runSingle(const FitOptions& o) {
   if (!o.output.empty()) checkOutputFile(o.output, "-o", {".toml"}, Folder::Exist);
   const std::filesystem::path tablePath = findMeasured(o.measured, o.merlDir);
   const Metric metric = parseMetric(o.metrics[0], "--metric");
+  requireFittable(o.models[0]);
   // Validate the output file before the (slow) fit.
   MaterialFile material = loadOrStart(std::filesystem::path(o.output), tablePath);
   const auto table = loadMeasured(tablePath);

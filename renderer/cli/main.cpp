@@ -9,33 +9,6 @@
 #include <iostream>
 #include <vector>
 
-namespace glossy::cli {
-
-std::filesystem::path defaultMaterialsDir() {
-  std::error_code ec;
-  if (std::filesystem::is_directory("materials", ec) && std::filesystem::exists("materials/alum-bronze.toml", ec))
-    return "materials";
-  return std::filesystem::path(GLOSSY_SOURCE_DIR) / "materials";
-}
-
-std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>& paths) {
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for (const std::string& p : paths.empty() ? std::vector<std::string>{defaultMaterialsDir().string()} : paths) {
-    if (!std::filesystem::is_directory(p, ec)) {
-      files.emplace_back(p);
-      continue;
-    }
-    for (const auto& e : std::filesystem::directory_iterator(p))
-      if (e.path().extension() == ".toml") files.push_back(e.path());
-  }
-  std::sort(files.begin(), files.end());
-  files.erase(std::unique(files.begin(), files.end()), files.end());
-  return files;
-}
-
-}  // namespace glossy::cli
-
 int main(int argc, char** argv) {
   using namespace glossy;
   removeTemporariesOnSignal();  // an interrupted write leaves no NAME.exr.tmp.* behind

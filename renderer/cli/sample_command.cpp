@@ -2,6 +2,7 @@
 // weight, so that anyone can check the sampler (shared/spec/interfaces.md).
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "materials/core/unit_direction.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
 #include "renderer/cli/output.h"
@@ -25,10 +26,9 @@ struct SampleOptions {
 Vec3 parseDirection(const std::string& text) {
   const auto v = parseNumberList(text);
   if (!v || v->size() != 3) throw InputError("--wo: '" + text + "' is not x,y,z");
-  const Vec3 d((*v)[0], (*v)[1], (*v)[2]);
-  const double len = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-  if (!std::isfinite(len) || len == 0.0) throw InputError("--wo: '" + text + "' is zero or not finite");
-  return d / len;
+  Vec3 d((*v)[0], (*v)[1], (*v)[2]);
+  if (!makeUnitDirection(d)) throw InputError("--wo: '" + text + "' is zero or not finite");
+  return d;
 }
 
 int runSample(const SampleOptions& o) {

@@ -5,6 +5,7 @@
 #include "materials/core/text.h"
 #include "renderer/camera/auto_camera.h"
 #include "renderer/cli/command.h"
+#include "renderer/util/data_dir.h"
 
 #include <cmath>
 
@@ -39,7 +40,7 @@ void SceneOptions::addTo(CLI::App* app) {
 }
 
 std::string SceneOptions::scenePath() const {
-  return scene.empty() ? (std::filesystem::path(GLOSSY_SOURCE_DIR) / "scenes/preview.gltf").string() : scene;
+  return scene.empty() ? (dataDir() / "scenes/preview.gltf").string() : scene;
 }
 
 Environment SceneOptions::environment() const {

@@ -36,6 +36,10 @@ bool isFinite(const Rgb& c) { return std::isfinite(c.r) && std::isfinite(c.g) &&
 
 }  // namespace
 
+uint64_t renderTiles(int width, int height) {
+  return uint64_t((width + kTile - 1) / kTile) * uint64_t((height + kTile - 1) / kTile);
+}
+
 RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSettings& settings, RenderStats& stats) {
   return std::move(renderPanels({&scene, 1}, camera, settings, stats).front());
 }
@@ -102,6 +106,7 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
 
     for (int ty = tiles.rows().begin(); ty < tiles.rows().end(); ++ty)
       for (int tx = tiles.cols().begin(); tx < tiles.cols().end(); ++tx) {
+        if (settings.control && settings.control->cancelRequested()) return;
         const int x0 = tx * kTile, y0 = ty * kTile;
         const int tileWidth = std::min(settings.width, x0 + kTile) - x0;
         const int count = tileWidth * (std::min(settings.height, y0 + kTile) - y0);
@@ -164,6 +169,7 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
             for (int c = 0; c < 3; ++c) px[c] = float(std::min(mean[c], double(std::numeric_limits<float>::max())));
           }
         progress.advance();
+        if (settings.control) settings.control->done.fetch_add(1, std::memory_order_relaxed);
       }
     dropped += localDropped;
     objectPaths += localObjectPaths;

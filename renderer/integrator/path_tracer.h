@@ -8,6 +8,7 @@
 #include "renderer/image/exr_image.h"
 #include "renderer/lights/environment.h"
 #include "renderer/scene/embree_scene.h"
+#include "renderer/util/job_control.h"
 
 #include <cstdint>
 #include <span>
@@ -34,7 +35,13 @@ struct RenderSettings {
   bool cosineBrdfSampling = false;
   // One path at a time (path_reference.cpp) instead of waves: the same image, bit for bit, more slowly.
   bool reference = false;
+  // Optional: counts each finished tile in `done` and stops early, leaving the image unfinished, when
+  // cancelled. The caller owns it and sets its total (renderTiles).
+  JobControl* control = nullptr;
 };
+
+// How many tiles an image of this size is rendered in: what JobControl::done counts per image.
+uint64_t renderTiles(int width, int height);
 
 // What the integrator needs of a scene, built once: the BVH, the BRDF of each scene material, the
 // environment (may be null). Its other lights are the scene's emissive triangles.

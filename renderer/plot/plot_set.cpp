@@ -1,5 +1,7 @@
 #include "renderer/plot/plot_set.h"
 
+#include "materials/core/unit_direction.h"
+
 #include <cmath>
 
 namespace glossy::plot {
@@ -22,7 +24,11 @@ CurveStyle PlotBrdf::style() const {
   return s;
 }
 
-Vec3 asEvalReads(const Vec3& d) { return d / std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z); }
+Vec3 asEvalReads(const Vec3& d) {
+  Vec3 unit = d;
+  makeUnitDirection(unit);  // the plots' directions are finite and non-zero
+  return unit;
+}
 
 const PlotBrdf* PlotSet::measured() const {
   for (const PlotBrdf& b : brdfs)

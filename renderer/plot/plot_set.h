@@ -50,10 +50,10 @@ struct PlotSet {
   std::vector<LegendEntry> legend() const;
 };
 
-// `d` divided by its length, as `glossy eval` divides what it reads. Not idempotent in the last bit (a
-// vector can flip between two roundings), so value() applies it once to the very pair the CSV prints, as
-// eval does: the same bits reach the lookup, which matters on MERL's bin edges, where the slices sit
-// (φ_d = 90°, θ_d = 30°, …) and one rounding picks the neighbouring bin.
+// `d` as `glossy eval` reads it (makeUnitDirection: divided by its length unless it is unit to a few ulps).
+// value() applies it to the very pair the CSV prints, as eval does: the same bits reach the lookup, which
+// matters on MERL's bin edges, where the slices sit (φ_d = 90°, θ_d = 30°, …) and one rounding picks the
+// neighbouring bin.
 Vec3 asEvalReads(const Vec3& d);
 
 // `measured` null: no measured data, `measuredNote` says why.

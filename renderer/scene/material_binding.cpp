@@ -1,6 +1,7 @@
 #include "renderer/scene/material_binding.h"
 
 #include "materials/core/input_error.h"
+#include "renderer/util/data_dir.h"
 
 namespace glossy {
 
@@ -9,7 +10,7 @@ namespace {
 std::filesystem::path findMaterialFile(const std::string& name, const std::filesystem::path& sceneDir) {
   const std::filesystem::path p = name;
   std::error_code ec;
-  for (const auto& candidate : {sceneDir / p, p, std::filesystem::path(GLOSSY_SOURCE_DIR) / p})
+  for (const auto& candidate : {sceneDir / p, p, dataDir() / p})
     if (std::filesystem::is_regular_file(candidate, ec)) return candidate;
   return sceneDir / p;  // let the loader report it, naming the path
 }

@@ -227,14 +227,18 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     figures = m && !m->empty ? compareToMeasured(analytic, m->replicates, sheet.objectMask) : Comparison{};
     widest = figures.widestHalfWidth();
   };
+  if (settings.control && settings.secondsPerPanel <= 0.0 && settings.targetError <= 0.0 && !scenes.empty())
+    settings.control->total = uint64_t(sheet.replicates) * renderTiles(w, h);
   for (int n; !scenes.empty() && (n = plan.next(done, sheet.seconds, lastPass, widest, noisy())) > 0;) {
     const auto passStart = std::chrono::steady_clock::now();
     for (int j = 0; j < sheet.replicates; ++j) {
       RenderSettings r{.width = w, .height = h, .spp = n, .firstSample = sheet.replicates * done + j * n,
                        .maxDepth = settings.maxDepth, .lightSamples = settings.lightSamples, .seed = settings.seed, .threads = settings.threads,
-                       .progress = settings.progress && settings.secondsPerPanel <= 0.0 && settings.targetError <= 0.0};
+                       .progress = settings.progress && settings.secondsPerPanel <= 0.0 && settings.targetError <= 0.0,
+                       .control = settings.control};
       RenderStats stats;
       const std::vector<RgbImage> images = renderPanels(scenes, *scene.camera, r, stats);
+      if (settings.control && settings.control->cancelRequested()) throw Cancelled();
       sheet.droppedSamples += stats.droppedSamples;
       objectPaths += stats.objectPaths;
       const double wOld = double(done) / (done + n), wNew = double(n) / (done + n);

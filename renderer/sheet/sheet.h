@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <memory>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,14 @@ struct SheetSettings {
   int lightSamples = RenderSettings{}.lightSamples;  // at a path's first vertex
   bool progress = true;
   std::vector<SheetPanel> panels{sheetPanels().begin(), sheetPanels().end()};
+  // Optional (path_tracer.h): the tiles of every pass; its total is set when the passes are known up front
+  // (a fixed --spp). Cancelled: renderSheet stops between tiles and throws Cancelled.
+  JobControl* control = nullptr;
+};
+
+// renderSheet stopped because its JobControl was cancelled.
+struct Cancelled : std::runtime_error {
+  Cancelled() : std::runtime_error("cancelled") {}
 };
 
 // What every panel shares.

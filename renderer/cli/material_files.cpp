@@ -1,0 +1,32 @@
+// Which material files a command reads: the library, or the files and folders given (command.h).
+#include "renderer/cli/command.h"
+#include "renderer/util/data_dir.h"
+
+#include <algorithm>
+
+namespace glossy::cli {
+
+std::filesystem::path defaultMaterialsDir() {
+  std::error_code ec;
+  if (std::filesystem::is_directory("materials", ec) && std::filesystem::exists("materials/alum-bronze.toml", ec))
+    return "materials";
+  return dataDir() / "materials";
+}
+
+std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>& paths) {
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const std::string& p : paths.empty() ? std::vector<std::string>{defaultMaterialsDir().string()} : paths) {
+    if (!std::filesystem::is_directory(p, ec)) {
+      files.emplace_back(p);
+      continue;
+    }
+    for (const auto& e : std::filesystem::directory_iterator(p))
+      if (e.path().extension() == ".toml") files.push_back(e.path());
+  }
+  std::sort(files.begin(), files.end());
+  files.erase(std::unique(files.begin(), files.end()), files.end());
+  return files;
+}
+
+}  // namespace glossy::cli

@@ -1,0 +1,69 @@
+#include "renderer/cli/render_job.h"
+
+#include "materials/core/notes.h"
+#include "materials/models/registry.h"
+#include "renderer/cli/brdf_options.h"
+
+namespace glossy::cli {
+
+RenderedImage renderImage(const RenderJob& job) {
+  const std::string scenePath = job.scene.scenePath();
+  const SceneDescription description = loadGltf(scenePath);
+
+  std::optional<BrdfChoice> override = job.brdf;
+  int measuredInvalidBins = -1;
+  std::string measuredLabelText;
+  if (!override && !job.measured.empty()) {
+    const std::filesystem::path path = findMeasured(job.measured, job.merlDir);
+    auto table = loadMeasured(path);
+    measuredInvalidBins = int(table->invalidBins());
+    measuredLabelText = measuredLabel(path);
+    override = BrdfChoice{Measured{std::move(table)}, path.string(), "measured"};
+  } else if (!override && !job.material.empty()) {
+    override = brdfFromMaterialFile(job.material, job.fit);
+  }
+
+  MaterialBinding binding = bindMaterials(description, override);
+  const Environment environment = job.scene.environment();
+  const EmbreeScene bvh(description);
+  const Brdf defaultBrdf = override ? override->brdf : Lambertian{Rgb(0.5)};
+  const RenderScene scene{&description, &bvh, std::move(binding.brdfs), defaultBrdf, &environment};
+
+  RenderSettings settings = job.settings;
+  const Camera camera = job.scene.cameraOf(description, double(settings.width) / double(settings.height));
+  settings.cosineBrdfSampling = job.brdfSampling == "cosine";
+  if (settings.control) settings.control->total = renderTiles(settings.width, settings.height);
+  flushNotes();  // the input is good: what loading it noted comes before the (long) render
+
+  RenderedImage out;
+  out.image = render(scene, camera, settings, out.stats);
+
+  std::string materialText = override ? override->material : "";
+  if (!override)
+    for (const auto& b : binding.bindings) materialText += (materialText.empty() ? "" : "; ") + b;
+  out.metadata = {
+      {"glossy:material", materialText.empty() ? std::string("scene base colours") : materialText},
+      {"glossy:fit", override ? override->fit : binding.commonFit.empty() ? std::string("per scene binding") : binding.commonFit},
+      {"glossy:spp", settings.spp},
+      // EXR has no unsigned attribute: seeds beyond int's range are written as their decimal text.
+      settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(settings.seed)}
+                                           : ImageAttribute{"glossy:seed", std::to_string(settings.seed)},
+      {"glossy:maxDepth", settings.maxDepth},
+      {"glossy:lightSamples", settings.lightSamples},
+      {"glossy:brdfSampling", job.brdfSampling},
+      {"glossy:scene", scenePath},
+      {"glossy:env", environment.description()},
+      {"glossy:smoothFresnel", binding.smoothFresnel},
+      {"glossy:conventions", modelConventions()},
+      {"glossy:droppedSamples", int(std::min<uint64_t>(out.stats.droppedSamples, uint64_t(INT32_MAX)))},
+      {"glossy:renderSeconds", float(out.stats.seconds)},
+      {"glossy:version", std::string(GLOSSY_VERSION)},
+  };
+  if (measuredInvalidBins >= 0) {
+    out.metadata.push_back({"glossy:measuredInvalidBins", measuredInvalidBins});
+    out.metadata.push_back({"glossy:measured", measuredLabelText});
+  }
+  return out;
+}
+
+}  // namespace glossy::cli

@@ -1,0 +1,110 @@
+#include "renderer/cli/sheet_job.h"
+
+#include "materials/core/notes.h"
+#include "materials/core/text.h"
+#include "materials/models/registry.h"
+#include "renderer/cli/brdf_options.h"
+#include "renderer/cli/sheet_resume.h"
+#include "renderer/scene/material_binding.h"
+
+#include <chrono>
+
+namespace glossy::cli {
+
+namespace {
+
+constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+
+// The measured data of a material: --measured, else the file's `measured` under --merl-dir, $GLOSSY_MERL_DIR
+// or the working folder, else the network embedded beside the material file (resolveMeasured); the note
+// says which. Returns null with a note saying where to get the data when there is none.
+std::shared_ptr<const MerlTable> measuredOf(const MaterialFile& m, const SheetJob& o, const std::string& explicitPath,
+                                            std::string& note) {
+  const std::optional<std::filesystem::path> path = explicitPath.empty()
+                                                        ? resolveMeasured(m.measured, o.merlDir, m.path.parent_path())
+                                                        : findMeasured(explicitPath, o.merlDir);
+  if (!path) {
+    note = m.measured.empty() ? "the material names no measured data"
+                              : "no " + m.measured + " in --merl-dir or $GLOSSY_MERL_DIR: get the MERL BRDF database "
+                                "(Matusik et al. 2003) and point --merl-dir at it";
+    return nullptr;
+  }
+  note = measuredLabel(*path);
+  return loadMeasured(*path);
+}
+
+}  // namespace
+
+std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetJob& o, const std::string& explicitMeasured) {
+  const std::optional<std::filesystem::path> measured = explicitMeasured.empty()
+                                                            ? resolveMeasured(m.measured, o.merlDir, m.path.parent_path())
+                                                            : std::optional(std::filesystem::path(explicitMeasured));
+  const SheetSettings& s = o.settings;
+  return "scene=" + stage.description.source.string() + "; env=" + stage.environment.description() +
+         "; spp=" + std::to_string(s.spp) + "; time=" + formatted("%.17g", s.secondsPerPanel) +
+         "; targetError=" + formatted("%.17g", s.targetError) + "; size=" + std::to_string(s.width) + "x" +
+         std::to_string(s.height) + "; seed=" + std::to_string(s.seed) + "; maxDepth=" + std::to_string(s.maxDepth) +
+         "; lightSamples=" + std::to_string(s.lightSamples) +
+         "; half=" + (o.half ? "1" : "0") + "; exposure=" + formatted("%.17g", o.exposure) +
+         "; measured=" + (measured ? measured->string() : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
+         contentDigest(m.path) + "; version=" + GLOSSY_VERSION + "; format=" + std::to_string(kSheetFormat);
+}
+
+namespace {
+
+std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& stage, const SheetJob& o, const Sheet& sheet,
+                                          double seconds, const std::string& explicitMeasured) {
+  std::string smoothFresnel;  // as the file's smooth fits say, like render's for its binding
+  for (const PanelRender& p : sheet.panels) {
+    const Fit* fit = p.empty || p.panel.fit.empty() ? nullptr : m.find(FitId::parse(p.panel.fit, m.path.string()));
+    const std::string f = fit ? smoothFresnelOf(*fit) : "";
+    if (!f.empty() && smoothFresnel.find(f) == std::string::npos) smoothFresnel.append(smoothFresnel.empty() ? "" : ", ").append(f);
+  }
+  return {
+      {"glossy:material", m.path.string()},
+      {"glossy:fit", std::string("sheet")},
+      {"glossy:measured", sheet.measured()->note},
+      {"glossy:spp", std::to_string(sheet.spp)},
+      {"glossy:secondsPerPanel", float(o.settings.secondsPerPanel)},
+      {"glossy:targetError", float(o.settings.targetError)},
+      o.settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(o.settings.seed)}
+                                             : ImageAttribute{"glossy:seed", std::to_string(o.settings.seed)},
+      {"glossy:maxDepth", o.settings.maxDepth},
+      {"glossy:lightSamples", o.settings.lightSamples},
+      {"glossy:scene", stage.description.source.string()},
+      {"glossy:env", stage.environment.description()},
+      {"glossy:smoothFresnel", smoothFresnel.empty() ? std::string("projected") : smoothFresnel},
+      {"glossy:conventions", modelConventions()},
+      {"glossy:pngExposure", float(o.exposure)},
+      {"glossy:droppedSamples", int(std::min<uint64_t>(sheet.droppedSamples, INT32_MAX))},
+      {"glossy:renderSeconds", float(seconds)},
+      {"glossy:version", std::string(GLOSSY_VERSION)},
+      {kSettingsAttribute, sheetSettings(m, stage, o, explicitMeasured)},
+  };
+}
+
+}  // namespace
+
+MadeSheet makeMaterialSheet(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
+                            const std::string& explicitMeasured) {
+  MadeSheet made{loadMaterialFile(materialPath), explicitMeasured, {}, 0.0};
+  std::string note;
+  const auto measured = measuredOf(made.material, job, explicitMeasured, note);
+  flushNotes();  // the input is good: what loading it noted comes before the (long) render
+  const auto start = std::chrono::steady_clock::now();
+  const SheetScene scene = makeSheetScene(stage.description, stage.bvh, stage.environment, stage.camera);
+  made.sheet = renderSheet(scene, made.material, measured, note, job.settings);
+  made.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return made;
+}
+
+void writeSheetFiles(const MadeSheet& made, const Stage& stage, const SheetJob& job, const std::filesystem::path& exr) {
+  if (exr.has_parent_path()) std::filesystem::create_directories(exr.parent_path());
+  const std::filesystem::path png = std::filesystem::path(exr).replace_extension(".png");
+  // The PNG first: glossy sheets keeps a sheet only once its EXR, written last, is whole (sheet_resume.h).
+  writeSheetPng(made.sheet, png, job.exposure, std::filesystem::exists(kFont) ? kFont : "");
+  writeSheetExr(made.sheet, exr, sheetMetadata(made.material, stage, job, made.sheet, made.seconds, made.explicitMeasured),
+                job.half ? PixelType::Half : PixelType::Float);
+}
+
+}  // namespace glossy::cli

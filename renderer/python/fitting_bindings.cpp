@@ -1,0 +1,112 @@
+// glossy.error and glossy.fit: the metrics E1 and E2 of Löw et al. 2012 and the fitter behind `glossy error`
+// and `glossy fit` (docs/fitting.md), the same numbers for the same table.
+#include "materials/core/atomic_file.h"
+#include "materials/core/input_error.h"
+#include "materials/fitting/fitter.h"
+#include "materials/params/material_name.h"
+#include "renderer/python/brdf_bindings.h"
+
+#include <pybind11/stl.h>
+
+namespace glossy::python {
+
+namespace {
+
+struct PyFit {
+  FitReport report;
+  std::string table;  // the measured file, for the fit's source line
+};
+
+const PyMeasured& tableOf(const py::handle& table) {
+  if (!py::isinstance<PyMeasured>(table))
+    throw InputError("table: expected measured data from glossy.load_merl(), not " + std::string(py::str(py::type::of(table).attr("__name__"))));
+  return table.cast<const PyMeasured&>();
+}
+
+// The parameter file a fit goes into: updated when it exists (its other fits kept), else a new one named
+// after the file, as `glossy fit -o` does.
+void saveFit(const PyFit& f, const std::string& path) {
+  MaterialFile material;
+  if (std::error_code ec; std::filesystem::exists(path, ec)) {
+    material = loadMaterialFile(path);
+  } else {
+    const std::string name = std::filesystem::path(path).stem().string();
+    checkMaterialName(name, path);
+    material = measuredMaterial(name, "glossy fit to " + std::filesystem::path(f.table).filename().string());
+  }
+  material.put(f.report.fit);
+  writeFileAtomically(path, toToml(material));
+}
+
+}  // namespace
+
+void bindFitting(py::module_& m) {
+  py::class_<PyFit, std::shared_ptr<PyFit>>(m, "Fit", "A fitted model: its parameters, its BRDF and the error E it reached.")
+      .def_property_readonly("model", [](const PyFit& f) { return f.report.fit.id.model; })
+      .def_property_readonly("metric", [](const PyFit& f) { return f.report.fit.id.metric; })
+      .def_property_readonly("error", [](const PyFit& f) { return f.report.error; }, "E under the fit's metric.")
+      .def_property_readonly("params", [](const PyFit& f) {
+             py::dict d;
+             for (const auto& [key, value] : f.report.fit.params.values()) {
+               if (const auto* x = std::get_if<double>(&value)) d[py::str(key)] = *x;
+               else if (const auto* c = std::get_if<Rgb>(&value)) d[py::str(key)] = py::make_tuple(c->r, c->g, c->b);
+               else d[py::str(key)] = std::get<std::string>(value);
+             }
+             return d;
+           })
+      .def_property_readonly("brdf", [](const PyFit& f) {
+             return std::make_shared<PyBrdf>(PyBrdf{makeBrdf(f.report.fit), f.report.fit.id.model,
+                                                    f.report.fit.id.str() + " fitted to " + f.table, f.report.fit.params});
+           })
+      .def_property_readonly("start_errors", [](const PyFit& f) { return f.report.startErrors; },
+                             "E each refined start reached, best scan point first.")
+      .def_property_readonly("seconds", [](const PyFit& f) { return f.report.seconds; })
+      .def("save", [](const PyFit& f, const py::object& path) { guarded([&] { saveFit(f, pathText(path)); }); }, py::arg("path"),
+           "Puts the fit into a material parameter file (kept fits of other models and metrics), as `glossy fit -o` does.")
+      .def("__repr__", [](const PyFit& f) {
+        return "<glossy.Fit " + f.report.fit.id.str() + " E=" + std::to_string(f.report.error) + ">";
+      });
+
+  m.def("error", [](const py::object& brdf, const py::object& table, const std::string& metric) {
+          return guarded([&] {
+            const PyMeasured& data = tableOf(table);
+            const Metric which = parseMetric(metric, "metric");
+            if (!py::isinstance<PyBrdf>(brdf)) throw InputError("brdf: expected a glossy.Brdf");
+            const Brdf b = brdf.cast<const PyBrdf&>().brdf;
+            py::gil_scoped_release noGil;
+            return MetricData(*data.table, which).error(b);
+          });
+        }, py::arg("brdf"), py::arg("table"), py::arg("metric") = "E2", R"doc(
+E of a BRDF against measured data under metric "E1" or "E2" (Löw et al. 2012, on glossy's direction grid;
+docs/fitting.md): the figure `glossy error` prints.
+)doc");
+
+  m.def("fit", [](const py::object& table, const std::string& model, const std::string& metric, int starts, int maxIterations,
+                  int threads) {
+          return guarded([&] {
+            const PyMeasured& data = tableOf(table);
+            const Metric which = parseMetric(metric, "metric");
+            requireFittable(model);
+            FitSettings settings;
+            settings.refinedStarts = checkedInt("starts", starts, 1, 64);
+            settings.maxIterations = checkedInt("max_iterations", maxIterations, 1, 10000);
+            settings.threads = checkedInt("threads", threads, 0, 256);
+            auto out = std::make_shared<PyFit>();
+            out->table = data.path;
+            {
+              py::gil_scoped_release noGil;
+              const MetricData grid(*data.table, which);
+              out->report = fitModel(grid, model, settings);
+            }
+            out->report.fit.source = "glossy fit to " + std::filesystem::path(data.path).filename().string();
+            return out;
+          });
+        }, py::arg("table"), py::arg("model") = "cook-torrance", py::arg("metric") = "E2", py::kw_only(), py::arg("starts") = 4,
+        py::arg("max_iterations") = 200, py::arg("threads") = 0, R"doc(
+Fits an analytic model to measured data under "E1" or "E2", as `glossy fit` does (the same parameters for
+the same table and settings, on any thread count): a coarse scan of the lobe's shape, then Levenberg-Marquardt
+from the best `starts` widths. Returns a glossy.Fit. Runs without the GIL; it cannot be interrupted.
+)doc");
+}
+
+}  // namespace glossy::python

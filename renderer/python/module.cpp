@@ -1,0 +1,86 @@
+// The Python module `glossy` (its compiled part, glossy._core; the package is renderer/python/glossy/):
+// the models, measured data, fitting and rendering on NumPy arrays. docs/python.md shows it at work.
+#include "materials/core/input_error.h"
+#include "materials/core/notes.h"
+#include "materials/core/text.h"
+#include "renderer/python/module_support.h"
+#include "renderer/util/data_dir.h"
+
+#include <cmath>
+
+namespace glossy::python {
+
+namespace {
+
+PyObject* gWarning = nullptr;
+
+}  // namespace
+
+PyObject* warningCategory() { return gWarning; }
+
+void warnNotes() {
+  for (const std::string& line : takeNotes())
+    if (PyErr_WarnEx(gWarning, line.c_str(), 2) != 0) throw py::error_already_set();
+}
+
+int checkedInt(const char* name, long long value, long long lo, long long hi) {
+  if (value < lo || value > hi)
+    throw InputError(formatted("%s: must be a whole number in [%lld, %lld], not '%lld'", name, lo, hi, value));
+  return int(value);
+}
+
+double checkedReal(const char* name, double value, double lo, double hi, bool loOpen) {
+  if (!std::isfinite(value) || (loOpen ? value <= lo : value < lo) || value > hi)
+    throw InputError(formatted("%s: must be a finite number in %s%g, %g], not '%s'", name, loOpen ? "(" : "[", lo, hi,
+                               formatted("%g", value).c_str()));
+  return value;
+}
+
+py::array_t<float> imageArray(RgbImage&& image) {
+  auto* pixels = new std::vector<float>(std::move(image.pixels));
+  py::capsule owner(pixels, [](void* p) { delete static_cast<std::vector<float>*>(p); });
+  const py::ssize_t h = image.height, w = image.width;
+  return py::array_t<float>({h, w, py::ssize_t(3)},
+                            {py::ssize_t(sizeof(float)) * 3 * w, py::ssize_t(sizeof(float)) * 3, py::ssize_t(sizeof(float))},
+                            pixels->data(), owner);
+}
+
+std::string pathText(const py::handle& path) {
+  if (py::isinstance<py::str>(path)) return path.cast<std::string>();
+  const py::object fspath = py::module_::import("os").attr("fspath");
+  const py::object text = fspath(path);  // TypeError for anything that is not a path
+  if (!py::isinstance<py::str>(text)) throw py::type_error("a path must be str or os.PathLike of str, not bytes");
+  return text.cast<std::string>();
+}
+
+}  // namespace glossy::python
+
+PYBIND11_MODULE(_core, m) {
+  namespace py = pybind11;
+  using namespace glossy::python;
+  m.doc() = "glossy's compiled core; use the package `glossy`, which re-exports it.";
+  glossy::keepNotesForTaking();  // notes become warnings (warnNotes), never lines on stderr
+  m.attr("__version__") = GLOSSY_VERSION;
+  m.attr("_pybind11_version") = py::make_tuple(PYBIND11_VERSION_MAJOR, PYBIND11_VERSION_MINOR, PYBIND11_VERSION_PATCH);
+
+  // Bad input: the command line's one-line message, which names the file or the argument.
+  static py::exception<glossy::InputError> inputError(m, "InputError", PyExc_ValueError);
+  inputError.doc() = "Bad input: a missing or malformed file, or an argument out of range. The message is the line "
+                     "`glossy` prints for the same input, naming the file or the argument.";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const glossy::InputError& e) {
+      PyErr_SetString(inputError.ptr(), e.what());
+    }
+  });
+  static py::exception<void> warning(m, "GlossyWarning", PyExc_UserWarning);
+  warning.doc() = "What `glossy` notes on stderr while it loads input, e.g. a MERL table's unmeasured bins.";
+  gWarning = warning.ptr();
+
+  m.def("_set_data_dir", [](const std::string& dir) { glossy::setDataDir(dir); },
+        "Where the default scene and the material library are (the wheel's glossy/data).");
+  bindBrdfs(m);
+  bindFitting(m);
+  bindRendering(m);
+}

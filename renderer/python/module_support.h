@@ -1,0 +1,59 @@
+// What the binding files share: each adds its part of the module (bind*), calls into the library the way
+// the command line does (guarded: InputError becomes glossy.InputError with the command line's message,
+// the notes the CLI prints become Python warnings), and checks keyword arguments as the CLI checks options.
+#pragma once
+
+#include "materials/core/notes.h"
+#include "materials/core/types.h"
+#include "renderer/image/exr_image.h"
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+namespace glossy::python {
+
+namespace py = pybind11;
+
+void bindBrdfs(py::module_& m);
+void bindFitting(py::module_& m);
+void bindRendering(py::module_& m);
+
+// The Python warning category of the notes (glossy.GlossyWarning), set up by module.cpp.
+PyObject* warningCategory();
+// Hands the library's queued notes to Python as warnings (needs the GIL).
+void warnNotes();
+
+// A library call as the command line makes it: what loading noted is kept only when the input proved good.
+template <class F>
+auto guarded(F&& f) {
+  try {
+    if constexpr (std::is_void_v<decltype(f())>) {
+      f();
+      warnNotes();
+    } else {
+      auto result = f();
+      warnNotes();
+      return result;
+    }
+  } catch (...) {
+    discardNotes();
+    throw;
+  }
+}
+
+// Keyword checks, with the command line's wording: "spp: must be a whole number in [1, 2147483647], not '0'".
+int checkedInt(const char* name, long long value, long long lo, long long hi);
+double checkedReal(const char* name, double value, double lo, double hi, bool loOpen = false);
+
+// An image as a float32 array (height, width, 3) that owns the pixels it was given: no copy.
+py::array_t<float> imageArray(RgbImage&& image);
+
+// A path argument: str or os.PathLike, as the text the command line would have been given.
+std::string pathText(const py::handle& path);
+
+}  // namespace glossy::python

@@ -1,0 +1,329 @@
+// glossy.render, glossy.sheet and glossy.read_exr: the jobs behind `glossy render` and `glossy sheet`
+// (renderer/cli/render_job.h, sheet_job.h), run so that Ctrl-C and a progress callback work
+// (background_job.h), with their images as float32 arrays that own or view the renderer's pixels.
+#include "materials/core/input_error.h"
+#include "materials/core/text.h"
+#include "renderer/cli/command.h"
+#include "renderer/cli/destination.h"
+#include "renderer/cli/image_memory.h"
+#include "renderer/cli/render_job.h"
+#include "renderer/cli/sheet_job.h"
+#include "renderer/python/background_job.h"
+#include "renderer/python/brdf_bindings.h"
+
+#include <pybind11/stl.h>
+
+#include <algorithm>
+
+namespace glossy::python {
+
+namespace {
+
+// Python's own TypeError for a keyword the function does not take: a typo must not pass unnoticed.
+void checkKeywords(const char* function, const py::kwargs& given, std::initializer_list<const char*> known) {
+  for (const auto& [key, value] : given) {
+    const std::string k = py::str(key);
+    if (std::none_of(known.begin(), known.end(), [&](const char* name) { return k == name; }))
+      throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + k + "'");
+  }
+}
+
+// value as T, or InputError `message` (a str where numbers belong, and the like).
+template <class T>
+T castOr(const py::handle& value, const std::string& message) {
+  try {
+    return value.cast<T>();
+  } catch (const py::cast_error&) {
+    throw InputError(message);
+  }
+}
+
+std::string optionalPath(const py::object& path) { return path.is_none() ? std::string() : pathText(path); }
+
+// The scene keywords as the command line's scene options (their messages name --env-constant and so on).
+cli::SceneOptions sceneOptions(const py::object& scene, const py::object& camera, const py::object& env,
+                               const py::object& envConstant, double envRotate) {
+  cli::SceneOptions o;
+  o.scene = optionalPath(scene);
+  o.camera = camera.is_none() ? std::string() : castOr<std::string>(camera, "camera: must be a string");
+  o.env = optionalPath(env);
+  if (!envConstant.is_none()) {
+    std::vector<double> v;
+    if (py::isinstance<py::float_>(envConstant) || py::isinstance<py::int_>(envConstant)) v = {envConstant.cast<double>()};
+    else v = castOr<std::vector<double>>(envConstant, "env_constant: expected a radiance or (R, G, B)");
+    for (double x : v) o.envConstant += (o.envConstant.empty() ? "" : ",") + formatted("%.17g", x);
+    if (v.empty()) o.envConstant = "[]";
+  }
+  if (!o.env.empty() && !o.envConstant.empty()) throw InputError("env and env_constant: give one of them");
+  o.envRotate = checkedReal("env_rotate", envRotate, -360.0, 360.0);
+  return o;
+}
+
+// size=None (the default), N, or (width, height).
+std::pair<int, int> sizeOf(const py::object& size, int defaultSize, int lo, int hi) {
+  if (size.is_none()) return {defaultSize, defaultSize};
+  long long w, h;
+  if (py::isinstance<py::int_>(size)) {
+    w = h = castOr<long long>(size, "size: must be a whole number");
+  } else {
+    const auto wh = castOr<std::vector<long long>>(size, "size: expected N or (width, height)");
+    if (wh.size() != 2) throw InputError("size: expected N or (width, height)");
+    w = wh[0], h = wh[1];
+  }
+  return {checkedInt("size: width", w, lo, hi), checkedInt("size: height", h, lo, hi)};
+}
+
+uint32_t seedOf(long long seed) {
+  if (seed < 0 || seed > 0xffffffffLL) throw InputError(formatted("seed: must be a whole number in [0, 4294967295], not '%lld'", seed));
+  return uint32_t(seed);
+}
+
+py::array_t<float> renderArray(const py::kwargs& a) {
+  checkKeywords("render", a, {"scene", "material", "fit", "measured", "brdf", "merl_dir", "camera", "env", "env_constant",
+                              "env_rotate", "spp", "size", "seed", "threads", "max_depth", "light_samples", "brdf_sampling",
+                              "reference", "progress", "output", "half"});
+  auto get = [&](const char* key) { return a.contains(key) ? py::reinterpret_borrow<py::object>(a[key]) : py::object(py::none()); };
+  cli::RenderJob job;
+  job.scene = sceneOptions(get("scene"), get("camera"), get("env"), get("env_constant"),
+                           get("env_rotate").is_none() ? 0.0 : castOr<double>(get("env_rotate"), "env_rotate: must be a number"));
+  const py::object material = get("material"), fit = get("fit"), measured = get("measured"), brdf = get("brdf");
+  if (!brdf.is_none() && (!material.is_none() || !measured.is_none()))
+    throw InputError("brdf: give a brdf, a material and its fit, or measured data: one of them");
+  if (!material.is_none() && !measured.is_none()) throw InputError("material and measured: give one of them");
+  if (material.is_none() != fit.is_none()) throw InputError("material and fit: give both (fit = 'MODEL:METRIC') or neither");
+  if (!material.is_none())
+    job.material = py::isinstance<PyMaterial>(material) ? material.cast<const PyMaterial&>().file.path.string() : pathText(material);
+  if (!fit.is_none()) job.fit = castOr<std::string>(fit, "fit: must be a string, MODEL:METRIC");
+  job.measured = optionalPath(measured);
+  job.merlDir = optionalPath(get("merl_dir"));
+  if (!brdf.is_none()) {
+    if (!py::isinstance<PyBrdf>(brdf)) throw InputError("brdf: expected a glossy.Brdf");
+    const PyBrdf& b = brdf.cast<const PyBrdf&>();
+    job.brdf = BrdfChoice{b.brdf, b.description, b.model};
+    if (b.model == "smooth") job.brdf->smoothFresnel = b.params.choice("fresnel", Smooth::kParams);
+  }
+  RenderSettings& s = job.settings;
+  std::tie(s.width, s.height) = sizeOf(get("size"), 512, 1, 1 << 15);
+  if (!get("spp").is_none()) s.spp = checkedInt("spp", castOr<long long>(get("spp"), "spp: must be a whole number"), 1, INT32_MAX);
+  if (!get("seed").is_none()) s.seed = seedOf(castOr<long long>(get("seed"), "seed: must be a whole number"));
+  if (!get("threads").is_none()) s.threads = checkedInt("threads", castOr<long long>(get("threads"), "threads: must be a whole number"), 0, cli::kMaxThreads);
+  if (!get("max_depth").is_none()) s.maxDepth = checkedInt("max_depth", castOr<long long>(get("max_depth"), "max_depth: must be a whole number"), 1, 1000);
+  if (!get("light_samples").is_none())
+    s.lightSamples = checkedInt("light_samples", castOr<long long>(get("light_samples"), "light_samples: must be a whole number"), 1, kMaxLightSamples);
+  if (!get("brdf_sampling").is_none()) {
+    job.brdfSampling = castOr<std::string>(get("brdf_sampling"), "brdf_sampling: must be a string");
+    if (job.brdfSampling != "lobe" && job.brdfSampling != "cosine")
+      throw InputError("brdf_sampling: must be 'lobe' or 'cosine', not '" + shortened(job.brdfSampling) + "'");
+  }
+  if (!get("reference").is_none()) s.reference = castOr<bool>(get("reference"), "reference: must be True or False");
+  s.progress = false;
+  const std::string output = optionalPath(get("output"));
+  const bool half = !get("half").is_none() && castOr<bool>(get("half"), "half: must be True or False");
+  if (!output.empty()) cli::checkOutputFile(output, "output", {".exr"}, cli::Folder::Create);
+  cli::checkImageMemory(s.width, s.height, 1, cli::kRenderBytesPerPixel);
+
+  JobControl control;
+  s.control = &control;
+  cli::RenderedImage r = runInterruptible(control, get("progress"), [&] { return cli::renderImage(job); });
+  if (!output.empty()) {
+    if (const std::filesystem::path out = output; out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+    writeExr(output, r.image, r.metadata, half ? PixelType::Half : PixelType::Float);
+  }
+  return imageArray(std::move(r.image));
+}
+
+struct PySheet {
+  std::shared_ptr<const cli::Stage> stage;
+  cli::SheetJob job;
+  cli::MadeSheet made;
+};
+
+// A float32 view of pixels PySheet holds: no copy, and read-only, for save() writes what they hold.
+py::array view(const py::object& owner, const float* data, std::vector<py::ssize_t> shape, std::vector<py::ssize_t> strides) {
+  py::array a(py::dtype::of<float>(), shape, strides, data, owner);
+  a.attr("setflags")(py::arg("write") = false);
+  return a;
+}
+
+py::object optionalNumber(bool available, double value) { return available ? py::object(py::float_(value)) : py::object(py::none()); }
+py::object optionalInterval(bool available, const Interval& i) {
+  return available ? py::object(py::make_tuple(i.lo, i.hi)) : py::object(py::none());
+}
+
+py::dict panelFigures(const Sheet& sheet, const PanelRender& p) {
+  const PanelFigures& f = p.figures;
+  py::dict d;
+  d["label"] = p.panel.label;
+  d["fit"] = p.panel.fit.empty() ? std::string("measured") : p.panel.fit;
+  d["colour"] = p.panel.colour;
+  d["empty"] = p.empty;
+  d["note"] = p.note;
+  d["spp"] = p.empty ? 0 : sheet.spp;
+  d["params"] = p.params;
+  d["E1"] = optionalNumber(p.brdfE1 >= 0.0, p.brdfE1);
+  d["E2"] = optionalNumber(p.brdfE2 >= 0.0, p.brdfE2);
+  d["relative_rmse"] = optionalNumber(f.available, f.relativeRmse);
+  d["relative_rmse_ci"] = optionalInterval(f.hasCi, f.relativeRmseCi);
+  d["relative_rmse_clamped"] = f.available && f.clamped;
+  d["relative_rmse_noisy"] = optionalNumber(f.compared, f.noisyRelativeRmse);
+  d["luminance_ratio"] = optionalNumber(f.compared, f.luminanceRatio);
+  d["luminance_ratio_ci"] = optionalInterval(f.hasCi, f.luminanceRatioCi);
+  d["flip"] = optionalNumber(p.maps.available, p.maps.flip);
+  d["flip_ci"] = optionalInterval(p.maps.available && p.maps.hasFlipCi, p.maps.flipCi);
+  return d;
+}
+
+std::shared_ptr<PySheet> renderSheetOf(const py::kwargs& a) {
+  checkKeywords("sheet", a, {"material", "measured", "merl_dir", "scene", "camera", "env", "env_constant", "env_rotate", "spp",
+                             "size", "time", "target_error", "seed", "threads", "max_depth", "light_samples", "exposure", "half",
+                             "progress", "output"});
+  auto get = [&](const char* key) { return a.contains(key) ? py::reinterpret_borrow<py::object>(a[key]) : py::object(py::none()); };
+  auto sheet = std::make_shared<PySheet>();
+  cli::SheetJob& job = sheet->job;
+  job.scene = sceneOptions(get("scene"), get("camera"), get("env"), get("env_constant"),
+                           get("env_rotate").is_none() ? 0.0 : castOr<double>(get("env_rotate"), "env_rotate: must be a number"));
+  const py::object material = get("material");
+  if (material.is_none()) throw InputError("material: a material file (or glossy.Material) is required");
+  const std::string materialPath =
+      py::isinstance<PyMaterial>(material) ? material.cast<const PyMaterial&>().file.path.string() : pathText(material);
+  const std::string measured = optionalPath(get("measured"));
+  job.merlDir = optionalPath(get("merl_dir"));
+  SheetSettings& s = job.settings;
+  std::tie(s.width, s.height) = sizeOf(get("size"), 256, 8, 1 << 14);
+  if (!get("time").is_none()) s.secondsPerPanel = checkedReal("time", castOr<double>(get("time"), "time: must be a number"), 0.0, 1e6, true);
+  if (!get("target_error").is_none()) s.targetError = checkedReal("target_error", castOr<double>(get("target_error"), "target_error: must be a number"), 0.0, 10.0, true);
+  // As glossy sheet: --time and --target-error render until they are met; spp caps them only when given.
+  if (!get("spp").is_none()) s.spp = checkedInt("spp", castOr<long long>(get("spp"), "spp: must be a whole number"), 1, 1 << 24);
+  else if (s.secondsPerPanel > 0.0 || s.targetError > 0.0) s.spp = 1 << 24;
+  if (!get("seed").is_none()) s.seed = seedOf(castOr<long long>(get("seed"), "seed: must be a whole number"));
+  if (!get("threads").is_none()) s.threads = checkedInt("threads", castOr<long long>(get("threads"), "threads: must be a whole number"), 0, cli::kMaxThreads);
+  if (!get("max_depth").is_none()) s.maxDepth = checkedInt("max_depth", castOr<long long>(get("max_depth"), "max_depth: must be a whole number"), 1, 1000);
+  if (!get("light_samples").is_none())
+    s.lightSamples = checkedInt("light_samples", castOr<long long>(get("light_samples"), "light_samples: must be a whole number"), 1, kMaxLightSamples);
+  if (!get("exposure").is_none()) job.exposure = checkedReal("exposure", castOr<double>(get("exposure"), "exposure: must be a number"), -64.0, 64.0);
+  job.half = !get("half").is_none() && castOr<bool>(get("half"), "half: must be True or False");
+  s.progress = false;
+  const std::string output = optionalPath(get("output"));
+  if (!output.empty()) cli::checkOutputFile(output, "output", {".exr"}, cli::Folder::Create);
+  cli::checkImageMemory(s.width, s.height, int(s.panels.size()), cli::kSheetBytesPerPanelPixel);
+
+  JobControl control;
+  s.control = &control;
+  runInterruptible(control, get("progress"), [&] {
+    sheet->stage = std::make_shared<const cli::Stage>(job.scene, double(s.width) / double(s.height));
+    sheet->made = cli::makeMaterialSheet(*sheet->stage, materialPath, job, measured);
+    return 0;
+  });
+  s.control = nullptr;
+  if (!output.empty()) cli::writeSheetFiles(sheet->made, *sheet->stage, job, output);
+  return sheet;
+}
+
+}  // namespace
+
+void bindRendering(py::module_& m) {
+  m.def("render", [](const py::kwargs& a) { return guarded([&] { return renderArray(a); }); }, R"doc(
+render(*, scene=None, material=None, fit=None, measured=None, brdf=None, merl_dir=None, camera=None,
+       env=None, env_constant=None, env_rotate=0.0, spp=64, size=(512, 512), seed=0, threads=0,
+       max_depth=8, light_samples=4, brdf_sampling="lobe", reference=False, progress=None,
+       output=None, half=False) -> numpy.ndarray
+
+Renders a glTF scene as `glossy render` does and returns the image, float32 of shape (height, width, 3),
+linear Rec. 709: for the same arguments and thread count, the image `glossy render` writes, bit for bit.
+
+The object's BRDF: material (a parameter file or glossy.Material) with fit ("MODEL:METRIC"), measured
+data (a MERL table or .nbrdf), or any glossy.Brdf (brdf); none: the scene's own bindings. scene: .gltf
+or .glb (default: the material-preview scene). env: a lat-long .exr/.hdr; env_constant: a radiance or
+(R, G, B); neither: the built-in sky. size: N or (width, height).
+
+progress: callable(done, total), called with the tiles rendered so far. Ctrl-C stops the render and
+raises KeyboardInterrupt; an exception raised by progress stops it too. output: also write the EXR.
+)doc");
+
+  py::class_<PySheet, std::shared_ptr<PySheet>>(m, "Sheet", R"doc(
+A material's comparison sheet (glossy.sheet()): the panels Measured | Microfacet E2 | Smooth E2 | AS E1 |
+AS E2 | CT E1 | CT E2 side by side, and each model's error figures against the measured panel.
+)doc")
+      .def_property_readonly("image", [](const py::object& self) {
+             const Sheet& s = self.cast<const PySheet&>().made.sheet;
+             const py::ssize_t w = s.grid.width, f = sizeof(float);
+             return view(self, s.grid.pixels.data(), {s.grid.height, w, 3}, {3 * w * f, 3 * f, f});
+           }, "The panels side by side, float32 (height, panels × width, 3); read-only.")
+      .def_property_readonly("panels", [](const py::object& self) {
+             const Sheet& s = self.cast<const PySheet&>().made.sheet;
+             const py::ssize_t gw = s.grid.width, w = s.panels.front().image.width, h = s.grid.height, f = sizeof(float);
+             py::dict d;
+             for (size_t k = 0; k < s.panels.size(); ++k)
+               d[py::str(s.panels[k].panel.layer)] = view(self, s.grid.at(int(k * size_t(w)), 0), {h, w, 3}, {3 * gw * f, 3 * f, f});
+             return d;
+           }, "Each panel by its layer name ('measured', 'cook_torrance_E2', ...): views of image, no copies.")
+      .def_property_readonly("maps", [](const py::object& self) {
+             const Sheet& s = self.cast<const PySheet&>().made.sheet;
+             py::dict d;
+             for (const PanelRender& p : s.panels) {
+               if (!p.maps.available) continue;
+               const py::ssize_t w = p.image.width, h = p.image.height, f = sizeof(float);
+               py::dict maps;
+               maps["reldiff"] = view(self, p.maps.relativeDifference.data(), {h, w}, {w * f, f});
+               maps["flip"] = view(self, p.maps.flipMap.data(), {h, w}, {w * f, f});
+               d[py::str(p.panel.layer)] = maps;
+             }
+             return d;
+           }, "Each model's error maps against the measured panel: {'reldiff': (h, w), 'flip': (h, w)} (docs/sheets.md).")
+      .def_property_readonly("figures", [](const PySheet& x) {
+             py::dict d;
+             for (const PanelRender& p : x.made.sheet.panels) d[py::str(p.panel.layer)] = panelFigures(x.made.sheet, p);
+             return d;
+           }, R"doc(
+Per panel, by layer name: label, fit, colour, empty, note, spp, params, the fit's E1 and E2 against the
+measured table, and against the measured panel the noise-free relative RMSE with its 95 % interval
+(relative_rmse, relative_rmse_ci), the noisy one, the luminance ratio with its interval, and HDR-ꟻLIP
+with its interval (flip, flip_ci). A figure the sheet cannot give is None.
+)doc")
+      .def_property_readonly("verdict", [](const PySheet& x) { return verdictText(x.made.sheet); },
+                             "The closest model when the intervals say so, a tie, or why there is no verdict.")
+      .def_property_readonly("table", [](const PySheet& x) { return errorTable(x.made.sheet); },
+                             "The error table `glossy sheet` prints.")
+      .def_property_readonly("material", [](const PySheet& x) { return x.made.material.name; })
+      .def_property_readonly("spp", [](const PySheet& x) { return x.made.sheet.spp; })
+      .def_property_readonly("passes", [](const PySheet& x) { return x.made.sheet.passes; })
+      .def_property_readonly("seconds", [](const PySheet& x) { return x.made.seconds; })
+      .def_property_readonly("flip_noise_floor", [](const PySheet& x) {
+             return optionalNumber(x.made.sheet.flipNoiseFloor >= 0.0, x.made.sheet.flipNoiseFloor);
+           }, "ꟻLIP between the halves of the measured panel's samples: what noise alone scores.")
+      .def("save", [](const PySheet& x, const py::object& path) {
+             guarded([&] {
+               const std::string p = pathText(path);
+               cli::checkOutputFile(p, "path", {".exr"}, cli::Folder::Create);
+               cli::writeSheetFiles(x.made, *x.stage, x.job, p);
+             });
+           }, py::arg("path"), "Writes the sheet's layered EXR and its PNG beside it, as `glossy sheet -o path` does.")
+      .def("__repr__", [](const PySheet& x) {
+        return "<glossy.Sheet " + x.made.material.name + ": " + std::to_string(x.made.sheet.spp) + " spp, " + verdictText(x.made.sheet) + ">";
+      });
+
+  m.def("sheet", [](const py::kwargs& a) { return guarded([&] { return renderSheetOf(a); }); }, R"doc(
+sheet(*, material, measured=None, merl_dir=None, scene=None, camera=None, env=None, env_constant=None,
+      env_rotate=0.0, spp=None, size=(256, 256), time=None, target_error=None, seed=0, threads=0,
+      max_depth=8, light_samples=4, exposure=0.0, half=False, progress=None, output=None) -> glossy.Sheet
+
+Renders a material's comparison sheet as `glossy sheet` does: every panel from the same samples, each
+model's error figures with 95 % intervals. spp (default 64) is split among 4 independent replicates;
+time (seconds per panel) or target_error (the widest interval's half-width) render in passes until met.
+measured: the data for the measured panel (default: the one the material names, then the network
+embedded beside it). progress(done, total) and Ctrl-C as in render(); total is 0 while unknown (time,
+target_error). output: also write the EXR and PNG (or call Sheet.save later).
+)doc");
+
+  m.def("read_exr", [](const py::object& path, const std::string& layer) {
+          return guarded([&] {
+            const std::string p = pathText(path);
+            return imageArray(layer.empty() ? readRgbImage(p) : readImageLayer(p, layer));
+          });
+        }, py::arg("path"), py::arg("layer") = "", R"doc(
+An EXR's RGB layer as float32 (height, width, 3): the default layer, or a sheet's panel layer by name
+('measured', 'cook_torrance_E2', ...).
+)doc");
+}
+
+}  // namespace glossy::python
