@@ -24,6 +24,7 @@ Command addEvalCommand(CLI::App& parent);
 Command addFitCommand(CLI::App& parent);
 Command addImportCommand(CLI::App& parent);
 Command addListCommand(CLI::App& parent);
+Command addMergeCommand(CLI::App& parent);
 Command addPlotCommand(CLI::App& parent);
 Command addRenderCommand(CLI::App& parent);
 Command addReportCommand(CLI::App& parent);

@@ -10,11 +10,13 @@
 #include "renderer/cli/command.h"
 #include "renderer/cli/destination.h"
 #include "renderer/cli/output.h"
+#include "renderer/cli/shard.h"
 
 #include <algorithm>
 #include <chrono>
 #include <iostream>
 #include <map>
+#include <numeric>
 #include <sstream>
 
 namespace glossy::cli {
@@ -22,7 +24,7 @@ namespace glossy::cli {
 namespace {
 
 struct FitOptions {
-  std::string measured, merlDir, output, measuredDir, outDir;
+  std::string measured, merlDir, output, measuredDir, outDir, shard;
   std::vector<std::string> models, metrics;
   FitSettings settings;
 };
@@ -97,15 +99,44 @@ std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
   return out;
 }
 
+// What fitting a table costs, in units of a Microfacet or Smooth fit under one metric at the default settings
+// (about 7 CPU seconds with the table's loading; Ashikhmin-Shirley and Cook-Torrance take half as long again,
+// and a .nbrdf network's tabulation about 2 more: docs/cluster.md).
+double fitCost(const std::filesystem::path& table, const std::vector<std::string>& models, size_t metrics) {
+  static const std::map<std::string, double, std::less<>> kModelCost = {
+      {"microfacet", 1.0}, {"smooth", 1.0}, {"ashikhmin-shirley", 1.5}, {"cook-torrance", 1.5}};
+  double cost = table.extension() == ".nbrdf" ? 0.3 : 0.0;
+  for (const std::string& m : models) {
+    const auto it = kModelCost.find(m);
+    cost += double(metrics) * (it == kModelCost.end() ? 1.0 : it->second);
+  }
+  return cost;
+}
+
 int runBatch(const FitOptions& o) {
   if (o.outDir.empty()) throw InputError("glossy fit --measured-dir needs --out-dir");
   checkOutputFolder(o.outDir, "--out-dir");
-  const auto tables = tablesIn(o.measuredDir);
+  const Shard shard = shardFrom(o.shard);
+  auto tables = tablesIn(o.measuredDir);
   const auto fittable = fittableModels();
   const std::vector<std::string> models = o.models.empty() ? std::vector<std::string>(fittable.begin(), fittable.end()) : o.models;
   std::vector<Metric> metrics;
   for (const std::string& m : o.metrics.empty() ? std::vector<std::string>{"E1", "E2"} : o.metrics) metrics.push_back(parseMetric(m, "--metric"));
   for (const auto& m : models) requireFittable(m);
+  if (!shard.source.empty()) {
+    std::vector<double> costs;
+    for (const auto& t : tables) costs.push_back(fitCost(t, models, metrics.size()));
+    std::vector<std::filesystem::path> mine;
+    double myCost = 0.0;
+    for (size_t k : shardItems(costs, shard)) {
+      mine.push_back(tables[k]);
+      myCost += costs[k];
+    }
+    std::cerr << "glossy fit: shard " << shard.index << "/" << shard.count << " from " << shard.source << ": " << mine.size()
+              << " of " << tables.size() << " tables, "
+              << formatted("%.1f", 100.0 * myCost / std::accumulate(costs.begin(), costs.end(), 0.0)) << " % of the expected cost\n";
+    tables = std::move(mine);
+  }
   std::filesystem::create_directories(o.outDir);
   const std::string settings = o.settings.describe();
 
@@ -167,6 +198,9 @@ Command addFitCommand(CLI::App& parent) {
   app->add_option("-o,--output", o->output, "material TOML to write or update (keeps its other fits); default: stdout");
   app->add_option("--measured-dir", o->measuredDir, "batch: fit every table (or .nbrdf network) in this folder");
   app->add_option("--out-dir", o->outDir, "batch: one material TOML per table here; fits already made are skipped");
+  app->add_option("--shard", o->shard,
+                  "batch: i/N: only shard i (0-based) of N, the tables split by expected cost; default: the job array's "
+                  "task (Slurm, Kubernetes indexed Job, AWS Batch; docs/cluster.md)");
   app->add_option("--starts", o->settings.refinedStarts, "lobe widths refined from the coarse scan")->check(CLI::Range(1, 64));
   app->add_option("--max-iterations", o->settings.maxIterations, "Levenberg-Marquardt iterations per start")->check(CLI::Range(1, 10000));
   app->add_option("--threads", o->settings.threads, "threads (default: all cores); the result does not depend on it")->check(CLI::Range(1, 256));
@@ -174,6 +208,7 @@ Command addFitCommand(CLI::App& parent) {
   auto dir = app->get_option("--measured-dir");
   measured->excludes(dir);
   app->get_option("-o")->excludes(dir);
+  app->get_option("--shard")->needs(dir);
   return {app, [o] {
             if (!o->measuredDir.empty()) return runBatch(*o);
             if (o->measured.empty()) throw InputError("glossy fit needs --measured FILE or --measured-dir DIR");

@@ -16,9 +16,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string(GLOSSY_VERSION));
   app.require_subcommand(1);
   std::vector<cli::Command> commands = {cli::addErrorCommand(app),  cli::addEvalCommand(app),   cli::addFitCommand(app),
-                                        cli::addImportCommand(app), cli::addListCommand(app),   cli::addPlotCommand(app),
-                                        cli::addRenderCommand(app), cli::addReportCommand(app), cli::addSampleCommand(app),
-                                        cli::addSheetCommand(app),  cli::addSheetsCommand(app)};
+                                        cli::addImportCommand(app), cli::addListCommand(app),   cli::addMergeCommand(app),
+                                        cli::addPlotCommand(app),   cli::addRenderCommand(app), cli::addReportCommand(app),
+                                        cli::addSampleCommand(app), cli::addSheetCommand(app),  cli::addSheetsCommand(app)};
 
   try {
     app.parse(argc, argv);

@@ -6,6 +6,7 @@
 #include "renderer/cli/command.h"
 #include "renderer/cli/destination.h"
 #include "renderer/cli/image_memory.h"
+#include "renderer/cli/shard.h"
 #include "renderer/cli/sheet_job.h"
 #include "renderer/cli/sheet_resume.h"
 
@@ -15,6 +16,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <unistd.h>
 
 namespace glossy::cli {
@@ -86,14 +88,18 @@ int runSheet(const SheetOptions& options) {
   return 0;
 }
 
-std::pair<int, int> parseShard(const std::string& text) {
-  int i = -1, n = 0, used = 0;
-  char slash = 0;
-  // %n: the whole text must be i/N, so "0/3/4" is refused rather than read as 0/3.
-  if (std::sscanf(text.c_str(), "%d%c%d%n", &i, &slash, &n, &used) != 3 || size_t(used) != text.size() || slash != '/' ||
-      n < 1 || i < 0 || i >= n)
-    throw InputError("--shard: '" + shortened(text) + "' is not i/N with 0 <= i < N");
-  return {i, n};
+// What a sheet costs, in analytic panels: its fits on the grid, and a measured panel, which with its table's
+// loading, its sampler and the error figures it brings costs about kMeasuredPanelCost of them (alum-bronze's
+// default sheet: 25.3 CPU seconds with it, 17.8 without; docs/cluster.md).
+constexpr double kMeasuredPanelCost = 2.5;
+
+double sheetCost(const MaterialFile& m, const SheetJob& job) {
+  double cost = 0.0;
+  for (const SheetPanel& p : job.settings.panels)
+    if (p.fit.empty() ? resolveMeasured(m.measured, job.merlDir, m.path.parent_path()).has_value()
+                      : m.find(FitId::parse(p.fit, m.path.string())) != nullptr)
+      cost += p.fit.empty() ? kMeasuredPanelCost : 1.0;
+  return std::max(cost, 1.0);  // an empty sheet still costs its scene and files
 }
 
 int runSheets(const SheetOptions& options) {
@@ -105,14 +111,16 @@ int runSheets(const SheetOptions& options) {
       throw InputError(in + (std::filesystem::exists(in, ec) ? ": is not a material file or folder (a device, FIFO or socket)"
                                                              : ": no such material file or folder"));
   std::vector<std::filesystem::path> files = materialFiles(o.inputs);
-  const std::pair<int, int> shard = o.shard.empty() ? std::pair(0, 1) : parseShard(o.shard);
+  const Shard shard = shardFrom(o.shard);
   // Validate every file, and where each sheet goes, before rendering any, so a typo fails in a second, not
   // after an hour. All files, not just this shard's: another shard writes to the same folder.
   const std::filesystem::path outDir = o.outDir;
   std::vector<std::string> names;
+  std::vector<double> costs;
   std::map<std::string, std::filesystem::path> byName;
   for (const auto& f : files) {
-    const std::string name = loadMaterialFile(f).name;
+    const MaterialFile m = loadMaterialFile(f);
+    const std::string& name = m.name;
     if (auto [it, fresh] = byName.emplace(name, f); !fresh)
       throw InputError(it->second.string() + " and " + f.string() + ": both name the material '" + name +
                        "' (one sheet " + name + ".exr each)");
@@ -121,16 +129,20 @@ int runSheets(const SheetOptions& options) {
       if (const auto path = outDir / (name + extension); std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
         throw InputError(path.string() + ": is in the way of " + f.string() + "'s sheet (not a file)");
     names.push_back(name);
+    costs.push_back(sheetCost(m, o));
   }
-  {
-    const auto [index, count] = shard;
+  if (!shard.source.empty()) {
+    double myCost = 0.0;
     std::vector<std::filesystem::path> myFiles;
     std::vector<std::string> myNames;
-    for (size_t k = 0; k < files.size(); ++k)
-      if (int(k % size_t(count)) == index) {
-        myFiles.push_back(files[k]);
-        myNames.push_back(names[k]);
-      }
+    for (size_t k : shardItems(costs, shard)) {
+      myFiles.push_back(files[k]);
+      myNames.push_back(names[k]);
+      myCost += costs[k];
+    }
+    std::fprintf(stderr, "glossy sheets: shard %d/%d from %s: %zu of %zu materials, %.1f %% of the expected cost\n", shard.index,
+                 shard.count, shard.source.c_str(), myFiles.size(), files.size(),
+                 100.0 * myCost / std::accumulate(costs.begin(), costs.end(), 0.0));
     files = std::move(myFiles);
     names = std::move(myNames);
   }
@@ -201,7 +213,9 @@ Command addSheetsCommand(CLI::App& parent) {
       "sheets already complete are skipped, so an interrupted run resumes.");
   app->add_option("inputs", o->inputs, "Material files or folders of them (default: the library)");
   app->add_option("-o,--output", o->outDir, "Output folder")->capture_default_str();
-  app->add_option("--shard", o->shard, "i/N: only every N-th material, starting at the i-th (0-based), for job arrays");
+  app->add_option("--shard", o->shard,
+                  "i/N: only shard i (0-based) of N, the materials split by expected cost; default: the job array's task "
+                  "(Slurm, Kubernetes indexed Job, AWS Batch; docs/cluster.md)");
   addRenderOptions(app, *o);
   return {app, [o] { return runSheets(*o); }};
 }

@@ -36,7 +36,8 @@ namespace {
 RunResult run(const std::string& prefix, const std::vector<std::string>& args, const std::string& input) {
   TempDir tmp;
   writeText(tmp / "stdin", input);
-  std::string cmd = prefix + shellQuote(GLOSSY_EXE);
+  // A test run inside a job array must not shard itself by the array's variables (renderer/cli/shard.h).
+  std::string cmd = prefix + "env -u SLURM_ARRAY_TASK_ID -u JOB_COMPLETION_INDEX -u AWS_BATCH_JOB_ARRAY_INDEX " + shellQuote(GLOSSY_EXE);
   for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
   cmd.append(" <").append(shellQuote((tmp / "stdin").string()));
   cmd.append(" >").append(shellQuote((tmp / "stdout").string()));

@@ -1,0 +1,149 @@
+// glossy merge: what the shards of a job array made, brought together (docs/cluster.md).
+//   glossy merge fits DIR -o LIBRARY          each DIR/NAME.toml's fits put into LIBRARY/NAME.toml (other fits kept)
+//   glossy merge sheets DIR --csv F --json F  every sheet's error figures in one table
+// Both read and check everything before writing anything, and write atomically.
+#include "materials/core/atomic_file.h"
+#include "materials/core/input_error.h"
+#include "materials/core/text.h"
+#include "materials/params/material_file.h"
+#include "renderer/cli/command.h"
+#include "renderer/cli/destination.h"
+#include "renderer/report/sheet_record.h"
+
+#include <nlohmann/json.hpp>
+
+#include <charconv>
+#include <iostream>
+#include <map>
+#include <memory>
+
+namespace glossy::cli {
+
+namespace {
+
+struct MergeOptions {
+  std::string fitsDir, library, sheetsDir, csv, json;
+};
+
+std::vector<std::filesystem::path> tomlFiles(const std::filesystem::path& dir) {
+  if (std::error_code ec; !std::filesystem::is_directory(dir, ec)) throw InputError(dir.string() + ": not a directory");
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    if (e.is_regular_file() && e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  if (files.empty()) throw InputError(dir.string() + ": no parameter files (*.toml)");
+  return files;
+}
+
+int runMergeFits(const MergeOptions& o) {
+  checkOutputFolder(o.library, "-o");
+  // Everything read first: a bad file anywhere fails the merge before a file is written.
+  std::map<std::string, MaterialFile> merged;  // by material name
+  size_t fits = 0, replaced = 0;
+  for (const auto& path : tomlFiles(o.fitsDir)) {
+    const MaterialFile shard = loadMaterialFile(path);
+    auto it = merged.find(shard.name);
+    if (it == merged.end()) {
+      const std::filesystem::path into = std::filesystem::path(o.library) / (shard.name + ".toml");
+      std::error_code ec;
+      MaterialFile start = std::filesystem::exists(into, ec) ? loadMaterialFile(into) : shard;
+      if (start.name != shard.name)
+        throw InputError(into.string() + ": names the material '" + start.name + "', not '" + shard.name + "' of " + path.string());
+      if (!std::filesystem::exists(into, ec)) start.fits.clear();
+      it = merged.emplace(shard.name, std::move(start)).first;
+    }
+    for (const Fit& f : shard.fits) {
+      replaced += it->second.find(f.id) != nullptr;
+      it->second.put(f);
+      ++fits;
+    }
+  }
+  std::filesystem::create_directories(o.library);
+  for (const auto& [name, material] : merged) writeFileAtomically(std::filesystem::path(o.library) / (name + ".toml"), toToml(material));
+  std::cerr << "glossy merge: " << fits << " fits of " << merged.size() << " materials into " << o.library << " (" << replaced
+            << " replacing fits there)\n";
+  return 0;
+}
+
+std::string number(const std::optional<double>& v) {
+  if (!v) return "";
+  char buf[32];
+  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, *v);
+  return std::string(buf, end);
+}
+
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string q = "\"";
+  for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+nlohmann::json jsonNumber(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+int runMergeSheets(const MergeOptions& o) {
+  if (o.csv.empty() && o.json.empty()) throw InputError("glossy merge sheets needs --csv FILE, --json FILE or both");
+  if (!o.csv.empty()) checkOutputFile(o.csv, "--csv", {".csv"}, Folder::Create);
+  if (!o.json.empty()) checkOutputFile(o.json, "--json", {".json"}, Folder::Create);
+  const std::vector<report::SheetRecord> sheets = report::readSheetFolder(o.sheetsDir);
+
+  std::string csv =
+      "material,panel,label,fit,empty,spp,relative_rmse,relative_rmse_lo,relative_rmse_hi,luminance_ratio,luminance_ratio_lo,"
+      "luminance_ratio_hi,flip,flip_lo,flip_hi,relative_rmse_noisy,E1,E2,closest,verdict\n";
+  nlohmann::json doc = {{"sheets", nlohmann::json::array()}};
+  for (const report::SheetRecord& s : sheets) {
+    const std::vector<std::string> closest = s.closestLayers();
+    nlohmann::json panels = nlohmann::json::array();
+    for (const report::PanelRecord& p : s.panels) {
+      const bool isClosest = std::find(closest.begin(), closest.end(), p.layer) != closest.end();
+      csv += csvField(s.name) + "," + p.layer + "," + csvField(p.label) + "," + csvField(p.fit) + "," + (p.empty ? "1" : "0") + "," +
+             csvField(s.spp) + "," + number(p.relativeRmse.value) + "," + number(p.relativeRmse.lo) + "," +
+             number(p.relativeRmse.hi) + "," + number(p.luminanceRatio.value) + "," + number(p.luminanceRatio.lo) + "," +
+             number(p.luminanceRatio.hi) + "," + number(p.flip.value) + "," + number(p.flip.lo) + "," + number(p.flip.hi) + "," +
+             number(p.relativeRmseNoisy) + "," + number(p.e1) + "," + number(p.e2) + "," + (isClosest ? "1" : "0") + "," +
+             csvField(s.verdict) + "\n";
+      panels.push_back({{"panel", p.layer},
+                        {"label", p.label},
+                        {"fit", p.fit},
+                        {"empty", p.empty},
+                        {"relative_rmse", jsonNumber(p.relativeRmse.value)},
+                        {"relative_rmse_ci", p.relativeRmse.lo ? nlohmann::json{*p.relativeRmse.lo, *p.relativeRmse.hi} : nlohmann::json(nullptr)},
+                        {"luminance_ratio", jsonNumber(p.luminanceRatio.value)},
+                        {"luminance_ratio_ci", p.luminanceRatio.lo ? nlohmann::json{*p.luminanceRatio.lo, *p.luminanceRatio.hi} : nlohmann::json(nullptr)},
+                        {"flip", jsonNumber(p.flip.value)},
+                        {"flip_ci", p.flip.lo ? nlohmann::json{*p.flip.lo, *p.flip.hi} : nlohmann::json(nullptr)},
+                        {"relative_rmse_noisy", jsonNumber(p.relativeRmseNoisy)},
+                        {"E1", jsonNumber(p.e1)},
+                        {"E2", jsonNumber(p.e2)},
+                        {"closest", isClosest}});
+    }
+    doc["sheets"].push_back({{"material", s.name}, {"verdict", s.verdict}, {"measured", s.measured}, {"spp", s.spp},
+                             {"scene", s.scene}, {"env", s.env}, {"panels", std::move(panels)}});
+  }
+  for (const auto& [path, text] : {std::pair{o.csv, csv}, std::pair{o.json, doc.dump(1) + "\n"}}) {
+    if (path.empty()) continue;
+    if (const std::filesystem::path p = path; p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+    writeFileAtomically(path, text);
+  }
+  std::cerr << "glossy merge: the figures of " << sheets.size() << " sheets from " << o.sheetsDir << "\n";
+  return 0;
+}
+
+}  // namespace
+
+Command addMergeCommand(CLI::App& parent) {
+  auto o = std::make_shared<MergeOptions>();
+  CLI::App* app = parent.add_subcommand("merge", "Bring together what the shards of a job array made (docs/cluster.md)");
+  app->require_subcommand(1);
+  CLI::App* fits = app->add_subcommand("fits", "Put every fit of DIR/NAME.toml (glossy fit --out-dir) into LIBRARY/NAME.toml, "
+                                               "keeping the fits already there of other models and metrics");
+  fits->add_option("dir", o->fitsDir, "Folder of parameter files the shards wrote")->required();
+  fits->add_option("-o,--output", o->library, "Folder of the parameter files to update (created when missing)")->required();
+  CLI::App* sheets = app->add_subcommand("sheets", "Every sheet's error figures (glossy sheets -o DIR) in one CSV and/or JSON table");
+  sheets->add_option("dir", o->sheetsDir, "Folder of sheets")->required();
+  sheets->add_option("--csv", o->csv, "One row per panel of every sheet");
+  sheets->add_option("--json", o->json, "One object per sheet, its panels inside");
+  return {app, [o, fits] { return fits->parsed() ? runMergeFits(*o) : runMergeSheets(*o); }};
+}
+
+}  // namespace glossy::cli

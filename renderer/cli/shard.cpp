@@ -1,0 +1,96 @@
+#include "renderer/cli/shard.h"
+
+#include "materials/core/input_error.h"
+#include "materials/core/text.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <numeric>
+#include <optional>
+
+namespace glossy::cli {
+
+namespace {
+
+// An array index or size: a whole number, in [lo, 1e9].
+std::optional<long long> wholeNumber(const char* text, long long lo) {
+  if (!text) return std::nullopt;
+  const std::optional<double> v = parseNumber(text);
+  if (!v || *v != double((long long)*v) || *v < double(lo) || *v > 1e9) return std::nullopt;
+  return (long long)*v;
+}
+
+long long required(const Environment& env, const char* name, long long lo, const std::string& why) {
+  const char* text = env(name);
+  const auto v = wholeNumber(text, lo);
+  if (!v)
+    throw InputError(std::string(name) + (text ? ": '" + shortened(text) + "' is not a whole number >= " + std::to_string(lo)
+                                               : " is not set") + why);
+  return *v;
+}
+
+Shard slurmShard(const Environment& env) {
+  const std::string why = " (a Slurm array task; or pass --shard i/N)";
+  const long long id = required(env, "SLURM_ARRAY_TASK_ID", 0, why), min = required(env, "SLURM_ARRAY_TASK_MIN", 0, why);
+  const long long step = env("SLURM_ARRAY_TASK_STEP") ? required(env, "SLURM_ARRAY_TASK_STEP", 1, why) : 1;
+  const long long count = env("SLURM_ARRAY_TASK_COUNT")
+                              ? required(env, "SLURM_ARRAY_TASK_COUNT", 1, why)
+                              : (required(env, "SLURM_ARRAY_TASK_MAX", min, why) - min) / step + 1;
+  // A range min-max:step numbers its tasks; a list such as 1,4,9 does not say which of them this one is.
+  if (id < min || (id - min) % step != 0 || (id - min) / step >= count)
+    throw InputError(formatted("SLURM_ARRAY_TASK_ID=%lld is not task k of the range %lld + %lld k, k < %lld: submit the array as "
+                               "MIN-MAX[:STEP], or pass --shard i/N", id, min, step, count));
+  const long long max = min + (count - 1) * step;
+  return {int((id - min) / step), int(count),
+          formatted("Slurm array task %lld (array %lld-%lld%s, %lld tasks)", id, min, max,
+                    step > 1 ? formatted(":%lld", step).c_str() : "", count)};
+}
+
+Shard indexedShard(const Environment& env, const char* indexName, const char* countName, const char* scheduler) {
+  const std::string why = std::string(" (") + scheduler + "; or pass --shard i/N)";
+  const long long index = required(env, indexName, 0, why), count = required(env, countName, 1, why);
+  if (index >= count)
+    throw InputError(formatted("%s=%lld is not below %s=%lld", indexName, index, countName, count));
+  return {int(index), int(count), formatted("%s index %lld of %lld (%s, %s)", scheduler, index, count, indexName, countName)};
+}
+
+}  // namespace
+
+Shard shardFrom(const std::string& option, const Environment& env) {
+  if (!option.empty()) {
+    int i = -1, n = 0, used = 0;
+    char slash = 0;
+    // %n: the whole text must be i/N, so "0/3/4" is refused rather than read as 0/3.
+    if (std::sscanf(option.c_str(), "%d%c%d%n", &i, &slash, &n, &used) != 3 || size_t(used) != option.size() || slash != '/' ||
+        n < 1 || i < 0 || i >= n)
+      throw InputError("--shard: '" + shortened(option) + "' is not i/N with 0 <= i < N");
+    return {i, n, "--shard " + option};
+  }
+  if (env("SLURM_ARRAY_TASK_ID")) return slurmShard(env);
+  if (env("JOB_COMPLETION_INDEX")) return indexedShard(env, "JOB_COMPLETION_INDEX", "GLOSSY_SHARD_COUNT", "Kubernetes indexed Job");
+  if (env("AWS_BATCH_JOB_ARRAY_INDEX"))
+    return indexedShard(env, "AWS_BATCH_JOB_ARRAY_INDEX", "AWS_BATCH_JOB_ARRAY_SIZE", "AWS Batch array job");
+  return {0, 1, ""};
+}
+
+Shard shardFrom(const std::string& option) {
+  return shardFrom(option, [](const char* name) -> const char* { return std::getenv(name); });
+}
+
+std::vector<size_t> shardItems(std::span<const double> costs, const Shard& shard) {
+  std::vector<size_t> order(costs.size());
+  std::iota(order.begin(), order.end(), size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return costs[a] > costs[b]; });
+  std::vector<double> load(size_t(shard.count), 0.0);
+  std::vector<size_t> mine;
+  for (size_t item : order) {
+    const size_t to = size_t(std::min_element(load.begin(), load.end()) - load.begin());
+    load[to] += costs[item];
+    if (to == size_t(shard.index)) mine.push_back(item);
+  }
+  std::sort(mine.begin(), mine.end());
+  return mine;
+}
+
+}  // namespace glossy::cli

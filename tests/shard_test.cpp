@@ -1,0 +1,109 @@
+// Which part of a batch a process does (renderer/cli/shard.h): --shard, the array schedulers' variables,
+// their malformed forms, and the split by cost.
+#include "renderer/cli/shard.h"
+#include "support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <numeric>
+#include <set>
+
+using namespace glossy;
+using namespace glossy::test;
+using namespace glossy::cli;
+
+namespace {
+
+Environment envOf(std::map<std::string, std::string> vars) {
+  auto held = std::make_shared<std::map<std::string, std::string>>(std::move(vars));
+  return [held](const char* name) -> const char* {
+    const auto it = held->find(name);
+    return it == held->end() ? nullptr : it->second.c_str();
+  };
+}
+
+}  // namespace
+
+TEST(Shard, TheOptionWinsOverTheEnvironment) {
+  const Shard s = shardFrom("2/5", envOf({{"SLURM_ARRAY_TASK_ID", "0"}, {"SLURM_ARRAY_TASK_MIN", "0"}, {"SLURM_ARRAY_TASK_COUNT", "2"}}));
+  EXPECT_EQ(s.index, 2);
+  EXPECT_EQ(s.count, 5);
+  EXPECT_EQ(s.source, "--shard 2/5");
+  const Shard none = shardFrom("", envOf({}));
+  EXPECT_EQ(none.count, 1);
+  EXPECT_TRUE(none.source.empty());
+}
+
+TEST(Shard, SlurmArraysByRangeAndStep) {
+  Shard s = shardFrom("", envOf({{"SLURM_ARRAY_TASK_ID", "3"}, {"SLURM_ARRAY_TASK_MIN", "0"}, {"SLURM_ARRAY_TASK_MAX", "15"},
+                                 {"SLURM_ARRAY_TASK_COUNT", "16"}, {"SLURM_ARRAY_TASK_STEP", "1"}}));
+  EXPECT_EQ(s.index, 3);
+  EXPECT_EQ(s.count, 16);
+  EXPECT_EQ(s.source, "Slurm array task 3 (array 0-15, 16 tasks)");
+  // --array=4-34:2 (16 tasks); without _COUNT, from _MAX and _STEP.
+  s = shardFrom("", envOf({{"SLURM_ARRAY_TASK_ID", "10"}, {"SLURM_ARRAY_TASK_MIN", "4"}, {"SLURM_ARRAY_TASK_MAX", "34"},
+                           {"SLURM_ARRAY_TASK_STEP", "2"}}));
+  EXPECT_EQ(s.index, 3);
+  EXPECT_EQ(s.count, 16);
+  EXPECT_EQ(s.source, "Slurm array task 10 (array 4-34:2, 16 tasks)");
+}
+
+TEST(Shard, KubernetesAndAwsBatch) {
+  Shard s = shardFrom("", envOf({{"JOB_COMPLETION_INDEX", "7"}, {"GLOSSY_SHARD_COUNT", "16"}}));
+  EXPECT_EQ(s.index, 7);
+  EXPECT_EQ(s.count, 16);
+  EXPECT_NE(s.source.find("Kubernetes"), std::string::npos);
+  s = shardFrom("", envOf({{"AWS_BATCH_JOB_ARRAY_INDEX", "0"}, {"AWS_BATCH_JOB_ARRAY_SIZE", "2"}}));
+  EXPECT_EQ(s.index, 0);
+  EXPECT_EQ(s.count, 2);
+  EXPECT_NE(s.source.find("AWS Batch"), std::string::npos);
+}
+
+TEST(Shard, MalformedArraysAreInputErrorsNamingTheVariable) {
+  const auto error = [](std::map<std::string, std::string> vars) {
+    return expectInputError([&] { shardFrom("", envOf(vars)); });
+  };
+  EXPECT_NE(error({{"SLURM_ARRAY_TASK_ID", "3"}}).find("SLURM_ARRAY_TASK_MIN is not set"), std::string::npos);
+  EXPECT_NE(error({{"SLURM_ARRAY_TASK_ID", "x"}, {"SLURM_ARRAY_TASK_MIN", "0"}, {"SLURM_ARRAY_TASK_COUNT", "2"}}).find("SLURM_ARRAY_TASK_ID: 'x'"),
+            std::string::npos);
+  // --array=1,4,9: Slurm gives MIN 1, MAX 9, COUNT 3; task 4 is not 1 + k.
+  EXPECT_NE(error({{"SLURM_ARRAY_TASK_ID", "4"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_MAX", "9"},
+                   {"SLURM_ARRAY_TASK_COUNT", "3"}, {"SLURM_ARRAY_TASK_STEP", "1"}})
+                .find("MIN-MAX[:STEP]"),
+            std::string::npos);
+  EXPECT_NE(error({{"JOB_COMPLETION_INDEX", "2"}}).find("GLOSSY_SHARD_COUNT is not set"), std::string::npos);
+  EXPECT_NE(error({{"AWS_BATCH_JOB_ARRAY_INDEX", "5"}, {"AWS_BATCH_JOB_ARRAY_SIZE", "5"}}).find("is not below"), std::string::npos);
+  EXPECT_NE(error({{"AWS_BATCH_JOB_ARRAY_INDEX", "-1"}, {"AWS_BATCH_JOB_ARRAY_SIZE", "5"}}).find("AWS_BATCH_JOB_ARRAY_INDEX"),
+            std::string::npos);
+  EXPECT_NE(expectInputError([] { shardFrom("0/3/4", envOf({})); }).find("--shard"), std::string::npos);
+}
+
+TEST(Shard, EveryItemGoesToExactlyOneShardAndCostsBalance) {
+  // 100 sheets, six of them with a measured panel (3 × the cost of an analytic one), in name order among
+  // the others: by position alone, 16 shards would put two of the six in one shard.
+  std::vector<double> costs(100, 6.0);
+  for (size_t k : {0, 16, 32, 48, 64, 80}) costs[k] = 9.0;
+  for (int count : {1, 3, 16, 100, 130}) {
+    std::multiset<size_t> seen;
+    double most = 0.0, least = 1e300;
+    for (int i = 0; i < count; ++i) {
+      const std::vector<size_t> mine = shardItems(costs, {i, count, "test"});
+      EXPECT_TRUE(std::is_sorted(mine.begin(), mine.end()));
+      double load = 0.0;
+      for (size_t k : mine) seen.insert(k), load += costs[k];
+      most = std::max(most, load), least = std::min(least, load);
+    }
+    EXPECT_EQ(seen.size(), costs.size()) << count;
+    EXPECT_EQ(std::set<size_t>(seen.begin(), seen.end()).size(), costs.size()) << count << ": an item in two shards";
+    // Longest first onto the least loaded: no shard exceeds another by more than the largest item.
+    EXPECT_LE(most - least, 9.0) << count;
+  }
+  // The six expensive items land in six different shards of 16.
+  std::set<int> shardsOfMeasured;
+  for (int i = 0; i < 16; ++i)
+    for (size_t k : shardItems(costs, {i, 16, "test"}))
+      if (costs[k] == 9.0) {
+        EXPECT_TRUE(shardsOfMeasured.insert(i).second) << "shard " << i;
+      }
+}
