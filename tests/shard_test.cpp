@@ -15,7 +15,7 @@ using namespace glossy::cli;
 
 namespace {
 
-Environment envOf(std::map<std::string, std::string> vars) {
+ArrayVariables envOf(std::map<std::string, std::string> vars) {
   auto held = std::make_shared<std::map<std::string, std::string>>(std::move(vars));
   return [held](const char* name) -> const char* {
     const auto it = held->find(name);

@@ -21,7 +21,7 @@ std::optional<long long> wholeNumber(const char* text, long long lo) {
   return (long long)*v;
 }
 
-long long required(const Environment& env, const char* name, long long lo, const std::string& why) {
+long long required(const ArrayVariables& env, const char* name, long long lo, const std::string& why) {
   const char* text = env(name);
   const auto v = wholeNumber(text, lo);
   if (!v)
@@ -30,7 +30,7 @@ long long required(const Environment& env, const char* name, long long lo, const
   return *v;
 }
 
-Shard slurmShard(const Environment& env) {
+Shard slurmShard(const ArrayVariables& env) {
   const std::string why = " (a Slurm array task; or pass --shard i/N)";
   const long long id = required(env, "SLURM_ARRAY_TASK_ID", 0, why), min = required(env, "SLURM_ARRAY_TASK_MIN", 0, why);
   const long long step = env("SLURM_ARRAY_TASK_STEP") ? required(env, "SLURM_ARRAY_TASK_STEP", 1, why) : 1;
@@ -47,7 +47,7 @@ Shard slurmShard(const Environment& env) {
                     step > 1 ? formatted(":%lld", step).c_str() : "", count)};
 }
 
-Shard indexedShard(const Environment& env, const char* indexName, const char* countName, const char* scheduler) {
+Shard indexedShard(const ArrayVariables& env, const char* indexName, const char* countName, const char* scheduler) {
   const std::string why = std::string(" (") + scheduler + "; or pass --shard i/N)";
   const long long index = required(env, indexName, 0, why), count = required(env, countName, 1, why);
   if (index >= count)
@@ -57,7 +57,7 @@ Shard indexedShard(const Environment& env, const char* indexName, const char* co
 
 }  // namespace
 
-Shard shardFrom(const std::string& option, const Environment& env) {
+Shard shardFrom(const std::string& option, const ArrayVariables& env) {
   if (!option.empty()) {
     int i = -1, n = 0, used = 0;
     char slash = 0;

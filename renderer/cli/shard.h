@@ -17,15 +17,15 @@ struct Shard {
   std::string source;  // for the log: "--shard 3/16", "Slurm array task 7 (array 4-34:2, 16 tasks)", ...
 };
 
-// The variables an array scheduler sets (getenv, or a map in tests).
-using Environment = std::function<const char*(const char*)>;
+// The variables an array scheduler sets, by name (getenv, or a map in tests).
+using ArrayVariables = std::function<const char*(const char*)>;
 
 // --shard i/N when `option` is not empty; else SLURM_ARRAY_TASK_ID with SLURM_ARRAY_TASK_MIN and
 // SLURM_ARRAY_TASK_COUNT (or _MAX, with _STEP), JOB_COMPLETION_INDEX with GLOSSY_SHARD_COUNT (a Kubernetes
 // indexed Job does not tell its pods the completions), AWS_BATCH_JOB_ARRAY_INDEX with
 // AWS_BATCH_JOB_ARRAY_SIZE; else the whole batch. InputError naming the option or the variables when they
 // are malformed or do not describe a regular array.
-Shard shardFrom(const std::string& option, const Environment& env);
+Shard shardFrom(const std::string& option, const ArrayVariables& env);
 Shard shardFrom(const std::string& option);  // the process's environment
 
 // The items of `shard`, in their order: the batch split by expected cost (longest first, each to the

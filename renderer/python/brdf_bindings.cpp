@@ -34,7 +34,6 @@ struct Rows {
   const double* data = nullptr;
   size_t n = 0;
   bool single = false;
-
   size_t stride = 3;  // 0 for a single row
 
   Vec3 operator[](size_t i) const {
@@ -43,7 +42,7 @@ struct Rows {
   }
 };
 
-Rows rowsOf(const py::handle& value, const char* name, py::ssize_t width = 3) {
+Rows rowsOf(const py::handle& value, const char* name) {
   Rows r;
   r.array = InArray::ensure(value);
   if (!r.array) {
@@ -51,17 +50,16 @@ Rows rowsOf(const py::handle& value, const char* name, py::ssize_t width = 3) {
     throw InputError(formatted("%s: not an array of numbers", name));
   }
   const py::ssize_t nd = r.array.ndim();
-  if (nd == 1 && r.array.shape(0) == width) {
+  if (nd == 1 && r.array.shape(0) == 3) {
     r.single = true;
     r.n = 1;
     r.stride = 0;
-  } else if (nd == 2 && r.array.shape(1) == width) {
+  } else if (nd == 2 && r.array.shape(1) == 3) {
     r.n = size_t(r.array.shape(0));
   } else {
     std::string shape;
     for (py::ssize_t k = 0; k < nd; ++k) shape += (k ? ", " : "") + std::to_string(r.array.shape(k));
-    throw InputError(formatted("%s: expected shape (N, %zd) or (%zd,), got (%s%s)", name, width, width, shape.c_str(),
-                               nd == 1 ? "," : ""));
+    throw InputError(formatted("%s: expected shape (N, 3) or (3,), got (%s%s)", name, shape.c_str(), nd == 1 ? "," : ""));
   }
   r.data = r.array.data();
   return r;
@@ -117,8 +115,6 @@ struct FirstBad {
   bool any() const { return row.load() != std::numeric_limits<size_t>::max(); }
 };
 
-// body(i, ok, l, v) for every row i in [begin, end), l and v its directions made unit as glossy eval makes
-// them (makeUnitDirection), ok false (and the row recorded) where either is zero or not finite.
 // A row read in place (rows are float64 triples, as Vec3 is) when it is a unit vector already, else its
 // copy made unit in `copy`; null when it cannot be made one.
 const Vec3* unitRow(const double* row, Vec3& copy) {
@@ -129,6 +125,8 @@ const Vec3* unitRow(const double* row, Vec3& copy) {
   return makeUnitDirection(copy) ? &copy : nullptr;
 }
 
+// body(i, ok, l, v) for every row i in [begin, end), l and v its directions made unit as glossy eval makes
+// them (makeUnitDirection), ok false (and the row recorded) where either is zero or not finite.
 template <class Body>
 void forUnitPairs(const Rows& L, const Rows& V, size_t begin, size_t end, FirstBad& badL, FirstBad& badV, const Body& body) {
   static_assert(sizeof(Vec3) == 3 * sizeof(double) && alignof(Vec3) == alignof(double));

@@ -170,8 +170,9 @@ sleep 1
 scancel "${array}_2"
 victim=${materials[2]}
 wait_jobs "$array" 600
-scancel "$merge" 2>/dev/null || true  # afterok can no longer hold
+# afterok can no longer hold: the merge job cancels itself (--kill-on-invalid-dep).
 wait_jobs "$merge" 60
+[ "$(state "$merge")" = CANCELLED ] || failed "the merge job of the cancelled array is $(state "$merge")"
 [ ! -e "$work/resume/$victim.exr" ] || failed "the cancelled task's sheet exists"
 declare -A before
 for m in "${materials[@]}"; do
