@@ -67,7 +67,11 @@ TEST(Shard, MalformedArraysAreInputErrorsNamingTheVariable) {
   EXPECT_NE(error({{"SLURM_ARRAY_TASK_ID", "3"}}).find("SLURM_ARRAY_TASK_MIN is not set"), std::string::npos);
   EXPECT_NE(error({{"SLURM_ARRAY_TASK_ID", "x"}, {"SLURM_ARRAY_TASK_MIN", "0"}, {"SLURM_ARRAY_TASK_COUNT", "2"}}).find("SLURM_ARRAY_TASK_ID: 'x'"),
             std::string::npos);
-  // --array=1,4,9: Slurm gives MIN 1, MAX 9, COUNT 3; task 4 is not 1 + k.
+  // --array=1,4,9: Slurm gives MIN 1, MAX 9, COUNT 3: every task is refused, task 1 too.
+  EXPECT_NE(error({{"SLURM_ARRAY_TASK_ID", "1"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_MAX", "9"},
+                   {"SLURM_ARRAY_TASK_COUNT", "3"}, {"SLURM_ARRAY_TASK_STEP", "1"}})
+                .find("MIN-MAX[:STEP]"),
+            std::string::npos);
   EXPECT_NE(error({{"SLURM_ARRAY_TASK_ID", "4"}, {"SLURM_ARRAY_TASK_MIN", "1"}, {"SLURM_ARRAY_TASK_MAX", "9"},
                    {"SLURM_ARRAY_TASK_COUNT", "3"}, {"SLURM_ARRAY_TASK_STEP", "1"}})
                 .find("MIN-MAX[:STEP]"),

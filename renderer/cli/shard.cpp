@@ -37,8 +37,10 @@ Shard slurmShard(const ArrayVariables& env) {
   const long long count = env("SLURM_ARRAY_TASK_COUNT")
                               ? required(env, "SLURM_ARRAY_TASK_COUNT", 1, why)
                               : (required(env, "SLURM_ARRAY_TASK_MAX", min, why) - min) / step + 1;
-  // A range min-max:step numbers its tasks; a list such as 1,4,9 does not say which of them this one is.
-  if (id < min || (id - min) % step != 0 || (id - min) / step >= count)
+  // A range min-max:step numbers its tasks; a list such as 1,4,9 does not say which of them this one is (nor,
+  // when Slurm gives _MAX too, does it span min + (count - 1) step).
+  const bool range = !env("SLURM_ARRAY_TASK_MAX") || required(env, "SLURM_ARRAY_TASK_MAX", min, why) == min + (count - 1) * step;
+  if (!range || id < min || (id - min) % step != 0 || (id - min) / step >= count)
     throw InputError(formatted("SLURM_ARRAY_TASK_ID=%lld is not task k of the range %lld + %lld k, k < %lld: submit the array as "
                                "MIN-MAX[:STEP], or pass --shard i/N", id, min, step, count));
   const long long max = min + (count - 1) * step;
