@@ -38,16 +38,37 @@ T castOr(const py::handle& value, const std::string& message) {
   }
 }
 
+// A keyword's value when it was given (and is not None).
+std::optional<py::object> given(const py::kwargs& a, const char* key) {
+  if (!a.contains(key) || a[key].is_none()) return std::nullopt;
+  return py::reinterpret_borrow<py::object>(a[key]);
+}
+std::optional<int> integerArg(const py::kwargs& a, const char* key, long long lo, long long hi) {
+  const auto v = given(a, key);
+  if (!v) return std::nullopt;
+  return checkedInt(key, castOr<long long>(*v, std::string(key) + ": must be a whole number"), lo, hi);
+}
+std::optional<double> realArg(const py::kwargs& a, const char* key, double lo, double hi, bool loOpen = false) {
+  const auto v = given(a, key);
+  if (!v) return std::nullopt;
+  return checkedReal(key, castOr<double>(*v, std::string(key) + ": must be a number"), lo, hi, loOpen);
+}
+bool flagArg(const py::kwargs& a, const char* key) {
+  const auto v = given(a, key);
+  return v && castOr<bool>(*v, std::string(key) + ": must be True or False");
+}
+
 std::string optionalPath(const py::object& path) { return path.is_none() ? std::string() : pathText(path); }
 
 // The scene keywords as the command line's scene options (their messages name --env-constant and so on).
-cli::SceneOptions sceneOptions(const py::object& scene, const py::object& camera, const py::object& env,
-                               const py::object& envConstant, double envRotate) {
+cli::SceneOptions sceneOptions(const py::kwargs& a) {
+  const auto text = [&](const char* key) { return given(a, key) ? pathText(*given(a, key)) : std::string(); };
   cli::SceneOptions o;
-  o.scene = optionalPath(scene);
-  o.camera = camera.is_none() ? std::string() : castOr<std::string>(camera, "camera: must be a string");
-  o.env = optionalPath(env);
-  if (!envConstant.is_none()) {
+  o.scene = text("scene");
+  o.camera = given(a, "camera") ? castOr<std::string>(*given(a, "camera"), "camera: must be a string") : std::string();
+  o.env = text("env");
+  if (const auto radiance = given(a, "env_constant")) {
+    const py::object& envConstant = *radiance;
     std::vector<double> v;
     if (py::isinstance<py::float_>(envConstant) || py::isinstance<py::int_>(envConstant)) v = {envConstant.cast<double>()};
     else v = castOr<std::vector<double>>(envConstant, "env_constant: expected a radiance or (R, G, B)");
@@ -55,7 +76,7 @@ cli::SceneOptions sceneOptions(const py::object& scene, const py::object& camera
     if (v.empty()) o.envConstant = "[]";
   }
   if (!o.env.empty() && !o.envConstant.empty()) throw InputError("env and env_constant: give one of them");
-  o.envRotate = checkedReal("env_rotate", envRotate, -360.0, 360.0);
+  o.envRotate = realArg(a, "env_rotate", -360.0, 360.0).value_or(0.0);
   return o;
 }
 
@@ -82,10 +103,9 @@ py::array_t<float> renderArray(const py::kwargs& a) {
   checkKeywords("render", a, {"scene", "material", "fit", "measured", "brdf", "merl_dir", "camera", "env", "env_constant",
                               "env_rotate", "spp", "size", "seed", "threads", "max_depth", "light_samples", "brdf_sampling",
                               "reference", "progress", "output", "half"});
-  auto get = [&](const char* key) { return a.contains(key) ? py::reinterpret_borrow<py::object>(a[key]) : py::object(py::none()); };
+  auto get = [&](const char* key) { return given(a, key).value_or(py::none()); };
   cli::RenderJob job;
-  job.scene = sceneOptions(get("scene"), get("camera"), get("env"), get("env_constant"),
-                           get("env_rotate").is_none() ? 0.0 : castOr<double>(get("env_rotate"), "env_rotate: must be a number"));
+  job.scene = sceneOptions(a);
   const py::object material = get("material"), fit = get("fit"), measured = get("measured"), brdf = get("brdf");
   if (!brdf.is_none() && (!material.is_none() || !measured.is_none()))
     throw InputError("brdf: give a brdf, a material and its fit, or measured data: one of them");
@@ -104,21 +124,20 @@ py::array_t<float> renderArray(const py::kwargs& a) {
   }
   RenderSettings& s = job.settings;
   std::tie(s.width, s.height) = sizeOf(get("size"), 512, 1, 1 << 15);
-  if (!get("spp").is_none()) s.spp = checkedInt("spp", castOr<long long>(get("spp"), "spp: must be a whole number"), 1, INT32_MAX);
-  if (!get("seed").is_none()) s.seed = seedOf(castOr<long long>(get("seed"), "seed: must be a whole number"));
-  if (!get("threads").is_none()) s.threads = checkedInt("threads", castOr<long long>(get("threads"), "threads: must be a whole number"), 0, cli::kMaxThreads);
-  if (!get("max_depth").is_none()) s.maxDepth = checkedInt("max_depth", castOr<long long>(get("max_depth"), "max_depth: must be a whole number"), 1, 1000);
-  if (!get("light_samples").is_none())
-    s.lightSamples = checkedInt("light_samples", castOr<long long>(get("light_samples"), "light_samples: must be a whole number"), 1, kMaxLightSamples);
+  if (auto v = integerArg(a, "spp", 1, INT32_MAX)) s.spp = *v;
+  if (auto v = given(a, "seed")) s.seed = seedOf(castOr<long long>(*v, "seed: must be a whole number"));
+  if (auto v = integerArg(a, "threads", 0, cli::kMaxThreads)) s.threads = *v;
+  if (auto v = integerArg(a, "max_depth", 1, 1000)) s.maxDepth = *v;
+  if (auto v = integerArg(a, "light_samples", 1, kMaxLightSamples)) s.lightSamples = *v;
   if (!get("brdf_sampling").is_none()) {
     job.brdfSampling = castOr<std::string>(get("brdf_sampling"), "brdf_sampling: must be a string");
     if (job.brdfSampling != "lobe" && job.brdfSampling != "cosine")
       throw InputError("brdf_sampling: must be 'lobe' or 'cosine', not '" + shortened(job.brdfSampling) + "'");
   }
-  if (!get("reference").is_none()) s.reference = castOr<bool>(get("reference"), "reference: must be True or False");
+  s.reference = flagArg(a, "reference");
   s.progress = false;
   const std::string output = optionalPath(get("output"));
-  const bool half = !get("half").is_none() && castOr<bool>(get("half"), "half: must be True or False");
+  const bool half = flagArg(a, "half");
   if (!output.empty()) cli::checkOutputFile(output, "output", {".exr"}, cli::Folder::Create);
   cli::checkImageMemory(s.width, s.height, 1, cli::kRenderBytesPerPixel);
 
@@ -177,11 +196,10 @@ std::shared_ptr<PySheet> renderSheetOf(const py::kwargs& a) {
   checkKeywords("sheet", a, {"material", "measured", "merl_dir", "scene", "camera", "env", "env_constant", "env_rotate", "spp",
                              "size", "time", "target_error", "seed", "threads", "max_depth", "light_samples", "exposure", "half",
                              "progress", "output"});
-  auto get = [&](const char* key) { return a.contains(key) ? py::reinterpret_borrow<py::object>(a[key]) : py::object(py::none()); };
+  auto get = [&](const char* key) { return given(a, key).value_or(py::none()); };
   auto sheet = std::make_shared<PySheet>();
   cli::SheetJob& job = sheet->job;
-  job.scene = sceneOptions(get("scene"), get("camera"), get("env"), get("env_constant"),
-                           get("env_rotate").is_none() ? 0.0 : castOr<double>(get("env_rotate"), "env_rotate: must be a number"));
+  job.scene = sceneOptions(a);
   const py::object material = get("material");
   if (material.is_none()) throw InputError("material: a material file (or glossy.Material) is required");
   const std::string materialPath =
@@ -190,18 +208,17 @@ std::shared_ptr<PySheet> renderSheetOf(const py::kwargs& a) {
   job.merlDir = optionalPath(get("merl_dir"));
   SheetSettings& s = job.settings;
   std::tie(s.width, s.height) = sizeOf(get("size"), 256, 8, 1 << 14);
-  if (!get("time").is_none()) s.secondsPerPanel = checkedReal("time", castOr<double>(get("time"), "time: must be a number"), 0.0, 1e6, true);
-  if (!get("target_error").is_none()) s.targetError = checkedReal("target_error", castOr<double>(get("target_error"), "target_error: must be a number"), 0.0, 10.0, true);
+  if (auto v = realArg(a, "time", 0.0, 1e6, true)) s.secondsPerPanel = *v;
+  if (auto v = realArg(a, "target_error", 0.0, 10.0, true)) s.targetError = *v;
   // As glossy sheet: --time and --target-error render until they are met; spp caps them only when given.
-  if (!get("spp").is_none()) s.spp = checkedInt("spp", castOr<long long>(get("spp"), "spp: must be a whole number"), 1, 1 << 24);
+  if (auto v = integerArg(a, "spp", 1, 1 << 24)) s.spp = *v;
   else if (s.secondsPerPanel > 0.0 || s.targetError > 0.0) s.spp = 1 << 24;
-  if (!get("seed").is_none()) s.seed = seedOf(castOr<long long>(get("seed"), "seed: must be a whole number"));
-  if (!get("threads").is_none()) s.threads = checkedInt("threads", castOr<long long>(get("threads"), "threads: must be a whole number"), 0, cli::kMaxThreads);
-  if (!get("max_depth").is_none()) s.maxDepth = checkedInt("max_depth", castOr<long long>(get("max_depth"), "max_depth: must be a whole number"), 1, 1000);
-  if (!get("light_samples").is_none())
-    s.lightSamples = checkedInt("light_samples", castOr<long long>(get("light_samples"), "light_samples: must be a whole number"), 1, kMaxLightSamples);
-  if (!get("exposure").is_none()) job.exposure = checkedReal("exposure", castOr<double>(get("exposure"), "exposure: must be a number"), -64.0, 64.0);
-  job.half = !get("half").is_none() && castOr<bool>(get("half"), "half: must be True or False");
+  if (auto v = given(a, "seed")) s.seed = seedOf(castOr<long long>(*v, "seed: must be a whole number"));
+  if (auto v = integerArg(a, "threads", 0, cli::kMaxThreads)) s.threads = *v;
+  if (auto v = integerArg(a, "max_depth", 1, 1000)) s.maxDepth = *v;
+  if (auto v = integerArg(a, "light_samples", 1, kMaxLightSamples)) s.lightSamples = *v;
+  if (auto v = realArg(a, "exposure", -64.0, 64.0)) job.exposure = *v;
+  job.half = flagArg(a, "half");
   s.progress = false;
   const std::string output = optionalPath(get("output"));
   if (!output.empty()) cli::checkOutputFile(output, "output", {".exr"}, cli::Folder::Create);
