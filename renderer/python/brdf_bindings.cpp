@@ -9,6 +9,7 @@
 #include "materials/core/unit_direction.h"
 #include "materials/models/registry.h"
 #include "renderer/cli/brdf_options.h"
+#include "renderer/cli/command.h"
 
 #include <pybind11/stl.h>
 #include <tbb/blocked_range.h>
@@ -150,7 +151,7 @@ void throwBadDirection(const FirstBad& badL, const FirstBad& badV, const Rows& L
   throw InputError(formatted("%s[%zu]: a direction is zero or not finite", l ? "L" : "V", (l ? L.single : V.single) ? 0 : row));
 }
 
-int checkedThreads(int threads) { return checkedInt("threads", threads, 0, 4096); }
+int checkedThreads(int threads) { return checkedInt("threads", threads, 0, cli::kMaxThreads); }
 
 py::array_t<double> evalRows(const Brdf& brdf, const py::handle& lArg, const py::handle& vArg, const py::object& out, int threads) {
   checkedThreads(threads);
@@ -221,18 +222,6 @@ py::tuple sampleRows(const Brdf& brdf, const py::handle& vArg, const py::handle&
   return py::make_tuple(L, density, weight);
 }
 
-py::object paramValue(const ParamSet::Value& value) {
-  if (const auto* d = std::get_if<double>(&value)) return py::float_(*d);
-  if (const auto* c = std::get_if<Rgb>(&value)) return py::make_tuple(c->r, c->g, c->b);
-  return py::str(std::get<std::string>(value));
-}
-
-py::dict paramsDict(const ParamSet& params) {
-  py::dict d;
-  for (const auto& [key, value] : params.values()) d[py::str(key)] = paramValue(value);
-  return d;
-}
-
 PyBrdf brdfOfFit(const Fit& fit, const std::string& from) {
   return PyBrdf{makeBrdf(fit), fit.id.model, fit.id.str() + (from.empty() ? "" : " of " + from), fit.params};
 }
@@ -271,6 +260,16 @@ const Fit& fitOf(const PyMaterial& m, const std::string& id) {
 }
 
 }  // namespace
+
+py::dict paramsDict(const ParamSet& params) {
+  py::dict d;
+  for (const auto& [key, value] : params.values()) {
+    if (const auto* x = std::get_if<double>(&value)) d[py::str(key)] = *x;
+    else if (const auto* c = std::get_if<Rgb>(&value)) d[py::str(key)] = py::make_tuple(c->r, c->g, c->b);
+    else d[py::str(key)] = std::get<std::string>(value);
+  }
+  return d;
+}
 
 void bindBrdfs(py::module_& m) {
   py::class_<PyBrdf, std::shared_ptr<PyBrdf>>(m, "Brdf", R"doc(

@@ -32,4 +32,7 @@ struct PyMaterial {
   MaterialFile file;
 };
 
+// A fit's parameters as Python values: floats, (R, G, B) tuples and choices.
+py::dict paramsDict(const ParamSet& params);
+
 }  // namespace glossy::python

@@ -45,15 +45,7 @@ void bindFitting(py::module_& m) {
       .def_property_readonly("model", [](const PyFit& f) { return f.report.fit.id.model; })
       .def_property_readonly("metric", [](const PyFit& f) { return f.report.fit.id.metric; })
       .def_property_readonly("error", [](const PyFit& f) { return f.report.error; }, "E under the fit's metric.")
-      .def_property_readonly("params", [](const PyFit& f) {
-             py::dict d;
-             for (const auto& [key, value] : f.report.fit.params.values()) {
-               if (const auto* x = std::get_if<double>(&value)) d[py::str(key)] = *x;
-               else if (const auto* c = std::get_if<Rgb>(&value)) d[py::str(key)] = py::make_tuple(c->r, c->g, c->b);
-               else d[py::str(key)] = std::get<std::string>(value);
-             }
-             return d;
-           })
+      .def_property_readonly("params", [](const PyFit& f) { return paramsDict(f.report.fit.params); })
       .def_property_readonly("brdf", [](const PyFit& f) {
              return std::make_shared<PyBrdf>(PyBrdf{makeBrdf(f.report.fit), f.report.fit.id.model,
                                                     f.report.fit.id.str() + " fitted to " + f.table, f.report.fit.params});
