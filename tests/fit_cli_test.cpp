@@ -2,12 +2,14 @@
 // tables the tests write; and the published fits against shared/merl's tables.
 #include "materials/fitting/metric.h"
 #include "materials/params/material_file.h"
+#include "renderer/image/exr_image.h"
 #include "tests/support/test_support.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstring>
+#include <regex>
 
 namespace glossy::test {
 
@@ -33,7 +35,7 @@ TEST(CliFit, UpdatesTheMaterialFileKeepingItsOtherFitsAndRecordsTheErrorAndSetti
   const RunResult r = runGlossy({"fit", "--measured", table.string(), "--model", "cook-torrance", "--metric", "E1", "-o", toml.string()});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(r.out.empty());
-  EXPECT_NE(r.err.find("cook-torrance:E1: E1 = "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("cook-torrance:E1:glossy: E1 = "), std::string::npos) << r.err;
 
   const MaterialFile m = loadMaterialFile(toml);
   ASSERT_EQ(m.fits.size(), 2u);
@@ -51,7 +53,7 @@ TEST(CliFit, UpdatesTheMaterialFileKeepingItsOtherFitsAndRecordsTheErrorAndSetti
   ASSERT_EQ(json["fits"].size(), 2u);
   bool seen = false;
   for (const auto& f : json["fits"]) {
-    if (f["fit"] != "cook-torrance:E1") continue;
+    if (f["fit"] != "cook-torrance:E1:glossy") continue;
     seen = true;
     EXPECT_NEAR(f["E1"].get<double>(), *fit->error, 1e-12);
     EXPECT_NEAR(f["stored"].get<double>(), *fit->error, 0.0);
@@ -62,8 +64,62 @@ TEST(CliFit, UpdatesTheMaterialFileKeepingItsOtherFitsAndRecordsTheErrorAndSetti
 
   const RunResult t = runGlossy({"error", "--measured", table.string(), "--material", toml.string()});
   ASSERT_EQ(t.status, 0) << t.err;
-  EXPECT_NE(t.out.find("cook-torrance:E1"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("cook-torrance:E1:glossy"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("ashikhmin-shirley:E2"), std::string::npos) << t.out;
+}
+
+// The README's own example: fitting into the library's file adds glossy's fit beside the paper's, which
+// stays as it was; a second fit replaces glossy's first and says so; only --replace removes the paper's. A
+// sheet shows the paper's fit under the paper's label, and glossy's labelled as glossy's.
+TEST(CliFit, AddsItsFitBesideThePublishedOneAndNeverReplacesItUnasked) {
+  TempDir dir;
+  const auto table = writeTable(dir, "alum-bronze", kTruth);
+  const auto toml = dir / "alum-bronze.toml";
+  std::filesystem::copy_file(materialsDir() / "alum-bronze.toml", toml);
+  const MaterialFile published = loadMaterialFile(toml);
+  const FitId ctE2 = FitId::parse("cook-torrance:E2", "test"), glossys = FitId::parse("cook-torrance:E2:glossy", "test");
+  const std::vector<std::string> fit = {"fit", "--measured", table.string(), "--model", "cook-torrance", "--metric", "E2",
+                                        "--starts", "1", "--max-iterations", "20", "-o", toml.string()};
+
+  RunResult r = runGlossy(fit);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("the published cook-torrance:E2 fit stays beside it"), std::string::npos) << r.err;
+  MaterialFile m = loadMaterialFile(toml);
+  ASSERT_EQ(m.fits.size(), 7u);
+  EXPECT_EQ(*m.findExact(ctE2), *published.findExact(ctE2)) << "the paper's fit untouched";
+  EXPECT_EQ(m.find(ctE2), m.findExact(ctE2)) << "MODEL:METRIC still names the paper's";
+  const Fit* mine = m.findExact(glossys);
+  ASSERT_NE(mine, nullptr);
+  EXPECT_EQ(mine->data, "alum-bronze.binary");
+  EXPECT_EQ(mine->database, "MERL");
+  EXPECT_TRUE(std::regex_match(mine->date, std::regex(R"(\d{4}-\d{2}-\d{2})"))) << mine->date;
+  ASSERT_TRUE(mine->error.has_value());
+  EXPECT_NE(readText(toml).find("by = \"glossy\""), std::string::npos);
+
+  r = runGlossy(fit);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("replaces glossy's earlier cook-torrance:E2:glossy fit (E2 = "), std::string::npos) << r.err;
+  EXPECT_EQ(loadMaterialFile(toml).fits.size(), 7u);
+
+  // A sheet of the file: the paper's fit in its slot, under its label.
+  const auto sheet = [&](const std::string& name) {
+    const RunResult s = runGlossy({"sheet", "--material", toml.string(), "--width", "16", "--height", "16", "--spp", "4", "-o",
+                                   (dir / (name + ".exr")).string()});
+    EXPECT_EQ(s.status, 0) << s.err;
+    return std::pair{readImageAttribute(dir / (name + ".exr"), "glossy:panel.cook_torrance_E2.label"),
+                     readImageAttribute(dir / (name + ".exr"), "glossy:panel.cook_torrance_E2.fit")};
+  };
+  EXPECT_EQ(sheet("both"), std::pair(std::string("CT E2"), std::string("cook-torrance:E2")));
+
+  r = runGlossy([&] { auto a = fit; a.push_back("--replace"); return a; }());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("removes the published cook-torrance:E2 fit (--replace)"), std::string::npos) << r.err;
+  m = loadMaterialFile(toml);
+  EXPECT_EQ(m.fits.size(), 6u);
+  EXPECT_EQ(m.findExact(ctE2), nullptr);
+  ASSERT_NE(m.find(ctE2), nullptr);
+  EXPECT_TRUE(m.find(ctE2)->id.isGlossys()) << "glossy's stays marked as glossy's";
+  EXPECT_EQ(sheet("glossys"), std::pair(std::string("CT E2 (glossy fit)"), std::string("cook-torrance:E2:glossy")));
 }
 
 TEST(CliFit, WithoutAnOutputFileWritesTheNewMaterialToStdout) {
@@ -75,6 +131,7 @@ TEST(CliFit, WithoutAnOutputFileWritesTheNewMaterialToStdout) {
   EXPECT_EQ(m.name, "plain");
   EXPECT_EQ(m.measured, "plain.binary");
   ASSERT_EQ(m.fits.size(), 1u);
+  EXPECT_EQ(m.fits[0].id.str(), "ashikhmin-shirley:E2:glossy");
   const Rgb kd = m.fits[0].params.rgb("kd");
   EXPECT_NEAR(kd.r, 0.3, 0.01);
   EXPECT_NEAR(kd.b, 0.1, 0.01);
@@ -126,6 +183,49 @@ TEST(CliFit, BatchFitsEveryTableAndResumes) {
   EXPECT_NE(again.err.find("2 fits, 2 already done"), std::string::npos) << again.err;
   EXPECT_EQ(again.err.find("[1/2]"), std::string::npos) << again.err;
   EXPECT_EQ(readText(dir / "fits" / "one.toml"), before);
+}
+
+// A batch into a folder that holds the library's file follows the same rule: glossy's fits beside the
+// paper's, which stay; and it resumes past its own fits only, never taking the paper's for one of them.
+TEST(CliFit, BatchAddsBesideThePublishedFitsAndResumesPastItsOwnOnly) {
+  TempDir dir;
+  std::filesystem::create_directories(dir / "tables");
+  std::filesystem::create_directories(dir / "lib");
+  writeText(dir / "tables" / "alum-bronze.binary", tabulatedMerlBytes(kTruth));
+  std::filesystem::copy_file(materialsDir() / "alum-bronze.toml", dir / "lib" / "alum-bronze.toml");
+  const std::string before = readText(dir / "lib" / "alum-bronze.toml");
+  const std::vector<std::string> args = {"fit", "--measured-dir", (dir / "tables").string(), "--out-dir", (dir / "lib").string(),
+                                         "--model", "cook-torrance", "--metric", "E2", "--starts", "1", "--max-iterations", "20"};
+  RunResult r = runGlossy(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("1 fits, 0 already done"), std::string::npos) << r.err;
+  const MaterialFile m = loadMaterialFile(dir / "lib" / "alum-bronze.toml");
+  ASSERT_EQ(m.fits.size(), 7u);
+  EXPECT_EQ(*m.findExact(FitId::parse("cook-torrance:E2", "test")),
+            *parseMaterialToml(before, "before").findExact(FitId::parse("cook-torrance:E2", "test")));
+  ASSERT_NE(m.findExact(FitId::parse("cook-torrance:E2:glossy", "test")), nullptr);
+  r = runGlossy(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("1 fits, 1 already done"), std::string::npos) << r.err;
+}
+
+// Before 'by', glossy fit wrote its fits unmarked; a batch resumes past them still (their settings say
+// whose they are), rather than fit them again.
+TEST(CliFit, BatchResumesPastFitsAnEarlierGlossyWroteUnmarked) {
+  TempDir dir;
+  std::filesystem::create_directories(dir / "tables");
+  writeText(dir / "tables" / "one.binary", tabulatedMerlBytes(kTruth));
+  const std::vector<std::string> args = {"fit", "--measured-dir", (dir / "tables").string(), "--out-dir", (dir / "fits").string(),
+                                         "--model", "cook-torrance", "--metric", "E1", "--starts", "1", "--max-iterations", "10"};
+  ASSERT_EQ(runGlossy(args).status, 0);
+  std::string text = readText(dir / "fits" / "one.toml");
+  for (const std::string cut : {"by = \"glossy\"\n", "data = \"one.binary\"\n", "database = \"MERL\"\n"})
+    text.erase(text.find(cut), cut.size());
+  text = std::regex_replace(text, std::regex("date = .*\n"), "");
+  writeText(dir / "fits" / "one.toml", text);
+  const RunResult r = runGlossy(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("1 fits, 1 already done"), std::string::npos) << r.err;
 }
 
 TEST(CliError, PublishedFitsAgainstTheSharedTablesGiveFiniteErrors) {

@@ -14,42 +14,94 @@ using namespace glossy::test;
 
 namespace {
 
-// A parameter file holding `fits` of alum-bronze's, under the name `name`.
-void writeFits(const std::filesystem::path& path, const std::string& name, const std::vector<std::string>& fits) {
+// A parameter file holding `fits` of alum-bronze's, under the name `name`; as glossy's own fits (as glossy fit
+// --out-dir writes them) when `glossys`.
+void writeFits(const std::filesystem::path& path, const std::string& name, const std::vector<std::string>& fits, bool glossys = true) {
   MaterialFile m = loadMaterialFile(materialsDir() / "alum-bronze.toml");
   m.name = name;
   std::vector<Fit> kept;
-  for (const Fit& f : m.fits)
-    if (std::find(fits.begin(), fits.end(), f.id.str()) != fits.end()) kept.push_back(f);
+  for (Fit f : m.fits)
+    if (std::find(fits.begin(), fits.end(), f.id.str()) != fits.end()) {
+      if (glossys) f.id.by = FitId::kGlossy, f.date = "2026-12-01", f.settings = "grid";
+      kept.push_back(f);
+    }
   m.fits = kept;
   writeText(path, toToml(m));
 }
 
 }  // namespace
 
-TEST(MergeCli, FitsGoIntoTheLibraryKeepingTheOthers) {
+TEST(MergeCli, FitsGoIntoTheLibraryBesideThePublishedOnes) {
   TempDir tmp;
   std::filesystem::create_directories(tmp / "shards");
   std::filesystem::create_directories(tmp / "lib");
   writeFits(tmp / "shards/alpha.toml", "alpha", {"cook-torrance:E2", "smooth:E2"});
   writeFits(tmp / "shards/beta.toml", "beta", {"microfacet:E2"});
-  writeFits(tmp / "lib/alpha.toml", "alpha", {"cook-torrance:E2", "ashikhmin-shirley:E1"});
-  // The library's CT E2 differs: the shard's replaces it.
+  writeFits(tmp / "lib/alpha.toml", "alpha", {"cook-torrance:E2", "ashikhmin-shirley:E1"}, false);
+  // The library also holds glossy's earlier CT E2, which differs: the shard's replaces it, saying so.
   MaterialFile libAlpha = loadMaterialFile(tmp / "lib/alpha.toml");
-  for (Fit& f : libAlpha.fits)
-    if (f.id.model == "cook-torrance") f.params.set("m", 0.5);
+  Fit earlier = *libAlpha.findExact({"cook-torrance", "E2"});
+  earlier.id.by = FitId::kGlossy, earlier.date = "2026-11-30", earlier.params.set("m", 0.5);
+  libAlpha.put(earlier);
   writeText(tmp / "lib/alpha.toml", toToml(libAlpha));
+  const MaterialFile published = loadMaterialFile(tmp / "lib/alpha.toml");
 
   const RunResult r = runGlossy({"merge", "fits", (tmp / "shards").string(), "-o", (tmp / "lib").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("3 fits of 2 materials"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("1 replacing"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("glossy's cook-torrance:E2:glossy fit replaced by " + (tmp / "shards/alpha.toml").string() +
+                       "'s of 2026-12-01 (it was of 2026-11-30)"),
+            std::string::npos)
+      << r.err;
   const MaterialFile alpha = loadMaterialFile(tmp / "lib/alpha.toml");
   const MaterialFile shardAlpha = loadMaterialFile(tmp / "shards/alpha.toml");
-  ASSERT_EQ(alpha.fits.size(), 3u);
-  EXPECT_TRUE(alpha.find({"ashikhmin-shirley", "E1"})) << "a fit of another model is kept";
-  EXPECT_EQ(*alpha.find({"cook-torrance", "E2"}), *shardAlpha.find({"cook-torrance", "E2"}));
+  ASSERT_EQ(alpha.fits.size(), 4u);
+  EXPECT_TRUE(alpha.findExact({"ashikhmin-shirley", "E1"})) << "a fit of another model is kept";
+  EXPECT_EQ(*alpha.findExact({"cook-torrance", "E2"}), *published.findExact({"cook-torrance", "E2"})) << "the paper's fit kept";
+  EXPECT_EQ(*alpha.findExact({"cook-torrance", "E2", "glossy"}), *shardAlpha.findExact({"cook-torrance", "E2", "glossy"}));
   EXPECT_EQ(loadMaterialFile(tmp / "lib/beta.toml").fits.size(), 1u) << "a new material's file is made";
+}
+
+// A file's published fit where the library has a different one: refused, the library as it was; with
+// --replace, replaced, saying so.
+TEST(MergeCli, APublishedFitIsNeverReplacedUnasked) {
+  TempDir tmp;
+  std::filesystem::create_directories(tmp / "shards");
+  std::filesystem::create_directories(tmp / "lib");
+  writeFits(tmp / "lib/alpha.toml", "alpha", {"cook-torrance:E2"}, false);
+  const std::string library = readText(tmp / "lib/alpha.toml");
+  MaterialFile other = parseMaterialToml(library, "alpha.toml");
+  other.fits[0].params.set("m", 0.5);
+  writeText(tmp / "shards/alpha.toml", toToml(other));
+  const std::vector<std::string> merge = {"merge", "fits", (tmp / "shards").string(), "-o", (tmp / "lib").string()};
+  const RunResult refused = runGlossy(merge);
+  expectOneLineError(refused, "published cook-torrance:E2 fit differs from the one in " + (tmp / "shards/alpha.toml").string());
+  EXPECT_NE(refused.err.find("--replace"), std::string::npos) << refused.err;
+  EXPECT_EQ(readText(tmp / "lib/alpha.toml"), library);
+
+  // The same published fit again is no change.
+  writeText(tmp / "shards/alpha.toml", library);
+  ASSERT_EQ(runGlossy(merge).status, 0);
+  EXPECT_EQ(readText(tmp / "lib/alpha.toml"), library);
+
+  writeText(tmp / "shards/alpha.toml", toToml(other));
+  const RunResult replaced = runGlossy([&] { auto a = merge; a.push_back("--replace"); return a; }());
+  ASSERT_EQ(replaced.status, 0) << replaced.err;
+  EXPECT_NE(replaced.err.find("the published cook-torrance:E2 fit replaced by"), std::string::npos) << replaced.err;
+  EXPECT_EQ(loadMaterialFile(tmp / "lib/alpha.toml").fits, other.fits);
+}
+
+// Two files of the folder naming one material: which should win is not glossy's to guess.
+TEST(MergeCli, TwoFilesNamingOneMaterialAreRefused) {
+  TempDir tmp;
+  std::filesystem::create_directories(tmp / "shards");
+  writeFits(tmp / "shards/alpha.toml", "alpha", {"cook-torrance:E2"});
+  writeFits(tmp / "shards/alpha-again.toml", "alpha", {"smooth:E2"});
+  const RunResult r = runGlossy({"merge", "fits", (tmp / "shards").string(), "-o", (tmp / "lib").string()});
+  expectOneLineError(r, "alpha.toml");
+  EXPECT_NE(r.err.find("alpha-again.toml"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(tmp / "lib/alpha.toml"));
 }
 
 TEST(MergeCli, BadInputChangesNothing) {

@@ -38,7 +38,8 @@ size_t modelRank(const std::string& model) {
 
 bool gridBefore(const Fit& a, const Fit& b) {
   const size_t ra = modelRank(a.id.model), rb = modelRank(b.id.model);
-  return ra != rb ? ra < rb : a.id.metric < b.id.metric;
+  if (ra != rb) return ra < rb;
+  return a.id.metric != b.id.metric ? a.id.metric < b.id.metric : a.id.by < b.id.by;
 }
 
 std::string formatNumber(double v) {
@@ -110,9 +111,16 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
     const std::string key(k.str());
     const std::string here = tomlAt(source, node) + fitLabel(index, fit.id) + ": key '" + key + "'";
     if (key == "model" || key == "metric") continue;
-    if (key == "source" || key == "settings") {
+    if (key == "by") {
+      if (!node.is_string() || node.as_string()->get() != FitId::kGlossy)
+        throw InputError(here + ": must be \"glossy\" (it marks glossy's own fits; a published fit has no 'by')");
+      fit.id.by = FitId::kGlossy;
+      continue;
+    }
+    if (key == "source" || key == "settings" || key == "data" || key == "database" || key == "date") {
       if (!node.is_string()) throw InputError(here + ": must be a string");
-      (key == "source" ? fit.source : fit.settings) = node.as_string()->get();
+      (key == "source" ? fit.source : key == "settings" ? fit.settings : key == "data" ? fit.data : key == "database" ? fit.database : fit.date) =
+          node.as_string()->get();
       continue;
     }
     if (key == "error") {
@@ -125,7 +133,7 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
     if (spec == model->params.end()) {
       std::vector<std::string_view> keys{"model", "metric"};
       for (const ParamSpec& s : model->params) keys.push_back(s.key);
-      for (std::string_view k : {"source", "error", "settings"}) keys.push_back(k);
+      for (std::string_view k : {"by", "source", "error", "data", "database", "date", "settings"}) keys.push_back(k);
       throw InputError(here + ": unknown key for the " + fit.id.model + " model (its keys: " + quoteList(keys) + ")");
     }
     switch (spec->kind) {
@@ -155,6 +163,9 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
     }
     checkParam(*spec, *fit.params.find(key), here);
   }
+  // Only `glossy fit` writes settings: a fit written before 'by' existed that has them is glossy's, not the
+  // paper's (it may stand where the README once had glossy fit replace a published fit).
+  if (!fit.settings.empty()) fit.id.by = FitId::kGlossy;
   validateFit(fit, where);
   return fit;
 }
@@ -167,16 +178,28 @@ FitId FitId::parse(std::string_view text, std::string_view context) {
   if (colon == std::string_view::npos)
     throw InputError(std::string(context) + ": '" + std::string(text) + "' is not MODEL:METRIC (e.g. microfacet:E2)");
   id.model = std::string(text.substr(0, colon));
-  id.metric = std::string(text.substr(colon + 1));
+  std::string_view rest = text.substr(colon + 1);
+  if (const auto second = rest.find(':'); second != std::string_view::npos) {
+    id.by = std::string(rest.substr(second + 1));
+    rest = rest.substr(0, second);
+    if (id.by != FitId::kGlossy)
+      throw InputError(std::string(context) + ": '" + std::string(text) + "' is not MODEL:METRIC or MODEL:METRIC:glossy (glossy's own fit)");
+  }
+  id.metric = std::string(rest);
   requireModel(id.model, std::string(context));
   checkMetric(id.metric, std::string(context) + ": metric");
   return id;
 }
 
-const Fit* MaterialFile::find(const FitId& id) const {
+const Fit* MaterialFile::findExact(const FitId& id) const {
   for (const Fit& f : fits)
     if (f.id == id) return &f;
   return nullptr;
+}
+
+const Fit* MaterialFile::find(const FitId& id) const {
+  if (const Fit* exact = findExact(id); exact || !id.by.empty()) return exact;
+  return findExact({id.model, id.metric, std::string(FitId::kGlossy)});
 }
 
 void MaterialFile::put(Fit fit) {
@@ -246,7 +269,7 @@ MaterialFile parseMaterialToml(std::string_view text, const std::string& source)
         throw InputError(here + ": must be an array of tables ([[fit]] sections)");
       for (size_t i = 0; i < fits->size(); ++i) {
         Fit fit = readFit(*fits->get(i)->as_table(), i, source);
-        if (m.find(fit.id))
+        if (m.findExact(fit.id))
           throw InputError(tomlAt(source, *fits->get(i)) + fitLabel(i, fit.id) + ": a second " + fit.id.str() +
                            " fit (a material has at most one fit per model and metric)");
         m.put(std::move(fit));
@@ -273,6 +296,7 @@ std::string toToml(const MaterialFile& m) {
   for (const Fit& fit : m.fits) {
     const ModelInfo* model = findModel(fit.id.model);
     out << "\n[[fit]]\nmodel = " << quoteToml(fit.id.model) << "\nmetric = " << quoteToml(fit.id.metric) << "\n";
+    if (!fit.id.by.empty()) out << "by = " << quoteToml(fit.id.by) << "\n";
     for (const ParamSpec& spec : model->params) {
       const ParamSet::Value* v = fit.params.find(spec.key);
       if (!v) continue;
@@ -285,6 +309,8 @@ std::string toToml(const MaterialFile& m) {
     }
     if (!fit.source.empty()) out << "source = " << quoteToml(fit.source) << "\n";
     if (fit.error) out << "error = " << formatNumber(*fit.error) << "\n";
+    for (const auto& [key, value] : {std::pair{"data", &fit.data}, {"database", &fit.database}, {"date", &fit.date}})
+      if (!value->empty()) out << key << " = " << quoteToml(*value) << "\n";
     if (!fit.settings.empty()) out << "settings = " << quoteToml(fit.settings) << "\n";
   }
   return out.str();

@@ -13,12 +13,20 @@
 
 namespace glossy {
 
+// A fit's name. A published fit (the paper's, imported) is MODEL:METRIC; glossy's own fit of the same model
+// and metric is MODEL:METRIC:glossy, so that the two stand side by side in one file and neither is taken
+// for the other.
 struct FitId {
   std::string model;   // a registry name: "cook-torrance"
   std::string metric;  // "E1" | "E2"
-  std::string str() const { return model + ":" + metric; }
+  std::string by = {};  // "" for a published fit, kGlossy for a fit `glossy fit` made
+
+  static constexpr std::string_view kGlossy = "glossy";
+  bool isGlossys() const { return by == kGlossy; }
+  std::string str() const { return model + ":" + metric + (by.empty() ? "" : ":" + by); }
   bool operator==(const FitId&) const = default;
-  // Parses "MODEL:METRIC"; throws InputError mentioning `context` (e.g. "--fit") when malformed or unknown.
+  // Parses "MODEL:METRIC" or "MODEL:METRIC:glossy"; throws InputError mentioning `context` (e.g. "--fit")
+  // when malformed or unknown.
   static FitId parse(std::string_view text, std::string_view context);
 };
 
@@ -26,9 +34,12 @@ struct Fit {
   FitId id;
   ParamSet params;
   std::string source;  // provenance of this fit when it differs from the material's
-  // Set by `glossy fit`: the error E it reached under its metric, and how it was made (grid, starts).
+  // Set by `glossy fit`: the error E it reached under its metric, and how it was made (grid, starts); the
+  // data it was fitted to (its file name, "alum-bronze.binary.xz", and its database, "MERL (NBRDF
+  // reconstruction)") and the day (YYYY-MM-DD, UTC).
   std::optional<double> error;
   std::string settings;
+  std::string data, database, date;
   bool operator==(const Fit&) const = default;
 };
 
@@ -39,8 +50,14 @@ struct MaterialFile {
   std::vector<Fit> fits;  // at most one per FitId, kept in the comparison grid's order
   std::filesystem::path path;  // where it was loaded from, for messages; empty if built in memory
 
+  // The fit an id names, as every command and Python look fits up: MODEL:METRIC is the published fit, or
+  // glossy's when the file has no published one (a file `glossy fit` started); MODEL:METRIC:glossy is
+  // glossy's only. nullptr if none.
   const Fit* find(const FitId& id) const;
-  // Adds the fit, or replaces the one with the same id; keeps the grid order.
+  // The fit with exactly this id (a published MODEL:METRIC never stands for glossy's).
+  const Fit* findExact(const FitId& id) const;
+  // Adds the fit, or replaces the one with exactly the same id; keeps the grid order (a published fit
+  // before glossy's of the same model and metric).
   void put(Fit fit);
 };
 

@@ -51,12 +51,14 @@ std::shared_ptr<const MerlTable> loadMeasured(const std::filesystem::path& path)
   return table;
 }
 
-std::string measuredLabel(const std::filesystem::path& path) {
+std::string measuredDatabase(const std::filesystem::path& path) {
   std::error_code ec;
   const bool reconstruction =
       path.extension() == ".nbrdf" || std::filesystem::exists(path.parent_path() / "nbrdf_weights", ec);
-  return std::string(reconstruction ? "MERL (NBRDF reconstruction) " : "MERL ") + path.string();
+  return reconstruction ? "MERL (NBRDF reconstruction)" : "MERL";
 }
+
+std::string measuredLabel(const std::filesystem::path& path) { return measuredDatabase(path) + " " + path.string(); }
 
 std::filesystem::path findMeasured(const std::string& given, const std::filesystem::path& merlDir) {
   const auto path = resolveMeasured(given, merlDir);

@@ -27,6 +27,8 @@ std::shared_ptr<const MerlTable> loadMeasured(const std::filesystem::path& path)
 // How a sheet or an image names that data: "MERL (NBRDF reconstruction) FILE" for a network or a table of
 // shared/merl (whose folder says so beside them), else "MERL FILE".
 std::string measuredLabel(const std::filesystem::path& path);
+// The database part of that name: "MERL (NBRDF reconstruction)" or "MERL".
+std::string measuredDatabase(const std::filesystem::path& path);
 
 // The file a --measured option names: as given, else under --merl-dir, else $GLOSSY_MERL_DIR (each also
 // as .xz); InputError naming it when none exists.

@@ -5,10 +5,10 @@
 #include "materials/core/notes.h"
 #include "materials/core/text.h"
 #include "materials/fitting/fitter.h"
-#include "materials/params/material_name.h"
 #include "renderer/cli/brdf_options.h"
 #include "renderer/cli/command.h"
 #include "renderer/cli/destination.h"
+#include "renderer/cli/fit_output.h"
 #include "renderer/cli/output.h"
 #include "renderer/cli/shard.h"
 
@@ -27,22 +27,8 @@ struct FitOptions {
   std::string measured, merlDir, output, measuredDir, outDir, shard;
   std::vector<std::string> models, metrics;
   FitSettings settings;
+  bool replace = false;
 };
-
-// "alum-bronze.binary.xz" → "alum-bronze".
-std::string materialNameOf(const std::filesystem::path& table) {
-  std::string name = table.filename().string();
-  for (std::string_view suffix : {".nbrdf", ".xz", ".binary"})
-    if (name.size() > suffix.size() && name.ends_with(suffix)) name.resize(name.size() - suffix.size());
-  // It names --out-dir's NAME.toml and the file's `name`, which the loader holds to the same rule.
-  checkMaterialName(name, table.string());
-  return name;
-}
-
-MaterialFile loadOrStart(const std::filesystem::path& path, const std::filesystem::path& table) {
-  if (std::error_code ec; std::filesystem::exists(path, ec)) return loadMaterialFile(path);
-  return measuredMaterial(materialNameOf(table), "glossy fit to " + table.filename().string());
-}
 
 std::string formatSeconds(double s) { return s < 120 ? formatted("%.1f s", s) : formatted("%.0f min", s / 60.0); }
 
@@ -69,14 +55,15 @@ int runSingle(const FitOptions& o) {
   const Metric metric = parseMetric(o.metrics[0], "--metric");
   requireFittable(o.models[0]);
   // Validate the output file before the (slow) fit.
-  MaterialFile material = loadOrStart(std::filesystem::path(o.output), tablePath);
+  MaterialFile material = materialForFit(o.output, tablePath);
   const auto table = loadMeasured(tablePath);
   flushNotes();  // the input is good: what loading it noted comes before the (slow) fit
   const MetricData data(*table, metric);
   FitReport report = fitModel(data, o.models[0], o.settings);
-  report.fit.source = "glossy fit to " + tablePath.filename().string();
+  stampGlossysFit(report.fit, tablePath);
   std::cerr << "glossy: " << tablePath.filename().string() << " " << describeFit(report) << "\n";
-  material.put(report.fit);
+  const std::string replaced = putGlossysFit(material, report.fit, o.replace);
+  if (!replaced.empty()) std::cerr << "glossy: " << (o.output.empty() ? std::string("the fit") : o.output) << ": " << replaced << "\n";
   if (o.output.empty()) return writeStdout(toToml(material));
   writeFileAtomically(o.output, toToml(material));
   return 0;
@@ -146,10 +133,10 @@ int runBatch(const FitOptions& o) {
   size_t done = 0;
   for (size_t t = 0; t < tables.size(); ++t) {
     const std::filesystem::path out = std::filesystem::path(o.outDir) / (materialNameOf(tables[t]) + ".toml");
-    const MaterialFile existing = loadOrStart(out, tables[t]);
+    const MaterialFile existing = materialForFit(out, tables[t]);
     for (const auto& model : models)
       for (Metric metric : metrics) {
-        const Fit* f = existing.find({model, std::string(metricName(metric))});
+        const Fit* f = existing.findExact({model, std::string(metricName(metric)), std::string(FitId::kGlossy)});
         if (f && f->settings == settings) ++done;  // made by this version with these settings: resume past it
         else jobs.push_back({t, model, metric});
       }
@@ -172,16 +159,17 @@ int runBatch(const FitOptions& o) {
     auto& d = data[job.metric];
     if (!d) d = std::make_unique<MetricData>(*table, job.metric);
     FitReport report = fitModel(*d, job.model, o.settings);
-    report.fit.source = "glossy fit to " + tables[job.table].filename().string();
+    stampGlossysFit(report.fit, tables[job.table]);
     const std::filesystem::path out = std::filesystem::path(o.outDir) / (materialNameOf(tables[job.table]) + ".toml");
-    MaterialFile material = loadOrStart(out, tables[job.table]);
-    material.put(report.fit);
+    MaterialFile material = materialForFit(out, tables[job.table]);
+    const std::string replaced = putGlossysFit(material, report.fit, o.replace);
     writeFileAtomically(out, toToml(material));  // after each fit, so an interrupted batch resumes here
 
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double eta = elapsed / double(j + 1) * double(jobs.size() - j - 1);
     std::cerr << "glossy: [" << done + j + 1 << "/" << total << "] " << materialNameOf(tables[job.table]) << " " << describeFit(report)
               << "; ETA " << formatSeconds(eta) << "\n";
+    if (!replaced.empty()) std::cerr << "glossy: " << out.string() << ": " << replaced << "\n";
   }
   return 0;
 }
@@ -195,12 +183,14 @@ Command addFitCommand(CLI::App& parent) {
   app->add_option("--merl-dir", o->merlDir, "where to look for --measured (else $GLOSSY_MERL_DIR)");
   app->add_option("--model", o->models, "model to fit: " + fittableModelNames() + " (batch: repeatable, default all)");
   app->add_option("--metric", o->metrics, "E1 or E2 (batch: repeatable, default both)");
-  app->add_option("-o,--output", o->output, "material TOML to write or update (keeps its other fits); default: stdout");
+  app->add_option("-o,--output", o->output,
+                  "material TOML to write or update: the fit goes in as MODEL:METRIC:glossy, its other fits are kept; default: stdout");
   app->add_option("--measured-dir", o->measuredDir, "batch: fit every table (or .nbrdf network) in this folder");
   app->add_option("--out-dir", o->outDir, "batch: one material TOML per table here; fits already made are skipped");
   app->add_option("--shard", o->shard,
                   "batch: i/N: only shard i (0-based) of N, the tables split by expected cost; default: the job array's "
                   "task (Slurm, Kubernetes indexed Job, AWS Batch; docs/cluster.md)");
+  app->add_flag("--replace", o->replace, "also remove the published fit of the model and metric fitted (never done without it)");
   app->add_option("--starts", o->settings.refinedStarts, "lobe widths refined from the coarse scan")->check(CLI::Range(1, 64));
   app->add_option("--max-iterations", o->settings.maxIterations, "Levenberg-Marquardt iterations per start")->check(CLI::Range(1, 10000));
   app->add_option("--threads", o->settings.threads, "threads (default: all cores); the result does not depend on it")->check(CLI::Range(1, 256));

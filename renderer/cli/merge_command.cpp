@@ -1,5 +1,6 @@
 // glossy merge: what the shards of a job array made, brought together (docs/cluster.md).
-//   glossy merge fits DIR -o LIBRARY          each DIR/NAME.toml's fits put into LIBRARY/NAME.toml (other fits kept)
+//   glossy merge fits DIR -o LIBRARY          each DIR/NAME.toml's fits put into LIBRARY/NAME.toml (other fits kept;
+//                                             a published fit never replaced unless --replace)
 //   glossy merge sheets DIR --csv F --json F  every sheet's error figures in one table
 // Both read and check everything before writing anything, and write atomically.
 #include "materials/core/atomic_file.h"
@@ -23,6 +24,7 @@ namespace {
 
 struct MergeOptions {
   std::string fitsDir, library, sheetsDir, csv, json;
+  bool replace = false;
 };
 
 std::vector<std::filesystem::path> tomlFiles(const std::filesystem::path& dir) {
@@ -35,33 +37,59 @@ std::vector<std::filesystem::path> tomlFiles(const std::filesystem::path& dir) {
   return files;
 }
 
+// The rule of glossy fit -o (fit_output.h), for fits that come from files: glossy's fit replaces glossy's
+// earlier one of the same model and metric, saying so; a published fit is added where the library has
+// none, and never replaces a different published one unless --replace. Two files naming one material are
+// refused: which of them should win is the user's to say.
 int runMergeFits(const MergeOptions& o) {
   checkOutputFolder(o.library, "-o");
-  // Everything read first: a bad file anywhere fails the merge before a file is written.
-  std::map<std::string, MaterialFile> merged;  // by material name
-  size_t fits = 0, replaced = 0;
+  // Everything read and checked first: a bad file anywhere fails the merge before a file is written.
+  struct Merged {
+    MaterialFile material;
+    std::filesystem::path from;  // the shard file
+    bool changed = false;
+  };
+  std::map<std::string, Merged> merged;  // by material name
+  std::vector<std::string> replacedLines;
+  size_t fits = 0, unchanged = 0;
   for (const auto& path : tomlFiles(o.fitsDir)) {
     const MaterialFile shard = loadMaterialFile(path);
-    auto it = merged.find(shard.name);
-    if (it == merged.end()) {
-      const std::filesystem::path into = std::filesystem::path(o.library) / (shard.name + ".toml");
-      std::error_code ec;
-      MaterialFile start = std::filesystem::exists(into, ec) ? loadMaterialFile(into) : shard;
-      if (start.name != shard.name)
-        throw InputError(into.string() + ": names the material '" + start.name + "', not '" + shard.name + "' of " + path.string());
-      if (!std::filesystem::exists(into, ec)) start.fits.clear();
-      it = merged.emplace(shard.name, std::move(start)).first;
-    }
+    if (auto seen = merged.find(shard.name); seen != merged.end())
+      throw InputError(path.string() + ": names the material '" + shard.name + "', as " + seen->second.from.string() +
+                       " does: merge one of them at a time");
+    const std::filesystem::path into = std::filesystem::path(o.library) / (shard.name + ".toml");
+    std::error_code ec;
+    const bool exists = std::filesystem::exists(into, ec);
+    MaterialFile library = exists ? loadMaterialFile(into) : shard;
+    if (library.name != shard.name)
+      throw InputError(into.string() + ": names the material '" + library.name + "', not '" + shard.name + "' of " + path.string());
+    if (!exists) library.fits.clear();
+    Merged& m = merged.emplace(shard.name, Merged{std::move(library), path, !exists}).first->second;
     for (const Fit& f : shard.fits) {
-      replaced += it->second.find(f.id) != nullptr;
-      it->second.put(f);
       ++fits;
+      const Fit* there = m.material.findExact(f.id);
+      if (there && *there == f) {
+        ++unchanged;
+        continue;
+      }
+      if (there && !f.id.isGlossys() && !o.replace)
+        throw InputError(into.string() + ": its published " + f.id.str() + " fit differs from the one in " + path.string() +
+                         " (glossy merge never replaces a published fit; --replace does)");
+      if (there)
+        replacedLines.push_back(into.string() + ": " + (f.id.isGlossys() ? "glossy's " : "the published ") + f.id.str() +
+                                " fit replaced by " + path.string() + "'s" + (f.date.empty() ? "" : " of " + f.date) +
+                                (there->date.empty() ? "" : " (it was of " + there->date + ")"));
+      m.material.put(f);
+      m.changed = true;
     }
   }
   std::filesystem::create_directories(o.library);
-  for (const auto& [name, material] : merged) writeFileAtomically(std::filesystem::path(o.library) / (name + ".toml"), toToml(material));
-  std::cerr << "glossy merge: " << fits << " fits of " << merged.size() << " materials into " << o.library << " (" << replaced
-            << " replacing fits there)\n";
+  size_t written = 0;
+  for (const auto& [name, m] : merged)
+    if (m.changed) writeFileAtomically(std::filesystem::path(o.library) / (name + ".toml"), toToml(m.material)), ++written;
+  for (const std::string& line : replacedLines) std::cerr << "glossy merge: " << line << "\n";
+  std::cerr << "glossy merge: " << fits << " fits of " << merged.size() << " materials into " << o.library << " ("
+            << replacedLines.size() << " replacing fits there, " << unchanged << " already there; " << written << " files written)\n";
   return 0;
 }
 
@@ -136,9 +164,10 @@ Command addMergeCommand(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand("merge", "Bring together what the shards of a job array made (docs/cluster.md)");
   app->require_subcommand(1);
   CLI::App* fits = app->add_subcommand("fits", "Put every fit of DIR/NAME.toml (glossy fit --out-dir) into LIBRARY/NAME.toml, "
-                                               "keeping the fits already there of other models and metrics");
+                                               "keeping the fits already there of other models and metrics; glossy's fits go beside the published ones");
   fits->add_option("dir", o->fitsDir, "Folder of parameter files the shards wrote")->required();
   fits->add_option("-o,--output", o->library, "Folder of the parameter files to update (created when missing)")->required();
+  fits->add_flag("--replace", o->replace, "let a file's published fit replace a different published one there (refused without)");
   CLI::App* sheets = app->add_subcommand("sheets", "Every sheet's error figures (glossy sheets -o DIR) in one CSV and/or JSON table");
   sheets->add_option("dir", o->sheetsDir, "Folder of sheets")->required();
   sheets->add_option("--csv", o->csv, "One row per panel of every sheet");

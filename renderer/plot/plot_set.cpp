@@ -2,6 +2,7 @@
 
 #include "materials/core/unit_direction.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace glossy::plot {
@@ -19,8 +20,12 @@ CurveStyle PlotBrdf::style() const {
   CurveStyle s;
   s.colour = panel.colour.empty() ? "#999999" : panel.colour;
   s.width = isMeasured ? 2.2 : 1.6;
+  if (isMeasured) return s;
   // E1 fits dashed: the pairs of one model stay apart in print and for readers who confuse the colours.
-  if (!isMeasured && panel.fit.ends_with(":E1")) s.dash = "7 4";
+  // glossy's own fits dotted (dash-dotted under E1), apart from the published fit they share a colour with.
+  const FitId id = FitId::parse(panel.fit, "plot");
+  if (id.isGlossys()) s.dash = id.metric == "E1" ? "7 3 2 3" : "2 3";
+  else if (id.metric == "E1") s.dash = "7 4";
   return s;
 }
 
@@ -92,20 +97,20 @@ PlotSet makePlotSet(const MaterialFile& material, std::shared_ptr<const MerlTabl
   set.measuredLabel = measuredNote;
   PlotBrdf m{SheetPanel::measured(), true, measured != nullptr, measured ? "" : "no data", std::nullopt, measured};
   set.brdfs.push_back(std::move(m));
+  std::vector<const Fit*> shown;
   auto addFit = [&](const SheetPanel& panel) {
     const Fit* fit = material.find(FitId::parse(panel.fit, material.path.string()));
-    PlotBrdf b{panel, false, fit != nullptr, fit ? "" : "not in the file", std::nullopt, nullptr};
-    if (fit) b.fit = makeBrdf(*fit);
+    // A grid slot that only glossy's fit fills shows it under glossy's label.
+    PlotBrdf b{fit && fit->id.str() != panel.fit ? SheetPanel::ofFit(fit->id) : panel, false, fit != nullptr,
+               fit ? "" : "not in the file", std::nullopt, nullptr};
+    if (fit) b.fit = makeBrdf(*fit), shown.push_back(fit);
     set.brdfs.push_back(std::move(b));
   };
   for (const SheetPanel& panel : sheetPanels())
     if (!panel.fit.empty()) addFit(panel);
-  // Fits beyond the grid (glossy fit may add microfacet:E1, smooth:E1), in the file's order.
-  for (const Fit& fit : material.fits) {
-    bool inGrid = false;
-    for (const SheetPanel& panel : sheetPanels()) inGrid = inGrid || panel.fit == fit.id.str();
-    if (!inGrid) addFit(SheetPanel::ofFit(fit.id));
-  }
+  // Fits beyond the grid (glossy's own fits; glossy fit may add microfacet:E1, smooth:E1), in the file's order.
+  for (const Fit& fit : material.fits)
+    if (std::find(shown.begin(), shown.end(), &fit) == shown.end()) addFit(SheetPanel::ofFit(fit.id));
   return set;
 }
 

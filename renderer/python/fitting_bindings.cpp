@@ -3,7 +3,8 @@
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/fitting/fitter.h"
-#include "materials/params/material_name.h"
+#include "renderer/cli/destination.h"
+#include "renderer/cli/fit_output.h"
 #include "renderer/python/brdf_bindings.h"
 
 #include <pybind11/stl.h>
@@ -14,7 +15,7 @@ namespace {
 
 struct PyFit {
   FitReport report;
-  std::string table;  // the measured file, for the fit's source line
+  std::string table;  // the measured file the fit was made from
 };
 
 const PyMeasured& tableOf(const py::handle& table) {
@@ -23,19 +24,14 @@ const PyMeasured& tableOf(const py::handle& table) {
   return table.cast<const PyMeasured&>();
 }
 
-// The parameter file a fit goes into: updated when it exists (its other fits kept), else a new one named
-// after the file, as `glossy fit -o` does.
-void saveFit(const PyFit& f, const std::string& path) {
-  MaterialFile material;
-  if (std::error_code ec; std::filesystem::exists(path, ec)) {
-    material = loadMaterialFile(path);
-  } else {
-    const std::string name = std::filesystem::path(path).stem().string();
-    checkMaterialName(name, path);
-    material = measuredMaterial(name, "glossy fit to " + std::filesystem::path(f.table).filename().string());
-  }
-  material.put(f.report.fit);
+// What `glossy fit -o` does, through the same code: the output checked first, then the fit put in as
+// glossy's, beside a published one (removed only with replace), what it replaced said on stderr.
+void saveFit(const PyFit& f, const std::string& path, bool replace) {
+  cli::checkOutputFile(path, "path", {".toml"}, cli::Folder::Exist);
+  MaterialFile material = cli::materialForFit(path, f.table);
+  const std::string replaced = cli::putGlossysFit(material, f.report.fit, replace);
   writeFileAtomically(path, toToml(material));
+  if (!replaced.empty()) py::module_::import("sys").attr("stderr").attr("write")("glossy: " + path + ": " + replaced + "\n");
 }
 
 }  // namespace
@@ -53,8 +49,11 @@ void bindFitting(py::module_& m) {
       .def_property_readonly("start_errors", [](const PyFit& f) { return f.report.startErrors; },
                              "E each refined start reached, best scan point first.")
       .def_property_readonly("seconds", [](const PyFit& f) { return f.report.seconds; })
-      .def("save", [](const PyFit& f, const py::object& path) { guarded([&] { saveFit(f, pathText(path)); }); }, py::arg("path"),
-           "Puts the fit into a material parameter file (kept fits of other models and metrics), as `glossy fit -o` does.")
+      .def("save", [](const PyFit& f, const py::object& path, bool replace) { guarded([&] { saveFit(f, pathText(path), replace); }); },
+           py::arg("path"), py::kw_only(), py::arg("replace") = false,
+           "Puts the fit into a material parameter file as `glossy fit -o` does: as MODEL:METRIC:glossy, beside the published "
+           "fit of its model and metric (replace=True removes that one), replacing glossy's earlier one, the file's other fits "
+           "kept; a new file is named and measured after the data fitted.")
       .def("__repr__", [](const PyFit& f) {
         return "<glossy.Fit " + f.report.fit.id.str() + " E=" + std::to_string(f.report.error) + ">";
       });
@@ -90,7 +89,7 @@ docs/fitting.md): the figure `glossy error` prints.
               const MetricData grid(*data.table, which);
               out->report = fitModel(grid, model, settings);
             }
-            out->report.fit.source = "glossy fit to " + std::filesystem::path(data.path).filename().string();
+            cli::stampGlossysFit(out->report.fit, data.path);
             return out;
           });
         }, py::arg("table"), py::arg("model") = "cook-torrance", py::arg("metric") = "E2", py::kw_only(), py::arg("starts") = 4,

@@ -114,7 +114,7 @@ SheetPanel SheetPanel::measured() { return {"measured", "Measured", "", "#000000
 
 SheetPanel SheetPanel::ofFit(const FitId& fit) {
   const ModelInfo* model = findModel(fit.model);
-  std::string layer = fit.model + "_" + fit.metric;
+  std::string layer = fit.model + "_" + fit.metric + (fit.by.empty() ? "" : "_" + fit.by);
   std::replace(layer.begin(), layer.end(), '-', '_');
   // The grid's six first, then the two fits a file may have beyond it.
   static const std::pair<const char*, const char*> colours[] = {
@@ -123,8 +123,10 @@ SheetPanel SheetPanel::ofFit(const FitId& fit) {
       {"microfacet:E1", "#f0e442"},        {"smooth:E1", "#999999"}};
   std::string colour = "#999999";
   for (const auto& [name, c] : colours)
-    if (fit.str() == name) colour = c;
-  return {layer, std::string(model ? model->shortLabel : fit.model) + " " + fit.metric, fit.str(), colour};
+    if (FitId{fit.model, fit.metric}.str() == name) colour = c;
+  // The paper's label for a published fit; glossy's own fit says so wherever it is shown.
+  return {layer, std::string(model ? model->shortLabel : fit.model) + " " + fit.metric + (fit.isGlossys() ? " (glossy fit)" : ""),
+          fit.str(), colour};
 }
 
 std::span<const SheetPanel> sheetPanels() {
@@ -191,6 +193,8 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
       if (measured) brdf = Measured(measured);
       r.note = measuredNote;
     } else if (const Fit* fit = material.find(FitId::parse(panel.fit, material.path.string()))) {
+      // A file with only glossy's fit of a grid slot shows it there, labelled as glossy's.
+      if (fit->id.str() != panel.fit) r.panel.label = SheetPanel::ofFit(fit->id).label, r.panel.fit = fit->id.str();
       brdf = makeBrdf(*fit);
       if (measured) r.brdfE1 = e1->error(*brdf), r.brdfE2 = e2->error(*brdf);
       r.params = paramsText(*fit);

@@ -62,3 +62,41 @@ def test_help_explains():
     assert "Levenberg-Marquardt" in glossy.fit.__doc__
     assert "glossy render" in glossy.render.__doc__ and "KeyboardInterrupt" in glossy.render.__doc__
     assert "(N, 3)" in glossy.Brdf.eval.__doc__
+
+
+def test_save_is_glossy_fit_o(tmp_path, capsys):
+    """Fit.save is `glossy fit -o`: the same file, the material named and measured after the data fitted, not
+    after the output file; beside a published fit, which only replace=True removes."""
+    table_path = shared("merl", "gold-paint.binary.xz")
+    fit = glossy.fit(glossy.load_merl(table_path), model="cook-torrance", metric="E1", starts=1, max_iterations=15, threads=1)
+    (tmp_path / "x").mkdir()
+    saved = tmp_path / "x" / "gold-paint-myfit.toml"
+    fit.save(saved)
+    cli_out = tmp_path / "cli.toml"
+    run_cli("fit", "--measured", table_path, "--model", "cook-torrance", "--metric", "E1", "--starts", 1,
+            "--max-iterations", 15, "--threads", 1, "-o", cli_out)
+    doc, cli = tomllib.loads(saved.read_text()), tomllib.loads(cli_out.read_text())
+    assert (doc["name"], doc["measured"]) == ("gold-paint", "gold-paint.binary")
+    assert {k: v for k, v in doc.items() if k != "fit"} == {k: v for k, v in cli.items() if k != "fit"}
+    mine, theirs = doc["fit"][0], cli["fit"][0]
+    assert mine["by"] == "glossy" and mine["data"] == "gold-paint.binary.xz"
+    assert mine["database"] == "MERL (NBRDF reconstruction)"
+    for key in ("model", "metric", "by", "data", "database", "date", "settings"):
+        assert mine[key] == theirs[key], key
+    assert glossy.load_material(saved).fits == ["cook-torrance:E1:glossy"]
+
+    library = tmp_path / "gold-paint.toml"
+    library.write_text(material_path("gold-paint").read_text())
+    published = tomllib.loads(library.read_text())["fit"]
+    fit.save(library)
+    fits = tomllib.loads(library.read_text())["fit"]
+    assert all(f in fits for f in published)
+    assert len(fits) == len(published) + 1
+    assert "the published cook-torrance:E1 fit stays beside it" in capsys.readouterr().err
+    fit.save(library)
+    assert "replaces glossy's earlier cook-torrance:E1:glossy fit" in capsys.readouterr().err
+    fit.save(library, replace=True)
+    assert "removes the published cook-torrance:E1 fit" in capsys.readouterr().err
+    assert "cook-torrance:E1" not in glossy.load_material(library).fits
+    with pytest.raises(glossy.InputError, match="^path "):
+        fit.save(tmp_path / "no-such-folder" / "x.toml")
