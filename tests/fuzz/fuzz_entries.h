@@ -13,8 +13,10 @@ namespace glossy::fuzz {
 
 using Bytes = std::span<const uint8_t>;
 
-// First byte odd: a material parameter file; even: a Neural BRDF network (.nbrdf). The rest is the TOML.
+// A material parameter file (TOML).
 void tomlEntry(Bytes data);
+// A Neural BRDF network (.nbrdf, TOML).
+void nbrdfEntry(Bytes data);
 // A MERL table: first byte 'N': the bytes as the start of a full-size file whose remaining values are NaN;
 // other even: the bytes as a whole file; other odd: a .binary.xz file (merl_entry.cpp).
 void merlEntry(Bytes data);
@@ -22,6 +24,10 @@ void merlEntry(Bytes data);
 void gltfEntry(Bytes data);
 // An environment map: first byte odd: written as .exr, even: as .hdr; the rest is the file.
 void envmapEntry(Bytes data);
+// A sheet's EXR, as glossy report and glossy merge sheets read it; its panels cut out as the report does.
+void sheetEntry(Bytes data);
+// A plots folder's plots.json, as glossy report reads it, and the material page drawn with it.
+void plotsEntry(Bytes data);
 
 struct Target {
   std::string_view name;  // tests/fuzz/corpus/NAME, tests/fuzz/crashes/NAME, fuzz_NAME
@@ -29,6 +35,8 @@ struct Target {
 };
 
 inline constexpr Target kTargets[] = {
-    {"toml", tomlEntry}, {"merl", merlEntry}, {"gltf", gltfEntry}, {"envmap", envmapEntry}};
+    {"toml", tomlEntry},   {"nbrdf", nbrdfEntry}, {"merl", merlEntry},
+    {"gltf", gltfEntry},   {"envmap", envmapEntry}, {"sheet", sheetEntry},
+    {"plots", plotsEntry}};
 
 }  // namespace glossy::fuzz
