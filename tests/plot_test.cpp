@@ -193,6 +193,155 @@ TEST(PlotCli, CsvMatchesEvalWithoutMeasuredData) {
   checkCsvsAgainstEval(tmp / "out", fitArgs(material));
 }
 
+// chrome plotted from the network embedded beside it, in a folder with nothing else (as on a fresh clone):
+// a mirror lobe near 10^4 over diffuse floors near 10^-4, which a fixed span of decades cuts off.
+const std::filesystem::path& chromePlots() {
+  static TempDir tmp;
+  static const RunResult r = runGlossyIn(tmp.path(), {"GLOSSY_MERL_DIR"},
+                                         {"plot", "--material", (materialsDir() / "chrome.toml").string(), "-o", (tmp / "out").string()});
+  EXPECT_EQ(r.status, 0) << r.err;
+  static const std::filesystem::path out = tmp / "out";
+  return out;
+}
+
+// The log scale a caption states: "… 10^lo to 10^hi …".
+std::pair<int, int> captionDecades(const std::string& caption) {
+  std::smatch m;
+  if (!std::regex_search(caption, m, std::regex("10\\^(-?[0-9]+) to 10\\^(-?[0-9]+)"))) {
+    ADD_FAILURE() << "the caption names no range of decades: " << caption;
+    return {0, 0};
+  }
+  return {std::stoi(m[1]), std::stoi(m[2])};
+}
+
+// The positive values of a figure CSV's BRDF columns (not the direction, the angles or the log-ratio).
+std::map<std::string, std::vector<double>> brdfColumns(const std::filesystem::path& csv) {
+  std::map<std::string, std::vector<double>> out;
+  for (const Row& r : readCsv(csv))
+    for (const auto& [column, value] : r) {
+      if (column.size() == 2 || column.starts_with("theta_") || column.starts_with("phi_") || column == "log10_ratio") continue;
+      if (!value.empty() && *parseNumber(value) > 0.0) out[column].push_back(*parseNumber(value));
+    }
+  return out;
+}
+
+double percentile(std::vector<double> v, double q) {
+  const size_t n = std::min(v.size() - 1, size_t(q * double(v.size())));
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(n), v.end());
+  return v[n];
+}
+
+// The θh and polar figures' log axes follow the data: every curve's floor (its 2nd percentile) lies on the
+// axis, and the lowest decade is one some value reaches.
+TEST(PlotRange, EveryCurvesFloorIsOnTheLogAxes) {
+  const auto dir = chromePlots();
+  const nlohmann::json index = readIndex(dir);
+  size_t checked = 0;
+  for (const auto& f : index["figures"]) {
+    if (f["kind"] != "theta_h" && f["kind"] != "polar") continue;
+    const auto [lo, hi] = captionDecades(f["caption"]);
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const auto& [column, values] : brdfColumns(dir / std::string(f["csv"]))) {
+      EXPECT_GE(percentile(values, 0.02), std::pow(10.0, lo)) << f["kind"] << " " << column << ": its floor is cut off";
+      EXPECT_LE(*std::max_element(values.begin(), values.end()), std::pow(10.0, hi)) << f["kind"] << " " << column;
+      lowest = std::min(lowest, *std::min_element(values.begin(), values.end()));
+      ++checked;
+    }
+    EXPECT_LT(lowest, std::pow(10.0, lo + 1)) << f["kind"] << ": the axis reaches decades no value is in";
+    EXPECT_LE(hi - lo, plot::kMaxDecades);
+  }
+  EXPECT_EQ(checked, 14u);  // Measured and six fits, in two figures
+}
+
+// The image slices' colour scale is what their caption says: the decades holding the 0.5th to the 99.5th
+// percentile of all the slices' values.
+TEST(PlotRange, ImageSliceCaptionStatesItsColourScale) {
+  const auto dir = chromePlots();
+  const nlohmann::json index = readIndex(dir);
+  std::vector<double> all;
+  std::vector<std::pair<int, int>> stated;
+  for (const auto& f : index["figures"]) {
+    if (f["kind"] != "image_slice") continue;
+    stated.push_back(captionDecades(f["caption"]));
+    // Each slice's own BRDF: the column after the angles (Measured beside a fit is the measured slice's).
+    const std::string title = f["title"];
+    for (const auto& [column, values] : brdfColumns(dir / std::string(f["csv"])))
+      if (title.find("of " + column + ",") != std::string::npos) all.insert(all.end(), values.begin(), values.end());
+  }
+  ASSERT_EQ(stated.size(), 7u);
+  ASSERT_GT(all.size(), 7u * 8000u);
+  const int lo = int(std::floor(std::log10(percentile(all, 0.005)))), hi = int(std::ceil(std::log10(percentile(all, 0.995))));
+  for (const auto& s : stated) EXPECT_EQ(s, std::make_pair(lo, hi));
+}
+
+// --decades N: every log scale spans the N decades below its top, and the caption says so.
+TEST(PlotRange, DecadesOptionSetsEverySpan) {
+  TempDir tmp;
+  const auto material = withoutMeasured(tmp, "chrome");
+  const RunResult r = runGlossyIn(tmp.path(), {"GLOSSY_MERL_DIR"},
+                                  {"plot", "--material", material.string(), "--decades", "4", "--figures", "theta_h,polar,image_slice",
+                                   "-o", (tmp / "out").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json index = readIndex(tmp / "out");
+  ASSERT_EQ(index["figures"].size(), 8u);
+  for (const auto& f : index["figures"]) {
+    const auto [lo, hi] = captionDecades(f["caption"]);
+    EXPECT_EQ(hi - lo, 4) << f["caption"];
+    EXPECT_NE(std::string(f["caption"]).find("the 4 decades below the peak (--decades)"), std::string::npos) << f["caption"];
+  }
+  for (const char* bad : {"0", "-3", "x", "1e9"}) {
+    const RunResult b = runGlossyIn(tmp.path(), {"GLOSSY_MERL_DIR"},
+                                    {"plot", "--material", material.string(), "--decades", bad, "-o", (tmp / "bad").string()});
+    expectOneLineError(b, "--decades");
+  }
+}
+
+// Captions, titles, SVGs and plots.json go into papers and sites: they name the data by file, never by
+// where it lies on this machine.
+TEST(PlotCli, NoLocalPathInWhatItWrites) {
+  const auto dir = chromePlots();
+  const nlohmann::json index = readIndex(dir);
+  EXPECT_EQ(index["measured"], "MERL (NBRDF reconstruction) chrome.nbrdf");
+  const std::string local = materialsDir().parent_path().string();
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() == ".png") continue;
+    const std::string text = readText(entry.path());
+    EXPECT_EQ(text.find(local), std::string::npos) << entry.path() << " names " << local;
+    EXPECT_EQ(text.find(dir.parent_path().string()), std::string::npos) << entry.path();
+  }
+}
+
+// docs/plots.md's pipeline: a CSV's rows without the header, cut to their first six columns, are
+// `glossy eval`'s input, and eval gives the column the figure drew.
+TEST(PlotCli, CsvRowsPipeIntoEval) {
+  TempDir tmp;
+  const auto material = withoutMeasured(tmp, "chrome");
+  const RunResult r = runGlossyIn(tmp.path(), {"GLOSSY_MERL_DIR"},
+                                  {"plot", "--material", material.string(), "--figures", "theta_h,polar,image_slice", "-o", (tmp / "out").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const std::string name : {"theta_h", "polar", "image_slice_cook_torrance_E2"}) {
+    const auto csv = tmp / "out" / (name + ".csv");
+    const auto rows = readCsv(csv);
+    ASSERT_FALSE(rows.empty()) << csv;
+    const std::string header = readText(csv).substr(0, readText(csv).find('\n'));
+    EXPECT_TRUE(header.starts_with("Lx,Ly,Lz,Vx,Vy,Vz,")) << header;
+    const std::string out = (tmp / (name + ".eval")).string();
+    const std::string cmd = "tail -n +2 " + shellQuote(csv.string()) + " | cut -d, -f1-6 | " + shellQuote(GLOSSY_EXE) +
+                            " eval --material " + shellQuote(material.string()) + " --fit cook-torrance:E2 > " + shellQuote(out);
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    std::istringstream eval(readText(out));
+    std::string line;
+    for (size_t i = 0; i < rows.size(); ++i) {
+      ASSERT_TRUE(std::getline(eval, line)) << name << ": eval gave fewer lines than rows";
+      const auto rgb = parseNumberList(line);
+      ASSERT_TRUE(rgb && rgb->size() == 3) << line;
+      const double scale = name == "polar" ? num(rows[i], "Lz") : 1.0;  // the polar figure draws ρ cos θi
+      const double want = luminance(Rgb((*rgb)[0], (*rgb)[1], (*rgb)[2])) * scale;
+      EXPECT_NEAR(num(rows[i], "CT E2"), want, 1e-9 * std::abs(want) + 1e-300) << name << " row " << i + 2;
+    }
+  }
+}
+
 // The spec's "Reference values": directional albedo at V = N, red channel, of three materials' fits.
 struct SpecAlbedo {
   std::string material, label;
@@ -307,9 +456,15 @@ TEST(PlotChart, CurvesBreakAtMissingValues) {
   for (size_t at = text.find("<polyline"); at != std::string::npos; at = text.find("<polyline", at + 1)) ++lines;
   EXPECT_EQ(lines, 3u) << text;
   EXPECT_EQ(text.find("nan"), std::string::npos);
-  EXPECT_EQ(plot::decadeRange(0.02, 450.0, 3, 6), std::make_pair(-2, 3));
-  EXPECT_EQ(plot::decadeRange(1e-12, 450.0, 3, 6), std::make_pair(-3, 3));  // at most 6 decades, cut from below
-  EXPECT_EQ(plot::decadeRange(0.5, 0.9, 3, 6), std::make_pair(-3, 0));      // at least 3
+  EXPECT_EQ(plot::decadeRange(0.02, 450.0, 3), std::make_pair(-2, 3));
+  EXPECT_EQ(plot::decadeRange(2e-5, 450.0, 3), std::make_pair(-5, 3));     // down to the floor, however far
+  EXPECT_EQ(plot::decadeRange(1e-30, 450.0, 3), std::make_pair(-9, 3));    // but no wider than kMaxDecades
+  EXPECT_EQ(plot::decadeRange(0.5, 0.9, 3), std::make_pair(-3, 0));        // at least 3
+  EXPECT_EQ(plot::decadeRange(2e-5, 450.0, 3, 4), std::make_pair(-1, 3));  // --decades 4
+  EXPECT_EQ(plot::curveFloor({0.0, std::nan(""), 3.0, 2.0}), 2.0);
+  std::vector<double> toHorizon(100, 1e-2);
+  toHorizon[98] = 1e-9;  // the last point, where ρ cos θi falls to 0, is not the curve's floor
+  EXPECT_EQ(plot::curveFloor(toHorizon), 1e-2);
 }
 
 TEST(PlotChart, TextIsEscapedAndCsvHasNoNonFiniteNumbers) {

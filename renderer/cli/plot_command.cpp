@@ -21,6 +21,7 @@ namespace {
 
 struct PlotOptions {
   std::string material, measured, channel = "luminance", polarScale = "log";
+  int decades = 0;  // 0: the log scales follow the data
   std::vector<std::string> figures;  // kinds to draw; empty: all
   std::filesystem::path merlDir, out;
 };
@@ -38,13 +39,16 @@ int runPlot(const PlotOptions& o) {
   std::string label;
   if (path) {
     table = loadMeasured(*path);
-    label = measuredLabel(*path);
+    // Captions and plots.json go into documents and sites: they name the file, never where it lies here.
+    const std::string full = measuredLabel(*path);
+    label = full.substr(0, full.size() - path->string().size()) + path->filename().string();
   } else {
     label = m.measured.empty() ? "none (the material names no measured data)"
                                : "none (no " + m.measured + " in --merl-dir or $GLOSSY_MERL_DIR)";
   }
   const Channel channel = o.channel == "R" ? Channel::R : o.channel == "G" ? Channel::G : o.channel == "B" ? Channel::B : Channel::Luminance;
-  const PlotSet set = makePlotSet(m, table, label, channel);
+  PlotSet set = makePlotSet(m, table, label, channel);
+  set.decades = o.decades;
   const auto rsvg = findRsvgConvert();
   if (!rsvg) note("rsvg-convert is not on PATH: writing the SVGs only; PNGs need librsvg2-bin");
   if (!table) note(m.name + ": no measured data, so no log-ratio images: " + label);
@@ -84,6 +88,9 @@ Command addPlotCommand(CLI::App& parent) {
   app->add_option("--figures", o->figures, "Only these kinds of figure (default: all): theta_h, image_slice, albedo, polar")
       ->check(CLI::IsMember({"theta_h", "image_slice", "albedo", "polar"}))
       ->delimiter(',');
+  app->add_option("--decades", o->decades,
+                  "Decades the log scales span below the peak (default: down to every curve's floor)")
+      ->check(CLI::Range(1, 20));
   app->add_option("--polar-scale", o->polarScale, "Radius of the polar lobes: log (decades) or linear")
       ->check(CLI::IsMember({"log", "linear"}))
       ->capture_default_str();

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace glossy::plot {
 
@@ -76,12 +77,23 @@ double niceCeil(double v) {
   return 10.0 * p;
 }
 
-std::pair<int, int> decadeRange(double floor, double peak, int minDecades, int maxDecades) {
+std::pair<int, int> decadeRange(double floor, double peak, int minDecades, int decades) {
   if (!(peak > 0.0) || !std::isfinite(peak)) return {-1, 0};
   const int hi = int(std::ceil(std::log10(peak) - 1e-9));
-  int lo = floor > 0.0 && std::isfinite(floor) ? int(std::floor(std::log10(floor) + 1e-9)) : hi - maxDecades;
-  lo = std::clamp(lo, hi - maxDecades, hi - minDecades);
+  if (decades > 0) return {hi - decades, hi};
+  int lo = floor > 0.0 && std::isfinite(floor) ? int(std::floor(std::log10(floor) + 1e-9)) : hi - minDecades;
+  lo = std::clamp(lo, hi - std::max(minDecades, kMaxDecades), hi - minDecades);
   return {lo, hi};
+}
+
+double curveFloor(const std::vector<double>& values) {
+  std::vector<double> positive;
+  for (double v : values)
+    if (v > 0.0 && std::isfinite(v)) positive.push_back(v);
+  if (positive.empty()) return std::numeric_limits<double>::infinity();
+  const auto nth = positive.begin() + std::ptrdiff_t(positive.size() / 50);
+  std::nth_element(positive.begin(), nth, positive.end());
+  return *nth;
 }
 
 Point PlotArea::at(double xv, double yv) const {

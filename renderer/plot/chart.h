@@ -38,9 +38,16 @@ Axis logAxis(int decadeLo, int decadeHi, std::string label);
 // 0 … 90 (degrees) on a square-root scale, ticks where the eye wants them (0, 1, 5, 10, 20, 30, 45, 60, 90).
 Axis sqrtDegreesAxis(std::string label);
 
-// The decades [lo, hi] a log axis needs for positive values up to `peak` and down to `floor` (both > 0),
-// at least `minDecades` and at most `maxDecades` wide, cut from below.
-std::pair<int, int> decadeRange(double floor, double peak, int minDecades, int maxDecades);
+// The widest a log axis that follows its data gets: beyond it a value is a curve falling to zero, not a floor.
+constexpr int kMaxDecades = 12;
+// The decades [lo, hi] of a log axis for positive values up to `peak`: hi the decade at or above the peak;
+// with `decades` > 0 exactly that many below it (glossy plot --decades), else down to the decade at or
+// below `floor`, so that every curve's floor shows, at least `minDecades` and at most kMaxDecades wide.
+std::pair<int, int> decadeRange(double floor, double peak, int minDecades, int decades = 0);
+// A curve's floor: the 2nd percentile of its positive values, so that the last few points where a curve
+// falls toward zero (at the horizon) do not stretch the axis over decades no curve lies in. +Inf when
+// there are none.
+double curveFloor(const std::vector<double>& values);
 // The top of a linear axis for values up to `v`: the smallest of 1, 2, 2.5, 5 × 10^k at least v (1 for v ≤ 0).
 double niceCeil(double v);
 

@@ -4,8 +4,9 @@
 //   image_slice_figure.cpp  ρ over (θ_h, θ_d) at φ_d = 90° per BRDF, and its log-ratio to the measured one
 //   albedo_figure.cpp       directional albedo against θ_V
 //   polar_figure.cpp        in-plane lobes ρ cos θ_i at θ_V ∈ {0°, 30°, 60°, 75°}
-// CSV rows carry the direction pair (L, V in the local frame, N = +z, as `glossy eval` reads them) and the
-// angles, then one column per BRDF drawn, named by its panel label; pairs below the horizon are left out.
+// CSV rows start with the direction pair Lx,Ly,Lz,Vx,Vy,Vz (local frame, N = +z), so that the first six
+// columns of the rows are `glossy eval`'s input as they stand; then the angles, then one column per BRDF
+// drawn, named by its panel label. Pairs below the horizon are left out.
 #pragma once
 
 #include "renderer/plot/figure.h"

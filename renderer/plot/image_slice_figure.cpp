@@ -65,9 +65,10 @@ std::vector<PlotFigure> imageSliceFigures(const PlotSet& set) {
       grids[b][k] = v;
       if (v > 0.0 && std::isfinite(v)) positive.push_back(v);
     }
-  // The colour scale from the 0.5th to the 99.5th percentile, at most 6 decades: the few grazing bins where a fit's Fresnel and
-  // shadowing terms blow up (10^6 at θ_d = 89.5°) would otherwise push everything else into one colour.
-  // Values beyond are clamped, as the colour bar's end labels say.
+  // The colour scale spans the decades holding the 0.5th to the 99.5th percentile of the values: the few
+  // grazing bins where a fit's Fresnel and shadowing terms blow up (10^6 at θ_d = 89.5°) would otherwise push
+  // everything else into one colour. Values beyond are clamped, as the colour bar's end labels say.
+  // --decades: that many decades below the top instead.
   auto quantile = [&](double q) {
     if (positive.empty()) return 1.0;
     const size_t n = std::min(positive.size() - 1, size_t(q * double(positive.size())));
@@ -75,7 +76,8 @@ std::vector<PlotFigure> imageSliceFigures(const PlotSet& set) {
     return positive[n];
   };
   const double low = quantile(0.005), high = quantile(0.995);
-  const auto [lo, hi] = decadeRange(low, high, 2, 6);
+  const auto [lo, hi] = decadeRange(low, high, 2, set.decades);
+  const std::string scale = set.decadesText(lo, hi, "the decades holding its 0.5th to 99.5th percentile");
   const Grid* m = nullptr;
   for (size_t b = 0; b < brdfs.size(); ++b)
     if (brdfs[b] == measured) m = &grids[b];
@@ -97,14 +99,14 @@ std::vector<PlotFigure> imageSliceFigures(const PlotSet& set) {
     const Grid& g = grids[b];
     const bool withRatio = m && &brdf != measured;
 
-    std::vector<std::string> columns = {"theta_h_deg", "theta_d_deg", "phi_d_deg", "Lx", "Ly", "Lz", "Vx", "Vy", "Vz", brdf.panel.label};
+    std::vector<std::string> columns = {"Lx", "Ly", "Lz", "Vx", "Vy", "Vz", "theta_h_deg", "theta_d_deg", "phi_d_deg", brdf.panel.label};
     if (withRatio) columns.insert(columns.end(), {"Measured", "log10_ratio"});
     CsvTable csv(columns);
     for (int j = 0; j < kN; ++j)
       for (int i = 0; i < kN; ++i) {
         const size_t k = size_t(i + kN * j);
         const auto& [L, V] = pairs[k];
-        std::vector<double> row = {thetaHOf(i), thetaDOf(j), 90.0 + kInsideBinDeg, L.x, L.y, L.z, V.x, V.y, V.z, g[k]};
+        std::vector<double> row = {L.x, L.y, L.z, V.x, V.y, V.z, thetaHOf(i), thetaDOf(j), 90.0 + kInsideBinDeg, g[k]};
         if (withRatio) row.insert(row.end(), {(*m)[k], ratioOf(g[k], (*m)[k])});
         csv.add(row);
       }
@@ -113,7 +115,7 @@ std::vector<PlotFigure> imageSliceFigures(const PlotSet& set) {
     std::vector<std::string> caption = {
         std::string(twoPanels ? "Left: " : "") + "ρ(θh, θd, φd = 90°) of " + brdf.panel.label + " at the centres of MERL's bins (θh on a square-root axis, "
         "as MERL bins it, so every bin is one cell), colour log10 ρ in 1/sr on one scale for all of " + set.material +
-        "'s image slices, from its 0.5th to its 99.5th percentile (values beyond take the end colours). Grey: no value (an unmeasured bin)."};
+        "'s image slices, " + scale + " (values beyond take the end colours). Grey: no value (an unmeasured bin)."};
     if (withRatio)
       caption.push_back("Right: log10(ρ_" + brdf.panel.label + " / ρ_Measured): red where the fit is brighter than the data, "
                         "blue where darker, white where they agree; clamped at ×10 and ×0.1; grey where the data have no value.");

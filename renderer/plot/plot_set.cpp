@@ -71,6 +71,12 @@ std::string PlotSet::sourceLine() const {
   return "Material " + material + "; channel " + channelName(channel) + "; measured data: " + measuredLabel + ".";
 }
 
+std::string PlotSet::decadesText(int lo, int hi, const std::string& floorWord) const {
+  const std::string range = "10^" + std::to_string(lo) + " to 10^" + std::to_string(hi);
+  if (decades > 0) return range + ", the " + std::to_string(decades) + " decades below the peak (--decades)";
+  return range + ", " + floorWord;
+}
+
 std::string PlotSet::fitsLine() const {
   std::string drawn, absent;
   for (const PlotBrdf& b : brdfs) {

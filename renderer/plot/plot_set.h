@@ -35,6 +35,7 @@ struct PlotSet {
   std::string material;        // the material's name
   std::string measuredLabel;   // the data source ("MERL (NBRDF reconstruction) FILE"), or why there is none
   Channel channel = Channel::Luminance;
+  int decades = 0;  // the log scales' span below the peak (glossy plot --decades); 0: down to every curve's floor
   std::vector<PlotBrdf> brdfs;  // measured first, then the fits, in the sheet's order
 
   const PlotBrdf* measured() const;  // null when absent
@@ -42,9 +43,12 @@ struct PlotSet {
   // The plotted channel of ρ(L, V) (1/sr), as `glossy eval` computes it from this L and V (normalising them); NaN where the measured table has
   // no data (an unmeasured bin), 0 below the horizon.
   double value(const PlotBrdf& b, const Vec3& L, const Vec3& V) const;
-  // "alum-bronze · luminance · Measured: MERL (NBRDF reconstruction) alum-bronze.binary.xz": the caption's
-  // last line, naming material, channel and data source.
+  // "Material alum-bronze; channel luminance; measured data: MERL (NBRDF reconstruction) alum-bronze.binary.xz.":
+  // the caption's last line, naming material, channel and data source (by file name, never a local path).
   std::string sourceLine() const;
+  // How a log scale from 10^lo to 10^hi was chosen, for the captions: "10^-5 to 10^4, down to the lowest
+  // curve's floor" or "… the 9 decades below the peak (--decades)".
+  std::string decadesText(int lo, int hi, const std::string& floorWord) const;
   // The fits drawn, "Microfacet E2, Smooth E2, …" and those absent.
   std::string fitsLine() const;
   std::vector<LegendEntry> legend() const;

@@ -37,30 +37,37 @@ std::vector<double> incidentAngles(double thetaV) {
 
 PlotFigure polarFigure(const PlotSet& set, RadialScale scale) {
   const auto brdfs = set.present();
-  std::vector<std::string> columns = {"theta_v_deg", "theta_i_deg", "Lx", "Ly", "Lz", "Vx", "Vy", "Vz"};
+  std::vector<std::string> columns = {"Lx", "Ly", "Lz", "Vx", "Vy", "Vz", "theta_v_deg", "theta_i_deg"};
   for (const PlotBrdf* b : brdfs) columns.push_back(b->panel.label);
   CsvTable csv(columns);
 
   // curves[view][brdf] = (θ_i, ρ cos θ_i)
   std::vector<std::vector<std::vector<Point>>> curves(std::size(kThetaV), std::vector<std::vector<Point>>(brdfs.size()));
-  double peak = 0.0, floor = std::numeric_limits<double>::infinity();
+  double peak = 0.0;
   for (size_t s = 0; s < std::size(kThetaV); ++s) {
     const Vec3 V(std::sin(kThetaV[s] * kDeg), 0.0, std::cos(kThetaV[s] * kDeg));
     for (double ti : incidentAngles(kThetaV[s])) {
       const Vec3 L(std::sin(ti * kDeg), 0.0, std::cos(ti * kDeg));
       if (L.z <= 0.0 || V.z <= 0.0) continue;
-      std::vector<double> row = {kThetaV[s], ti, L.x, L.y, L.z, V.x, V.y, V.z};
+      std::vector<double> row = {L.x, L.y, L.z, V.x, V.y, V.z, kThetaV[s], ti};
       for (size_t b = 0; b < brdfs.size(); ++b) {
         const double v = set.value(*brdfs[b], L, V) * L.z;
         row.push_back(v);
         curves[s][b].push_back({ti, v});
-        if (v > 0.0 && std::isfinite(v)) peak = std::max(peak, v), floor = std::min(floor, v);
+        if (v > 0.0 && std::isfinite(v)) peak = std::max(peak, v);
       }
       csv.add(row);
     }
   }
-
-  const auto [lo, hi] = decadeRange(floor, peak, 3, 5);
+  // Down to the lowest curve's floor (ρ cos θ_i falls to 0 at the horizon: curveFloor leaves those points out).
+  double floor = std::numeric_limits<double>::infinity();
+  for (const auto& view : curves)
+    for (const auto& curve : view) {
+      std::vector<double> ys;
+      for (const Point& p : curve) ys.push_back(p.y);
+      floor = std::min(floor, curveFloor(ys));
+    }
+  const auto [lo, hi] = decadeRange(floor, peak, 3, set.decades);
   const double linearTop = niceCeil(peak);
   // Radius of a value; NaN breaks the curve (no value), values under the log scale's floor sit at the centre.
   auto radius = [&, lo = lo, hi = hi](double v) {
@@ -81,7 +88,7 @@ PlotFigure polarFigure(const PlotSet& set, RadialScale scale) {
   g.vgap = 100.0;
   g.bottomAxis = 48.0;
   const std::string radial = scale == RadialScale::Log
-                                 ? formatted("log scale, 10^%d (centre) to 10^%d (outer ring)", lo, hi)
+                                 ? "log scale from " + set.decadesText(lo, hi, "down to the lowest curve's floor") + " (centre to outer ring)"
                                  : "linear scale, 0 (centre) to " + formatted("%g", linearTop) + " (outer ring)";
   const std::vector<std::string> caption = {
       "In-plane lobes: ρ(L, V) cos θi (1/sr) for L in the plane of incidence, at four viewing angles θV; the radius "
@@ -97,7 +104,11 @@ PlotFigure polarFigure(const PlotSet& set, RadialScale scale) {
     // Rings: decades (log) or five even steps (linear), each labelled on the baseline to the right.
     std::vector<std::pair<double, Tick>> rings;
     if (scale == RadialScale::Log)
-      for (int k = lo; k <= hi; ++k) rings.push_back({kRadius * (k - lo) / double(hi - lo), {0.0, "10", std::to_string(k)}});
+      for (int k = lo; k <= hi; ++k) {
+        // Every ring drawn; beyond 6 decades every other one labelled (counting down from the outer), so the labels do not run together.
+        const bool labelled = hi - lo <= 6 || (hi - k) % 2 == 0;
+        rings.push_back({kRadius * (k - lo) / double(hi - lo), {0.0, labelled ? "10" : "", labelled ? std::to_string(k) : ""}});
+      }
     else
       for (int k = 1; k <= 5; ++k) rings.push_back({kRadius * k / 5.0, {0.0, formatted("%g", linearTop * k / 5.0), ""}});
     for (const auto& [r, tick] : rings) {
@@ -115,7 +126,7 @@ PlotFigure polarFigure(const PlotSet& set, RadialScale scale) {
     }
     svg.line({cx - kRadius, cy}, {cx + kRadius, cy}, kFrame, 1.0);  // the surface
     for (const auto& [r, tick] : rings)
-      svg.text({cx + r, cy + 15.0}, tick.label, {10.5, Anchor::Middle, false, "#444444"}, tick.superscript);
+      if (!tick.label.empty()) svg.text({cx + r, cy + 15.0}, tick.label, {10.5, Anchor::Middle, false, "#444444"}, tick.superscript);
     svg.text({cx - kRadius, cy + 15.0}, "ρ cos θi:", {10.5, Anchor::Start, false, "#444444"});
     svg.text({cx, cy + 36.0}, "θi (degrees from the normal); radius ρ cos θi (1/sr)", {12.5, Anchor::Middle});
     // The mirror direction and V.

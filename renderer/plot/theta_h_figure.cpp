@@ -21,35 +21,42 @@ constexpr double kDeg = kPi / 180.0;
 
 PlotFigure thetaHFigure(const PlotSet& set) {
   const auto brdfs = set.present();
-  std::vector<std::string> columns = {"theta_d_deg", "theta_h_deg", "phi_d_deg", "Lx", "Ly", "Lz", "Vx", "Vy", "Vz"};
+  std::vector<std::string> columns = {"Lx", "Ly", "Lz", "Vx", "Vy", "Vz", "theta_d_deg", "theta_h_deg", "phi_d_deg"};
   for (const PlotBrdf* b : brdfs) columns.push_back(b->panel.label);
   CsvTable csv(columns);
 
   // values[slice][brdf][k]
   std::vector<std::vector<std::vector<Point>>> values(std::size(kThetaD), std::vector<std::vector<Point>>(brdfs.size()));
-  double peak = 0.0, floor = std::numeric_limits<double>::infinity();
+  double peak = 0.0;
   for (size_t s = 0; s < std::size(kThetaD); ++s)
     for (int k = 0; k <= kSamples; ++k) {
       const double f = double(k) / kSamples, thetaH = 90.0 * f * f;
       const auto [L, V] = directionsFromHalfDiff(thetaH * kDeg, (kThetaD[s] + kInsideBinDeg) * kDeg, (90.0 + kInsideBinDeg) * kDeg);
       if (L.z <= 0.0 || V.z <= 0.0) continue;
-      std::vector<double> row = {kThetaD[s] + kInsideBinDeg, thetaH, 90.0 + kInsideBinDeg, L.x, L.y, L.z, V.x, V.y, V.z};
+      std::vector<double> row = {L.x, L.y, L.z, V.x, V.y, V.z, kThetaD[s] + kInsideBinDeg, thetaH, 90.0 + kInsideBinDeg};
       for (size_t b = 0; b < brdfs.size(); ++b) {
         const double v = set.value(*brdfs[b], L, V);
         row.push_back(v);
         values[s][b].push_back({thetaH, v});
-        if (v > 0.0 && std::isfinite(v)) peak = std::max(peak, v), floor = std::min(floor, v);
+        if (v > 0.0 && std::isfinite(v)) peak = std::max(peak, v);
       }
       csv.add(row);
     }
-
-  const auto [lo, hi] = decadeRange(floor, peak, 3, 6);
+  // The axis reaches down to the lowest floor of any curve in any slice: the diffuse floors of a chrome show.
+  double floor = std::numeric_limits<double>::infinity();
+  for (const auto& slice : values)
+    for (const auto& curve : slice) {
+      std::vector<double> ys;
+      for (const Point& p : curve) ys.push_back(p.y);
+      floor = std::min(floor, curveFloor(ys));
+    }
+  const auto [lo, hi] = decadeRange(floor, peak, 3, set.decades);
   GridLayout g;
   g.columns = 2;
   g.rows = 2;
   const std::vector<std::string> caption = {
       "ρ(θh, θd, φd = 90°) against the half-vector angle θh at four difference angles θd (θh on a square-root scale, "
-      "as MERL bins it; ρ on a log scale, in 1/sr). Measured data are MERL's nearest bin, so they step (θd and φd are "
+      "as MERL bins it; ρ on a log scale, in 1/sr, from " + set.decadesText(lo, hi, "down to the lowest curve's floor") + "). Measured data are MERL's nearest bin, so they step (θd and φd are "
       "taken 1e-6° inside the bins these angles begin); a gap is an unmeasured bin. Metric: none (values, not errors).",
       set.fitsLine(), set.sourceLine()};
   const std::string title = "θh slices of " + set.material + " (" + channelName(set.channel) + ")";

@@ -371,7 +371,7 @@ is. Unmeasured bins are reported as a GlossyWarning.
           return guarded([&] { return std::make_shared<PyBrdf>(brdfFromKeywords(model, params)); });
         }, py::arg("model"), R"doc(
 A model with the given parameters, checked as a parameter file's are (docs/materials.md lists each
-model's keys and ranges): glossy.make_brdf("cook-torrance", kd=(0.1, 0.1, 0.1), ks=(0.5, 0.5, 0.5), m=0.2, f0=0.9).
+model's keys and ranges): glossy.make_brdf("cook-torrance", kd=(0.1, 0.1, 0.1), ks=(0.5, 0.5, 0.5), m=0.2, eta=1.5).
 RGB parameters take three numbers; choices take a string.
 )doc");
   m.def("models", [] {

@@ -8,7 +8,7 @@
 #   3. resume: one task of an array cancelled mid-run (scancel), then the array resubmitted: the cancelled
 #      task's sheet is made, the finished ones are skipped, not rendered again.
 # Stops its daemons and removes its folder however it ends. Needs root (Slurm's daemons run as root here);
-# exits 77 (skip), saying why, without root or without the packages (scripts/setup installs them).
+# exits 77 (skip), saying why, without root or without the packages (scripts/setup-cluster installs them).
 # Usage: slurm_test.sh --exe GLOSSY --source-dir DIR --shared-dir DIR --work DIR
 set -euo pipefail
 
@@ -25,7 +25,7 @@ done
 skip() { echo "Cluster.Slurm: skipped: $*"; exit 77; }
 [ "$(id -u)" -eq 0 ] || skip "needs root to run Slurm's daemons"
 for tool in munged slurmctld slurmd sbatch squeue scancel scontrol; do
-  command -v "$tool" >/dev/null || skip "$tool is missing (scripts/setup installs slurmctld, slurmd, slurm-client, munge)"
+  command -v "$tool" >/dev/null || skip "$tool is missing (scripts/setup-cluster installs slurmctld, slurmd, slurm-client, munge)"
 done
 materials=(alum-bronze blue-rubber chrome gold-paint)
 for m in "${materials[@]}"; do

@@ -108,7 +108,7 @@ def main():
         skip(f"Playwright is not installed for {sys.executable} (scripts/test-tools installs it)")
     chromium = find_chromium()
     if not chromium:
-        skip("no Chromium binary (/usr/bin/chromium: scripts/setup installs Debian's chromium)")
+        skip("no Chromium binary (/usr/bin/chromium: scripts/test installs Debian's chromium)")
 
     source = Path(a.source_dir).resolve()
     shared = Path(a.shared_dir or os.environ.get("GLOSSY_SHARED_DIR") or source.parent / "shared").resolve()
