@@ -1,6 +1,7 @@
 // Image files hold no Inf or NaN: half output clamps to the largest finite half (65504) and float output
 // to float's largest, NaN is written as 0, and the pixels so changed are counted in the metadata; the
 // renders behind `render --half` and `sheet --half` under a very bright sky show it.
+#include "materials/core/notes.h"
 #include "renderer/image/exr_image.h"
 #include "tests/support/test_support.h"
 
@@ -43,6 +44,11 @@ TEST(HalfOutput, WriterClampsInfinityAndZeroesNaNCountingThePixels) {
   writeExr(tmp / "h.exr", img, {}, PixelType::Half);
   expectFiniteAtMost(allChannels(tmp / "h.exr"), kLargestHalf);
   EXPECT_EQ(readImageAttribute(tmp / "h.exr", "glossy:halfClampedPixels"), "3");
+  // Said, not only recorded: one note, with the count.
+  const std::vector<std::string> notes = takeNotes();
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], (tmp / "h.exr").string() + ": 3 of 4 pixels had a value above 65504, the largest half, written as 65504 "
+                                                 "(a float EXR keeps them)");
   EXPECT_EQ(readRgbImage(tmp / "h.exr").pixels[0], kLargestHalf);
   EXPECT_EQ(readRgbImage(tmp / "h.exr").pixels[3], 0.0f);
 
@@ -53,6 +59,7 @@ TEST(HalfOutput, WriterClampsInfinityAndZeroesNaNCountingThePixels) {
 
   img.pixels.assign(img.pixels.size(), 0.5f);
   writeExr(tmp / "ok.exr", img, {}, PixelType::Half);
+  EXPECT_TRUE(takeNotes().empty()) << "nothing clipped, nothing said";
   EXPECT_EQ(readImageAttribute(tmp / "ok.exr", "glossy:halfClampedPixels"), "0");
   writeExr(tmp / "ok-float.exr", img, {}, PixelType::Float);
   EXPECT_EQ(readImageAttribute(tmp / "ok-float.exr", "glossy:nonFinitePixels"), "");
@@ -65,12 +72,18 @@ TEST(HalfOutput, RenderAndSheetUnderABrightSkyWriteFiniteHalves) {
   ASSERT_EQ(r.status, 0) << r.err;
   expectFiniteAtMost(allChannels(tmp / "r.exr"), kLargestHalf);
   EXPECT_GT(std::stoi(readImageAttribute(tmp / "r.exr", "glossy:halfClampedPixels")), 0);
+  EXPECT_NE(r.err.find("r.exr: " + readImageAttribute(tmp / "r.exr", "glossy:halfClampedPixels") +
+                       " of 144 pixels had a value above 65504"),
+            std::string::npos)
+      << r.err;
 
   const RunResult s = runGlossy({"sheet", "--material", (materialsDir() / "chrome.toml").string(), "--width", "12", "--height",
                                  "12", "--spp", "2", "--env-constant", "1e6", "--half", "-o", (tmp / "s.exr").string()});
   ASSERT_EQ(s.status, 0) << s.err;
   expectFiniteAtMost(allChannels(tmp / "s.exr"), kLargestHalf);
   EXPECT_GT(std::stoi(readImageAttribute(tmp / "s.exr", "glossy:halfClampedPixels")), 0);
+  EXPECT_NE(s.err.find("s.exr: " + readImageAttribute(tmp / "s.exr", "glossy:halfClampedPixels") + " of "), std::string::npos)
+      << s.err;
 }
 
 }  // namespace glossy::test

@@ -6,6 +6,7 @@
 #include "renderer/sheet/sheet.h"
 #include "tests/support/test_support.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <sstream>
@@ -99,7 +100,7 @@ TEST(NeuralBrdf, BadFilesAreInputErrorsNamingTheFile) {
   EXPECT_NE(error(networkText(tanh)).find("tanh"), std::string::npos);
   std::vector<TestLayer> wide = layers;
   wide[0].outputs = 100000;
-  EXPECT_NE(error(networkText(wide)).find("from 1 to 1024"), std::string::npos);
+  EXPECT_NE(error(networkText(wide)).find("from 1 to 225"), std::string::npos);
   std::vector<TestLayer> four = layers;
   four[1] = {2, 4, "linear", std::vector<double>(8, 0.0), std::vector<double>(4, 0.0)};
   EXPECT_NE(error(networkText(four)).find("4 outputs, expected 3"), std::string::npos);
@@ -109,6 +110,40 @@ TEST(NeuralBrdf, BadFilesAreInputErrorsNamingTheFile) {
   EXPECT_NE(expectInputError([&] { NeuralBrdf::load(tmp.path()); }).find("is a folder"), std::string::npos);
   writeText(tmp / "huge.nbrdf", std::string(NeuralBrdf::kMaxBytes + 1, '#'));
   EXPECT_NE(expectInputError([&] { NeuralBrdf::load(tmp / "huge.nbrdf"); }).find("too large"), std::string::npos);
+}
+
+namespace {
+
+// A network of these widths (6 first, 3 last), ReLU between, its weights all zero.
+std::vector<TestLayer> zeroNetwork(const std::vector<int>& widths) {
+  std::vector<TestLayer> layers;
+  for (size_t k = 0; k + 1 < widths.size(); ++k)
+    layers.push_back({widths[k], widths[k + 1], k + 2 == widths.size() ? "linear" : "relu",
+                      std::vector<double>(size_t(widths[k]) * size_t(widths[k + 1]), 0.0), std::vector<double>(size_t(widths[k + 1]), 0.0)});
+  return layers;
+}
+
+}  // namespace
+
+// Every load tabulates the network 2.9 million times: a larger network than the supplement's (a valid one of
+// 11 MB took an hour and a half in every command) is refused from its layers' sizes, before its weights are
+// read, so that a file cut short in its weights still gets the size error.
+TEST(NeuralBrdf, NetworksLargerThanTheSupplementsAreRefusedBeforeTheirWeights) {
+  EXPECT_NO_THROW(NeuralBrdf::parse(networkText(zeroNetwork({6, 21, 21, 3})), "supplement.nbrdf"));
+  for (const std::vector<int>& widths : std::vector<std::vector<int>>{{6, 22, 21, 3}, {6, 21, 21, 21, 3}, {6, 64, 64, 3}}) {
+    std::vector<TestLayer> layers = zeroNetwork(widths);
+    layers.back().weights.clear();  // never read: the architecture alone is refused
+    const std::string e = expectInputError([&] { NeuralBrdf::parse(networkText(layers), "big.nbrdf"); });
+    EXPECT_NE(e.find("big.nbrdf: more than 675 weights and biases"), std::string::npos) << e;
+  }
+  // The 11 MB network of the report: 6 -> 1024 -> 1024 -> 3 as a file, refused by its size unread.
+  TempDir tmp;
+  const std::string big = networkText(zeroNetwork({6, 1024, 1024, 3}));
+  ASSERT_GT(big.size(), NeuralBrdf::kMaxBytes);
+  writeText(tmp / "big.nbrdf", big);
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_NE(expectInputError([&] { NeuralBrdf::load(tmp / "big.nbrdf"); }).find("too large"), std::string::npos);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
 // The geometric stand-in for the unmeasured bins (SOURCES.md) is shared/merl's mask, bin for bin.

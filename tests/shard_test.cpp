@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <map>
 #include <numeric>
 #include <set>
@@ -110,4 +111,25 @@ TEST(Shard, EveryItemGoesToExactlyOneShardAndCostsBalance) {
       if (costs[k] == 9.0) {
         EXPECT_TRUE(shardsOfMeasured.insert(i).second) << "shard " << i;
       }
+}
+
+// More shards than items: every item its own shard, the split the same as with a load for every shard, and
+// no cost for the shards that get nothing (a load per shard made --shard 1/1000000000 take 9 GB and 29 s).
+TEST(Shard, ManyMoreShardsThanItemsCostNothing) {
+  const std::vector<double> costs = {6.0, 9.0, 6.0, 2.5, 9.0};
+  // Longest first onto the first least-loaded shard: 1 → 0, 4 → 1, 0 → 2, 2 → 3, 3 → 4.
+  const std::vector<size_t> expected[] = {{1}, {4}, {0}, {2}, {3}};
+  for (int count : {5, 7, 1000, 1000000000}) {
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(shardItems(costs, {i, count, "test"}), expected[i]) << count;
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_TRUE(shardItems(costs, {count - 1, count, "test"}).empty() || count == 5);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0) << count;
+  }
+  const Shard s = shardFrom("999999999/1000000000", envOf({}));
+  EXPECT_EQ(s.index, 999999999);
+  EXPECT_EQ(s.count, 1000000000);
+  EXPECT_TRUE(shardItems(costs, s).empty());
+  // Beyond int: refused, not wrapped.
+  for (const char* bad : {"1/99999999999", "99999999999/1", "1/1000000001", "-1/3", "+1/3", "1/", "/3", " 1/3"})
+    EXPECT_NE(expectInputError([&] { shardFrom(bad, envOf({})); }).find("--shard"), std::string::npos) << bad;
 }

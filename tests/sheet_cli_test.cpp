@@ -365,4 +365,28 @@ TEST(CliSheet, BadInputExitsTwoWithOneLine) {
   EXPECT_FALSE(std::filesystem::exists(tmp / "x.exr"));
 }
 
+// A target too fine to reach stops at the default cap (or --spp), says so on stderr and in the EXR, and
+// prints a line per pass though stderr is not a terminal (here a file): a batch log shows how it goes.
+TEST(CliSheet, TargetErrorAloneStopsAtItsCapSayingSo) {
+  TempDir tmp;
+  const std::vector<std::string> base = {"sheet", "--material", (materialsDir() / "chrome.toml").string(), "--width", "8",
+                                         "--height", "8", "--target-error", "1e-9"};
+  std::vector<std::string> capped = base;
+  capped.insert(capped.end(), {"--spp", "16", "-o", (tmp / "c.exr").string()});
+  RunResult r = runGlossy(capped);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readImageAttribute(tmp / "c.exr", "glossy:spp"), "16");
+  EXPECT_NE(r.err.find("chrome: pass 1: 16 spp, widest interval ±"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("chrome: stopped short of --target-error 1e-09 at 16 spp: the widest interval is ±"), std::string::npos) << r.err;
+  EXPECT_GT(std::stod(readImageAttribute(tmp / "c.exr", "glossy:widestInterval")), 1e-9);
+
+  std::vector<std::string> uncapped = base;
+  uncapped.insert(uncapped.end(), {"-o", (tmp / "u.exr").string()});
+  r = runGlossy(uncapped);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readImageAttribute(tmp / "u.exr", "glossy:spp"), "4096") << "--target-error alone stops at its default cap";
+  EXPECT_NE(r.err.find("stopped short of --target-error 1e-09 at 4096 spp"), std::string::npos) << r.err;
+  EXPECT_GE(std::stoi(readImageAttribute(tmp / "u.exr", "glossy:passes")), 3);
+}
+
 }  // namespace glossy::test

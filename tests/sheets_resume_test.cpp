@@ -95,26 +95,50 @@ TEST(CliSheetsResume, AFolderInTheWayOrTwoFilesOfOneNameStopBeforeRendering) {
 TEST(CliSheetsResume, ASheetAnotherRunIsWritingIsLeftToItAndStaleTemporariesAreCleaned) {
   Batch b;
   std::filesystem::create_directories(b.out());
-  writeText(b.out("chrome.exr.tmp.abc123"), "half a sheet");
-  writeText(b.out("gold-paint.png.tmp.def456"), "half a preview");
+  // What a killed run of glossy leaves (atomic_file.h names them), and a user's files named like an older
+  // pattern, which are not glossy's to delete.
+  writeText(b.out("chrome.exr.tmp.glossy-abc123"), "half a sheet");
+  writeText(b.out("gold-paint.png.tmp.glossy-def456"), "half a preview");
+  writeText(b.out("chrome.exr.tmp.abc123"), "a user's file");
+  writeText(b.out("gold-paint.png.tmp.glossy-def456.keep"), "a user's file");
   // Another run holds chrome's lock: its temporaries are its own, and the sheet is its to write.
-  const int fd = ::open(b.out(".chrome.lock").c_str(), O_RDWR | O_CREAT, 0644);
+  const int fd = ::open(b.out(".chrome.exr.lock").c_str(), O_RDWR | O_CREAT, 0644);
   ASSERT_GE(fd, 0);
   ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
   RunResult r = b.run();
   EXPECT_EQ(r.status, 1) << r.err;
-  EXPECT_TRUE(mentions(r, "chrome: another glossy sheets is writing it, skipped")) << r.err;
+  EXPECT_TRUE(mentions(r, "chrome: -o: " + b.out("chrome.exr").string() + " is being written by another glossy process, skipped"))
+      << r.err;
   EXPECT_FALSE(std::filesystem::exists(b.out("chrome.exr")));
-  EXPECT_TRUE(std::filesystem::exists(b.out("chrome.exr.tmp.abc123")));
-  EXPECT_FALSE(std::filesystem::exists(b.out("gold-paint.png.tmp.def456")));
+  EXPECT_TRUE(std::filesystem::exists(b.out("chrome.exr.tmp.glossy-abc123")));
+  EXPECT_FALSE(std::filesystem::exists(b.out("gold-paint.png.tmp.glossy-def456")));
   EXPECT_TRUE(std::filesystem::exists(b.out("gold-paint.exr")));
+  EXPECT_FALSE(std::filesystem::exists(b.out(".gold-paint.exr.lock"))) << "a lock is not left behind";
   ::close(fd);
 
   r = b.run();
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_FALSE(std::filesystem::exists(b.out("chrome.exr.tmp.abc123")));
+  EXPECT_FALSE(std::filesystem::exists(b.out("chrome.exr.tmp.glossy-abc123")));
   EXPECT_TRUE(mentions(r, "chrome: removed 1 temporary")) << r.err;
   EXPECT_TRUE(std::filesystem::exists(b.out("chrome.exr")));
+  EXPECT_EQ(readText(b.out("chrome.exr.tmp.abc123")), "a user's file");
+  EXPECT_EQ(readText(b.out("gold-paint.png.tmp.glossy-def456.keep")), "a user's file");
+}
+
+// A PNG is trusted only if it opens as a PNG of the size the settings give: text under the name or a PNG
+// of another size is rendered again, not kept.
+TEST(CliSheetsResume, APngThatIsNotThisSheetsPngIsRenderedAgain) {
+  Batch b;
+  ASSERT_EQ(b.run().status, 0);
+  const std::string png = readText(b.out("chrome.png"));
+  writeText(b.out("chrome.png"), "not a PNG at all");
+  writeRgb8(b.out("gold-paint.png"), 16, 16, std::vector<unsigned char>(16 * 16 * 3, 128));
+  RunResult r = b.run();
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(mentions(r, "chrome: PNG that is not a PNG image, rendering it again")) << r.err;
+  EXPECT_TRUE(mentions(r, "gold-paint: PNG of 16x16, not the")) << r.err;
+  EXPECT_TRUE(mentions(r, "2 sheets rendered")) << r.err;
+  EXPECT_EQ(readText(b.out("chrome.png")).substr(0, 8), png.substr(0, 8));
 }
 
 }  // namespace glossy::test

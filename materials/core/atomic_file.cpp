@@ -16,6 +16,10 @@ namespace glossy {
 
 namespace {
 
+// The temporaries' names: TARGET + kTemporaryInfix + six characters mkstemp chooses.
+constexpr std::string_view kTemporaryInfix = ".tmp.glossy-";
+constexpr size_t kTemporaryRandom = 6;
+
 std::runtime_error ioError(const std::filesystem::path& path, const char* what) {
   return std::runtime_error(path.string() + ": " + what + ": " + std::strerror(errno));
 }
@@ -55,6 +59,11 @@ extern "C" void removeTemporariesAndStop(int sig) {
 
 }  // namespace
 
+bool isTemporaryOf(const std::filesystem::path& file, const std::filesystem::path& target) {
+  const std::string name = file.filename().string(), prefix = target.filename().string() + std::string(kTemporaryInfix);
+  return file.parent_path() == target.parent_path() && name.size() == prefix.size() + kTemporaryRandom && name.starts_with(prefix);
+}
+
 void removeTemporariesOnSignal() {
   struct sigaction action {};
   action.sa_handler = removeTemporariesAndStop;
@@ -64,7 +73,7 @@ void removeTemporariesOnSignal() {
 }
 
 PendingTemporary::PendingTemporary(const std::filesystem::path& path) {
-  std::string tmpl = path.string() + ".tmp.XXXXXX";
+  std::string tmpl = path.string() + std::string(kTemporaryInfix) + std::string(kTemporaryRandom, 'X');
   // Claimed under the template's name first, so the file is never on disk unknown to the handler; the
   // name mkstemp fills in is then written into the same slot.
   slot_ = claim(tmpl);

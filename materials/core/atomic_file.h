@@ -15,8 +15,13 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
 // process by the same signal with its default action (so it still stops at once, with the usual status).
 void removeTemporariesOnSignal();
 
-// A temporary file beside `path` (`path`.tmp.XXXXXX, created empty), known to the signal handler until
+// A temporary file beside `path` (`path`.tmp.glossy-XXXXXX, created empty), known to the signal handler until
 // released by rename or removal. Neither copyable nor movable: the handler knows it by its slot.
+// Whether `file` is named as a PendingTemporary of `target` is (TARGET.tmp.glossy- and six characters): what
+// a run killed outright may leave. Only such files may be cleaned up for it; a file merely named like an
+// older pattern (TARGET.tmp.*) is someone else's.
+bool isTemporaryOf(const std::filesystem::path& file, const std::filesystem::path& target);
+
 class PendingTemporary {
  public:
   explicit PendingTemporary(const std::filesystem::path& path);

@@ -1,7 +1,8 @@
-// Reading a whole input file (material TOML, network, supplement text) with the checks hostile paths need:
-// a folder, a device or FIFO (a material symlinked to /dev/zero would otherwise be read until memory runs
-// out) and a file larger than any such input can be are refused as bad input, naming the file, before
-// anything is read.
+// Reading input files with the checks hostile paths need: a folder, a device or FIFO (a material symlinked
+// to /dev/zero would otherwise be read until memory runs out; a FIFO would block the reader until someone
+// writes to it) and a file larger than any such input can be are refused as bad input, naming the file,
+// before anything is read. Every input goes through here: whole-file reads through readInputFile, paths
+// handed to a library that opens them itself (OpenImageIO, tinygltf) through requireInputFile first.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +11,12 @@
 #include <string_view>
 
 namespace glossy {
+
+// The file's size. Throws InputError "PATH: ..." unless it is a regular file (symlinks followed); `kind`
+// names what it should be ("environment map"). Checked by its status first, so that a FIFO or device is
+// never opened, then on a descriptor opened without blocking, so that one swapped in meanwhile is refused
+// rather than waited on.
+std::uintmax_t requireInputFile(const std::filesystem::path& path, std::string_view kind);
 
 // The file's bytes. Throws InputError "PATH: ..." unless it is a regular file (symlinks followed) of at
 // most `maxBytes`; `kind` names what it should be ("material file").

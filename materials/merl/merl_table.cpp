@@ -1,6 +1,7 @@
 #include "materials/merl/merl_table.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/input_file.h"
 #include "materials/core/text.h"
 
 #include <lzma.h>
@@ -9,7 +10,6 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 
 namespace glossy {
 
@@ -17,18 +17,10 @@ static_assert(std::endian::native == std::endian::little, "MERL files are little
 
 namespace {
 
-std::vector<std::byte> readFile(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path.string() + ": is a directory, not a MERL file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot open (" + std::strerror(errno) + ")");
-  in.seekg(0, std::ios::end);
-  const auto size = static_cast<std::streamoff>(in.tellg());
-  if (size < 0) throw InputError(path.string() + ": cannot read");
-  in.seekg(0);
-  std::vector<std::byte> bytes(static_cast<size_t>(size));
-  if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) throw InputError(path.string() + ": read failed");
-  return bytes;
+// The file's bytes. A .binary is exactly kFileBytes long (parse says how far off one is), and its .xz,
+// however badly compressed, not much more: anything twice that is refused by its size, unread.
+std::string readTableFile(const std::filesystem::path& path) {
+  return readInputFile(path, 2 * MerlTable::kFileBytes, "MERL table");
 }
 
 // Decompresses an .xz stream; stops one byte past the size a MERL file may have, so a wrong file is
@@ -84,8 +76,9 @@ MerlTable MerlTable::load(const std::filesystem::path& requested) {
     const std::filesystem::path xz = path.string() + ".xz";
     if (std::filesystem::exists(xz, ec)) path = xz;
   }
-  std::vector<std::byte> bytes = readFile(path);
-  if (path.extension() == ".xz") bytes = decompressXz(bytes, path.string());
+  const std::string file = readTableFile(path);
+  const std::span<const std::byte> bytes = std::as_bytes(std::span(file));
+  if (path.extension() == ".xz") return parse(decompressXz(bytes, path.string()), path.string());
   return parse(bytes, path.string());
 }
 

@@ -90,8 +90,10 @@ NeuralBrdf NeuralBrdf::parse(std::string_view text, const std::string& source) {
   const toml::array* layers = layersNode ? layersNode->as_array() : nullptr;
   if (!layers || !layers->is_array_of_tables() || layers->empty())
     throw InputError(source + ": needs its layers as [[layer]] tables");
-  if (layers->size() > size_t(kMaxLayers))
-    throw InputError(source + ": " + std::to_string(layers->size()) + " layers, at most " + std::to_string(kMaxLayers));
+  // The architecture first, from the layers' sizes alone: the chain and its cost are checked before any
+  // weight is read.
+  std::vector<const toml::table*> tables;
+  size_t parameters = 0;
   int inputs = kInputs;
   for (size_t k = 0; k < layers->size(); ++k) {
     const toml::table& t = *(*layers)[k].as_table();
@@ -107,6 +109,22 @@ NeuralBrdf NeuralBrdf::parse(std::string_view text, const std::string& source) {
     if (activation != "relu" && activation != "linear")
       throw InputError(where + ": activation '" + activation + "': only 'relu' and 'linear' are known");
     layer.relu = activation == "relu";
+    parameters += size_t(layer.inputs + 1) * size_t(layer.outputs);
+    if (parameters > size_t(kMaxParameters))
+      throw InputError(source + ": more than " + std::to_string(kMaxParameters) + " weights and biases by layer " +
+                       std::to_string(k + 1) + " (a Neural BRDF is 6 -> 21 -> 21 -> 3, 675; a larger network would take " +
+                       "hours to tabulate)");
+    inputs = layer.outputs;
+    tables.push_back(&t);
+    n.layers_.push_back(std::move(layer));
+  }
+  if (inputs != kOutputs) throw InputError(source + ": the last layer has " + std::to_string(inputs) + " outputs, expected 3 (RGB)");
+  if (n.layers_.back().relu) throw InputError(source + ": the last layer must be linear (its outputs go through exp(x) − 1)");
+
+  for (size_t k = 0; k < tables.size(); ++k) {
+    const toml::table& t = *tables[k];
+    const Place place{source, "layer " + std::to_string(k + 1)};
+    Layer& layer = n.layers_[k];
     // The file's rows are outputs; kept input-major, as evalAngles reads them.
     const std::vector<double> rows = requireNumbers(t, "weights", size_t(layer.inputs) * size_t(layer.outputs), place);
     layer.weights.resize(rows.size());
@@ -114,11 +132,7 @@ NeuralBrdf NeuralBrdf::parse(std::string_view text, const std::string& source) {
       for (int i = 0; i < layer.inputs; ++i)
         layer.weights[size_t(i) * size_t(layer.outputs) + size_t(o)] = rows[size_t(o) * size_t(layer.inputs) + size_t(i)];
     layer.biases = requireNumbers(t, "biases", size_t(layer.outputs), place);
-    inputs = layer.outputs;
-    n.layers_.push_back(std::move(layer));
   }
-  if (inputs != kOutputs) throw InputError(source + ": the last layer has " + std::to_string(inputs) + " outputs, expected 3 (RGB)");
-  if (n.layers_.back().relu) throw InputError(source + ": the last layer must be linear (its outputs go through exp(x) − 1)");
   return n;
 }
 

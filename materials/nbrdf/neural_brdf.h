@@ -26,13 +26,18 @@ namespace glossy {
 class NeuralBrdf {
  public:
   static constexpr int kInputs = 6, kOutputs = 3;
-  // Anything larger is not a Neural BRDF (the supplement's are 11 KB: 3 layers of at most 21).
-  static constexpr int kMaxLayers = 16, kMaxWidth = 1024;
-  static constexpr std::uintmax_t kMaxBytes = 16u << 20;
+  // The supplement's networks are 6 → 21 → 21 → 3: 675 weights and biases, 11 KB. Every load tabulates the
+  // network 2.9 million times, so its cost is that count times the parameters: a network with more than
+  // theirs is refused, from its layers' sizes, before any weight is read (a valid 11 MB network would
+  // otherwise load for an hour and a half in every command). A file over kMaxBytes is refused unread.
+  static constexpr int kMaxParameters = 675;
+  static constexpr int kMaxWidth = kMaxParameters / kOutputs;  // what a layer can have within the count
+  static constexpr std::uintmax_t kMaxBytes = 256u << 10;
 
   // Throws InputError naming the file (and the line, for TOML errors) for a file that is missing, over
   // kMaxBytes, malformed, of another format or version, with a layer chain that does not go from 6 inputs to 3
-  // outputs, an unknown activation, arrays of the wrong length, or a non-finite weight.
+  // outputs, more than kMaxParameters weights and biases, an unknown activation, arrays of the wrong length,
+  // or a non-finite weight.
   static NeuralBrdf load(const std::filesystem::path& path);
   static NeuralBrdf parse(std::string_view text, const std::string& source);
 

@@ -284,7 +284,7 @@ MaterialFile parseMaterialToml(std::string_view text, const std::string& source)
 
 MaterialFile loadMaterialFile(const std::filesystem::path& path) {
   // A material file is a few kilobytes; a megabyte leaves room for long comments and notes.
-  return parseMaterialToml(readInputFile(path, 1 << 20, "material file"), path.string());
+  return parseMaterialToml(readInputFile(path, kMaxMaterialFileBytes, "material file"), path.string());
 }
 
 std::string toToml(const MaterialFile& m) {

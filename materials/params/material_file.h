@@ -5,6 +5,7 @@
 #include "materials/models/brdf.h"
 #include "materials/params/param_set.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -61,6 +62,8 @@ struct MaterialFile {
   void put(Fit fit);
 };
 
+// Anything longer is not a material file (the library's are a few kilobytes).
+inline constexpr std::uintmax_t kMaxMaterialFileBytes = 1 << 20;
 // Throws InputError "FILE:LINE: fit K (MODEL:METRIC): key 'k' ..." for any missing, unknown, non-finite or
 // out-of-range value, and for TOML syntax errors.
 MaterialFile loadMaterialFile(const std::filesystem::path& path);

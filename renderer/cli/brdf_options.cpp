@@ -15,6 +15,7 @@ void BrdfOptions::addTo(CLI::App* app) {
   auto* materialOpt = app->add_option("--material", material, "Material parameter file (TOML)");
   auto* fitOpt = app->add_option("--fit", fit, "Which fit of the material: MODEL:METRIC, e.g. microfacet:E2");
   auto* measuredOpt = app->add_option("--measured", measured, "Measured data instead: a MERL .binary (or .binary.xz) table or a .nbrdf network");
+  app->add_option("--merl-dir", merlDir, "Folder with MERL tables for --measured (else $GLOSSY_MERL_DIR)");
   app->add_option("--smooth-fresnel", smoothFresnel, "Override a smooth fit's Fresnel angle: projected (the fits' convention) or vh")
       ->check(CLI::IsMember({"projected", "vh"}));
   materialOpt->needs(fitOpt);
@@ -27,7 +28,7 @@ void BrdfOptions::addTo(CLI::App* app) {
 }
 
 Brdf BrdfOptions::load() const {
-  if (!measured.empty()) return Measured{loadMeasured(measured)};
+  if (!measured.empty()) return Measured{loadMeasured(findMeasured(measured, merlDir))};
   const MaterialFile file = loadMaterialFile(material);
   const FitId id = FitId::parse(fit, "--fit");
   const Fit* found = file.find(id);

@@ -1,5 +1,6 @@
 // The options that name one BRDF on the command line — --material F --fit MODEL:METRIC, or --measured
-// F.binary (or F.nbrdf) — shared by the subcommands that evaluate or sample a single BRDF.
+// F.binary (or F.nbrdf), found as every command finds measured data (findMeasured: --merl-dir,
+// $GLOSSY_MERL_DIR) — shared by the subcommands that evaluate or sample a single BRDF.
 #pragma once
 
 #include "materials/models/brdf.h"
@@ -13,7 +14,7 @@
 namespace glossy::cli {
 
 struct BrdfOptions {
-  std::string material, fit, measured, smoothFresnel;
+  std::string material, fit, measured, smoothFresnel, merlDir;
 
   void addTo(CLI::App* app);
   Brdf load() const;  // InputError naming the file for anything missing or malformed
@@ -30,8 +31,9 @@ std::string measuredLabel(const std::filesystem::path& path);
 // The database part of that name: "MERL (NBRDF reconstruction)" or "MERL".
 std::string measuredDatabase(const std::filesystem::path& path);
 
-// The file a --measured option names: as given, else under --merl-dir, else $GLOSSY_MERL_DIR (each also
-// as .xz); InputError naming it when none exists.
+// The file a --measured option names, by the one rule every command and the Python module use
+// (resolveMeasured, docs/measured.md): an absolute path as given, else under --merl-dir, $GLOSSY_MERL_DIR,
+// then the working folder (each also as .xz); InputError naming it when none exists.
 std::filesystem::path findMeasured(const std::string& given, const std::filesystem::path& merlDir);
 
 }  // namespace glossy::cli

@@ -1,4 +1,6 @@
 // glossy render: one image of a glTF scene under an environment, as shared/spec/interfaces.md states.
+#include "materials/core/notes.h"
+#include "materials/core/output_lock.h"
 #include "renderer/cli/command.h"
 #include "renderer/cli/destination.h"
 #include "renderer/cli/image_memory.h"
@@ -20,10 +22,13 @@ struct RenderOptions {
 int runRender(const RenderOptions& o) {
   checkOutputFile(o.output, "-o", {".exr"}, Folder::Create);
   checkImageMemory(o.job.settings.width, o.job.settings.height, 1, kRenderBytesPerPixel);
+  // Held until the EXR is in place: another run to the same -o is refused, not raced.
+  const OutputLock lock(o.output, "-o");
   const RenderedImage r = renderImage(o.job);
   const std::filesystem::path out = o.output;
   if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
   writeExr(out, r.image, r.metadata, o.half ? PixelType::Half : PixelType::Float);
+  flushNotes();  // what writing it noted (values clipped by --half) before the summary
   const RenderSettings& s = o.job.settings;
   std::cerr << "glossy: wrote " << out.string() << " (" << s.width << "x" << s.height << ", " << s.spp << " spp, "
             << r.stats.seconds << " s";
@@ -54,7 +59,7 @@ Command addRenderCommand(CLI::App& parent) {
   app->add_option("--light-samples", o->job.settings.lightSamples,
                   "Light samples at a path's first vertex (more: less noise from the lights at less than a path's cost)")
       ->check(CLI::Range(1, kMaxLightSamples))->capture_default_str();
-  app->add_flag("--half", o->half, "Write half-float EXR (default: float)");
+  app->add_flag("--half", o->half, "Write half-float EXR (default: float); values above 65504 are clipped to it, and counted on stderr");
   app->add_option("--brdf-sampling", o->job.brdfSampling,
                   "lobe: each model samples its own lobe (default); cosine: the cosine lobe, to see what lobe sampling is worth")
       ->check(CLI::IsMember({"lobe", "cosine"}))->capture_default_str();

@@ -4,7 +4,6 @@
 #include "materials/core/text.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 #include <numeric>
 #include <optional>
@@ -61,13 +60,17 @@ Shard indexedShard(const ArrayVariables& env, const char* indexName, const char*
 
 Shard shardFrom(const std::string& option, const ArrayVariables& env) {
   if (!option.empty()) {
-    int i = -1, n = 0, used = 0;
-    char slash = 0;
-    // %n: the whole text must be i/N, so "0/3/4" is refused rather than read as 0/3.
-    if (std::sscanf(option.c_str(), "%d%c%d%n", &i, &slash, &n, &used) != 3 || size_t(used) != option.size() || slash != '/' ||
-        n < 1 || i < 0 || i >= n)
-      throw InputError("--shard: '" + shortened(option) + "' is not i/N with 0 <= i < N");
-    return {i, n, "--shard " + option};
+    // Each part a whole number up to 1e9 (sscanf's %d would overflow on more digits), the whole text i/N, so
+    // that "0/3/4" is refused rather than read as 0/3.
+    const size_t slash = option.find('/');
+    const auto part = [&](const std::string& text) {
+      return text.find_first_not_of("0123456789") == std::string::npos ? wholeNumber(text.c_str(), 0) : std::nullopt;
+    };
+    const auto i = slash == std::string::npos ? std::nullopt : part(option.substr(0, slash));
+    const auto n = slash == std::string::npos ? std::nullopt : part(option.substr(slash + 1));
+    if (!i || !n || *n < 1 || *i >= *n)
+      throw InputError("--shard: '" + shortened(option) + "' is not i/N with 0 <= i < N <= 1e9");
+    return {int(*i), int(*n), "--shard " + option};
   }
   if (env("SLURM_ARRAY_TASK_ID")) return slurmShard(env);
   if (env("JOB_COMPLETION_INDEX")) return indexedShard(env, "JOB_COMPLETION_INDEX", "GLOSSY_SHARD_COUNT", "Kubernetes indexed Job");
@@ -84,7 +87,10 @@ std::vector<size_t> shardItems(std::span<const double> costs, const Shard& shard
   std::vector<size_t> order(costs.size());
   std::iota(order.begin(), order.end(), size_t(0));
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return costs[a] > costs[b]; });
-  std::vector<double> load(size_t(shard.count), 0.0);
+  // Longest first, each to the least loaded shard (the first of equals): with non-negative costs the k-th
+  // item goes to one of the first k shards, so with more shards than items the rest stay empty and need
+  // no entry. A load per shard would make --shard 1/1000000000 allocate 8 GB before doing anything.
+  std::vector<double> load(std::min(size_t(shard.count), costs.size()), 0.0);
   std::vector<size_t> mine;
   for (size_t item : order) {
     const size_t to = size_t(std::min_element(load.begin(), load.end()) - load.begin());

@@ -1,6 +1,8 @@
 // glossy sheet / glossy sheets: the supplement's comparison grid for one material, or for many
 // (shared/spec/interfaces.md; renderer/sheet/sheet.h has the layout and the error figures).
 #include "materials/core/input_error.h"
+#include "materials/core/notes.h"
+#include "materials/core/output_lock.h"
 #include "materials/core/text.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/command.h"
@@ -17,6 +19,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <unistd.h>
 
 namespace glossy::cli {
@@ -37,6 +40,7 @@ void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, co
   const MadeSheet made = makeMaterialSheet(stage, materialPath, job, explicitMeasured);
   writeSheetFiles(made, stage, job, exr);
   std::cout << errorTable(made.sheet) << std::flush;
+  flushNotes();  // what the render and the writing noted (a target missed, values clipped), by its sheet
   std::cerr << "glossy: wrote " << exr.string() << " and " << std::filesystem::path(exr).replace_extension(".png").string()
             << " (" << made.seconds << " s)\n";
 }
@@ -46,15 +50,15 @@ void addRenderOptions(CLI::App* app, SheetOptions& o) {
   o.scene.addTo(app);
   o.spp = app->add_option("--spp", o.settings.spp,
                   "Samples per pixel of every panel, in 4 independent replicates (rounded up to a multiple of 4); with "
-                  "--target-error or --time: at most this many")
+                  "--target-error or --time: at most this many (--target-error alone: at most " + std::to_string(kTargetErrorSppCap) + ")")
       ->check(CLI::Range(1, 1 << 24))
       ->capture_default_str();
   app->add_option("--time", o.settings.secondsPerPanel,
                   "Wall-clock seconds per panel instead of --spp: the panels render in passes until their budget is spent")
       ->check(finiteIn(0.0, 1e6, true));
   app->add_option("--target-error", o.settings.targetError,
-                  "Render in passes until every model's relative-RMSE 95 % interval has at most this half-width (capped by "
-                  "--spp if given, and --time)")
+                  "Render in passes until every model's relative-RMSE 95 % interval has at most this half-width, or until "
+                  "--spp (default " + std::to_string(kTargetErrorSppCap) + ") or --time caps it, saying so; a line per pass on stderr")
       ->check(finiteIn(0.0, 10.0, true));
   app->add_option("--width", o.settings.width, "Panel width")->check(CLI::Range(8, 1 << 14))->capture_default_str();
   app->add_option("--height", o.settings.height, "Panel height")->check(CLI::Range(8, 1 << 14))->capture_default_str();
@@ -66,13 +70,15 @@ void addRenderOptions(CLI::App* app, SheetOptions& o) {
   app->add_option("--exposure", o.exposure, "Exposure of the PNG preview in stops (the EXR stays linear)")
       ->check(finiteIn(-64.0, 64.0))
       ->capture_default_str();
-  app->add_flag("--half", o.half, "Write half-float EXR (default: float)");
+  app->add_flag("--half", o.half, "Write half-float EXR (default: float); values above 65504 are clipped to it, and counted on stderr");
 }
 
-// --time and --target-error render until they are met; --spp caps them only when given.
+// --time renders until its budget is spent, --target-error until it is met or kTargetErrorSppCap; --spp caps
+// either when given. Their passes each print a line.
 SheetOptions withPassLimits(const SheetOptions& o) {
   SheetOptions out = o;
-  if ((o.settings.targetError > 0.0 || o.settings.secondsPerPanel > 0.0) && o.spp->count() == 0) out.settings.spp = 1 << 24;
+  applyPassLimits(out.settings, o.spp->count() > 0);
+  out.settings.passLines = true;
   return out;
 }
 
@@ -81,6 +87,8 @@ int runSheet(const SheetOptions& options) {
   checkOutputFile(options.output, "-o", {".exr"}, Folder::Create);
   const SheetOptions o = withPassLimits(options);
   checkImageMemory(o.settings.width, o.settings.height, int(o.settings.panels.size()), kSheetBytesPerPanelPixel);
+  // Held until both files are in place: another run to the same -o is refused, not interleaved.
+  const OutputLock lock(o.output, "-o");
   const Stage stage(o.scene, double(o.settings.width) / double(o.settings.height));
   SheetOptions single = o;
   single.settings.progress = isatty(STDERR_FILENO);
@@ -156,16 +164,18 @@ int runSheets(const SheetOptions& options) {
   for (size_t k = 0; k < files.size(); ++k) {
     const std::string& name = names[k];
     const std::filesystem::path exr = outDir / (name + ".exr");
-    const SheetLock lock(outDir, name);
-    if (!lock.held()) {
+    std::optional<OutputLock> lock;
+    try {
+      lock.emplace(exr, "-o");
+    } catch (const OutputBusy& e) {
       ++busy;
-      std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": another glossy sheets is writing it, skipped\n";
+      std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": " << e.what() << ", skipped\n";
       continue;
     }
-    if (const size_t stale = removeStaleTemporaries(outDir, name))
+    if (const size_t stale = removeStaleTemporaries(exr))
       std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": removed " << stale
                 << " temporary files an interrupted run left\n";
-    const std::string why = whyIncomplete(exr, sheetSettings(loadMaterialFile(files[k]), stage, batch, ""));
+    const std::string why = whyIncomplete(exr, sheetSettings(loadMaterialFile(files[k]), stage, batch, ""), batch.settings);
     if (why.empty()) {
       ++skipped;
       std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": complete, skipped\n";

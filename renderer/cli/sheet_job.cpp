@@ -8,6 +8,7 @@
 #include "renderer/scene/material_binding.h"
 
 #include <chrono>
+#include <cmath>
 
 namespace glossy::cli {
 
@@ -34,6 +35,11 @@ std::shared_ptr<const MerlTable> measuredOf(const MaterialFile& m, const SheetJo
 }
 
 }  // namespace
+
+void applyPassLimits(SheetSettings& s, bool sppGiven) {
+  if (sppGiven || (s.targetError <= 0.0 && s.secondsPerPanel <= 0.0)) return;
+  s.spp = s.secondsPerPanel > 0.0 ? 1 << 24 : kTargetErrorSppCap;
+}
 
 std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetJob& o, const std::string& explicitMeasured) {
   const std::optional<std::filesystem::path> measured = explicitMeasured.empty()
@@ -67,6 +73,7 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       {"glossy:spp", std::to_string(sheet.spp)},
       {"glossy:secondsPerPanel", float(o.settings.secondsPerPanel)},
       {"glossy:targetError", float(o.settings.targetError)},
+      {"glossy:widestInterval", float(std::min(sheet.widestHalfWidth, 1e30))},
       o.settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(o.settings.seed)}
                                              : ImageAttribute{"glossy:seed", std::to_string(o.settings.seed)},
       {"glossy:maxDepth", o.settings.maxDepth},
@@ -95,6 +102,14 @@ MadeSheet makeMaterialSheet(const Stage& stage, const std::filesystem::path& mat
   const SheetScene scene = makeSheetScene(stage.description, stage.bvh, stage.environment, stage.camera);
   made.sheet = renderSheet(scene, made.material, measured, note, job.settings);
   made.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const SheetSettings& s = job.settings;
+  if (s.targetError > 0.0 && !(made.sheet.widestHalfWidth <= s.targetError))
+    glossy::note(std::isfinite(made.sheet.widestHalfWidth)
+                     ? formatted("%s: stopped short of --target-error %g at %d spp: the widest interval is ±%.4g (raise --spp%s)",
+                                 made.material.name.c_str(), s.targetError, made.sheet.spp, made.sheet.widestHalfWidth,
+                                 s.secondsPerPanel > 0.0 ? " or --time" : ", at most 16777216, or give --time")
+                     : formatted("%s: --target-error %g has no interval to aim at (no measured panel): rendered %d spp",
+                                 made.material.name.c_str(), s.targetError, made.sheet.spp));
   return made;
 }
 

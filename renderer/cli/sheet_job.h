@@ -21,6 +21,15 @@ struct SheetJob {
   SheetSettings settings;
 };
 
+// --target-error alone stops at this many samples per pixel (some 13 minutes for a default sheet on two
+// cores), saying so, rather than run for days after a target too fine to reach; --spp or --time set
+// another cap.
+inline constexpr int kTargetErrorSppCap = 4096;
+
+// The sample cap of a run whose --spp was or was not given: --spp's value; with --time, as many as the
+// time allows; with --target-error alone, kTargetErrorSppCap.
+void applyPassLimits(SheetSettings& settings, bool sppGiven);
+
 // What every sheet of one run shares: the scene, its BVH, the environment, the camera.
 struct Stage {
   SceneDescription description;
@@ -42,7 +51,8 @@ struct MadeSheet {
 };
 
 // Loads the material and its measured data (`explicitMeasured`, else the file's own: measuredOf), then
-// renders its sheet. InputError naming the file for bad input, before rendering.
+// renders its sheet. InputError naming the file for bad input, before rendering. A --target-error the
+// passes stopped short of is noted (materials/core/notes.h), with the interval they reached.
 MadeSheet makeMaterialSheet(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
                             const std::string& explicitMeasured);
 // The PNG beside `exr`, then the EXR with its metadata (the settings line resume compares last: a sheet whose

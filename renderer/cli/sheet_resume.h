@@ -1,8 +1,12 @@
 // glossy sheets' resuming: a sheet on disk is kept only if it is whole and was made with the settings
-// of this run; anything else (a 0-byte or truncated EXR, a missing layer or PNG, other settings) is
-// rendered again. The settings travel in the EXR as the glossy:settings attribute. Runs sharing a folder
-// take turns per sheet, and the one holding a sheet clears what an interrupted write of it left.
+// of this run; anything else (a 0-byte or truncated EXR, a missing layer, a PNG that is missing, does not
+// open as a PNG or is not the size the settings give, other settings) is rendered again. The settings travel
+// in the EXR as the glossy:settings attribute. Runs sharing a folder take turns per sheet (each holds the
+// sheet's OutputLock, materials/core/output_lock.h), and the one holding a sheet clears the temporaries an
+// interrupted write of it left — glossy's own only.
 #pragma once
+
+#include "renderer/sheet/sheet.h"
 
 #include <filesystem>
 #include <string>
@@ -15,27 +19,13 @@ inline constexpr const char* kSettingsAttribute = "glossy:settings";
 // gives another. Throws InputError naming the file if it cannot be read.
 std::string contentDigest(const std::filesystem::path& path);
 
-// "" when `exr` and the PNG beside it form a complete sheet whose glossy:settings is `settings`; else why not.
-std::string whyIncomplete(const std::filesystem::path& exr, const std::string& settings);
+// "" when `exr` and the PNG beside it form a complete sheet whose glossy:settings is `settings` and whose
+// PNG is the size of `sheet`'s panels side by side; else why not.
+std::string whyIncomplete(const std::filesystem::path& exr, const std::string& settings, const SheetSettings& sheet);
 
-// Removes the temporaries an interrupted write of sheet NAME left in `folder` (NAME.exr.tmp.XXXXXX,
-// NAME.png.tmp.XXXXXX, see atomic_file.h); returns how many. Call it only holding the sheet's lock.
-size_t removeStaleTemporaries(const std::filesystem::path& folder, const std::string& name);
-
-// One sheet's lock, OUTDIR/.NAME.lock (flock): runs that share a folder (the shards of a job array, or a
-// run started twice) each render a sheet only while holding its lock, so no two write one sheet and an
-// EXR never pairs with another run's PNG. Released when destroyed, or when the process ends however it ends.
-class SheetLock {
- public:
-  SheetLock(const std::filesystem::path& folder, const std::string& name);  // throws InputError if it cannot open the file
-  ~SheetLock();
-  SheetLock(const SheetLock&) = delete;
-  SheetLock& operator=(const SheetLock&) = delete;
-  bool held() const { return held_; }  // false: another run is writing this sheet
-
- private:
-  int fd_ = -1;
-  bool held_ = false;
-};
+// Removes the temporaries an interrupted write of sheet `exr` left beside it (its EXR's and PNG's, named as
+// atomic_file.h names them; a file merely named like them is not glossy's and stays); returns how many.
+// Call it only holding the sheet's lock: no live run is writing them then.
+size_t removeStaleTemporaries(const std::filesystem::path& exr);
 
 }  // namespace glossy::cli

@@ -2,6 +2,11 @@
 
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
+#include "materials/core/input_file.h"
+#include "materials/core/notes.h"
+#include "materials/core/text.h"
+#include "renderer/lights/exr_preflight.h"
+#include "renderer/util/memory.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -28,9 +33,22 @@ void writeAtomically(const std::filesystem::path& path, const OIIO::ImageSpec& s
   writeFileAtomically(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
 }
 
+// Opens an image to read: a regular file (never a FIFO, which would block OpenImageIO for ever), an
+// OpenEXR's headers checked first (exr_preflight.h), its size one that fits in memory.
 std::unique_ptr<OIIO::ImageInput> openImage(const std::filesystem::path& path) {
+  requireInputFile(path, "image");
+  preflightExr(path);
   auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw InputError(path.string() + ": cannot read image: " + OIIO::geterror());
+  if (!in) throw InputError(printableLine(path.string() + ": cannot read image: " + OIIO::geterror()));
+  const OIIO::ImageSpec& spec = in->spec();
+  // Each count read from the header: the product in 64 bits (OpenImageIO keeps them as int).
+  if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels <= 0)
+    throw InputError(path.string() + formatted(": an image of %dx%dx%d with %d channels is not one glossy reads", spec.width,
+                                               spec.height, spec.depth, spec.nchannels));
+  const double bytes = double(spec.width) * double(spec.height) * 3.0 * sizeof(float);
+  if (const double have = physicalMemoryBytes(); have > 0.0 && bytes > have)
+    throw InputError(path.string() + formatted(": %dx%d pixels need %.3g GB, more than the %.3g GB of memory here", spec.width,
+                                               spec.height, bytes / 1e9, have / 1e9));
   return in;
 }
 
@@ -86,6 +104,10 @@ void writeLayeredExr(const std::filesystem::path& path, const std::vector<ExrLay
   if (type == PixelType::Half) spec.attribute("glossy:halfClampedPixels", count);
   else if (clamped > 0) spec.attribute("glossy:nonFinitePixels", count);
   writeAtomically(path, spec, OIIO::TypeDesc::FLOAT, pixels.data());
+  // Said, not only recorded: a clipped highlight looks like any other.
+  if (type == PixelType::Half && clamped > 0)
+    note(formatted("%s: %lld of %lld pixels had a value above 65504, the largest half, written as 65504 (a float EXR keeps them)",
+                   path.string().c_str(), (long long)clamped, (long long)changed.size()));
 }
 
 void writeRgb8(const std::filesystem::path& path, int width, int height, const std::vector<unsigned char>& rgb) {

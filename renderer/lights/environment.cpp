@@ -7,6 +7,7 @@
 
 #include "materials/core/frame.h"
 #include "materials/core/input_error.h"
+#include "materials/core/input_file.h"
 #include "materials/core/text.h"
 #include "materials/models/warp.h"
 #include "materials/sampling/bilinear_patch.h"
@@ -63,10 +64,8 @@ LatLongImage readLatLong(const std::filesystem::path& path) {
   const std::string name = path.string();
   auto fail = [&](const std::string& problem) { return InputError(name + ": " + oneLine(problem)); };
 
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw fail("environment map not found");
-  // OpenImageIO would read a device such as /dev/zero for ever.
-  if (!std::filesystem::is_regular_file(path, ec)) throw fail("is not a regular file (a folder, device or FIFO)");
+  // OpenImageIO would read a device such as /dev/zero for ever, and wait on a FIFO for a writer.
+  requireInputFile(path, "environment map");
   preflightExr(path);
   // The reader of the file's extension alone, made by its format's name: ImageInput::open, and create with
   // the file's name, hand a file that reader refuses to every other format OpenImageIO has (video and

@@ -210,9 +210,11 @@ std::shared_ptr<PySheet> renderSheetOf(const py::kwargs& a) {
   std::tie(s.width, s.height) = sizeOf(get("size"), 256, 8, 1 << 14);
   if (auto v = realArg(a, "time", 0.0, 1e6, true)) s.secondsPerPanel = *v;
   if (auto v = realArg(a, "target_error", 0.0, 10.0, true)) s.targetError = *v;
-  // As glossy sheet: --time and --target-error render until they are met; spp caps them only when given.
-  if (auto v = integerArg(a, "spp", 1, 1 << 24)) s.spp = *v;
-  else if (s.secondsPerPanel > 0.0 || s.targetError > 0.0) s.spp = 1 << 24;
+  // As glossy sheet: --time renders until it is spent, --target-error until it is met or the default cap;
+  // spp caps them when given.
+  const auto spp = integerArg(a, "spp", 1, 1 << 24);
+  if (spp) s.spp = *spp;
+  cli::applyPassLimits(s, spp.has_value());
   if (auto v = given(a, "seed")) s.seed = seedOf(castOr<long long>(*v, "seed: must be a whole number"));
   if (auto v = integerArg(a, "threads", 0, cli::kMaxThreads)) s.threads = *v;
   if (auto v = integerArg(a, "max_depth", 1, 1000)) s.maxDepth = *v;
@@ -326,7 +328,8 @@ sheet(*, material, measured=None, merl_dir=None, scene=None, camera=None, env=No
 
 Renders a material's comparison sheet as `glossy sheet` does: every panel from the same samples, each
 model's error figures with 95 % intervals. spp (default 64) is split among 4 independent replicates;
-time (seconds per panel) or target_error (the widest interval's half-width) render in passes until met.
+time (seconds per panel) or target_error (the widest interval's half-width) render in passes until met;
+target_error alone stops at 4096 spp (spp sets another cap), with a GlossyWarning when it stops short.
 measured: the data for the measured panel (default: the one the material names, then the network
 embedded beside it). progress(done, total) and Ctrl-C as in render(); total is 0 while unknown (time,
 target_error). output: also write the EXR and PNG (or call Sheet.save later).
@@ -339,7 +342,8 @@ target_error). output: also write the EXR and PNG (or call Sheet.save later).
           });
         }, py::arg("path"), py::arg("layer") = "", R"doc(
 An EXR's RGB layer as float32 (height, width, 3): the default layer, or a sheet's panel layer by name
-('measured', 'cook_torrance_E2', ...).
+('measured', 'cook_torrance_E2', ...). Raises InputError naming the file for anything but a regular file
+(a FIFO is refused, not waited on) and for an image that cannot be read.
 )doc");
 }
 

@@ -4,6 +4,7 @@
 #include "renderer/scene/scene.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/input_file.h"
 #include "materials/core/notes.h"
 #include "materials/core/text.h"
 #include "renderer/scene/gltf_preflight.h"
@@ -468,6 +469,27 @@ class GltfReader {
   std::string singularNodes_, emissiveTextures_;
 };
 
+// tinygltf's file system, through input_file.h: a name is there if anything is (so that a FIFO or folder is
+// refused by readWholeFile, naming it, rather than reported missing), and read only if it is a regular file
+// of at most kMaxBufferBytes.
+constexpr std::uintmax_t kMaxBufferBytes = std::uintmax_t(1) << 31;
+
+bool fileExists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
+
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  try {
+    const std::string bytes = readInputFile(path, kMaxBufferBytes, "glTF buffer");
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  } catch (const InputError& e) {
+    if (err) *err += e.what();
+    return false;
+  }
+}
+
 bool hasGlbMagic(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   char magic[4] = {};
@@ -478,13 +500,13 @@ bool hasGlbMagic(const std::filesystem::path& path) {
 }  // namespace
 
 SceneDescription loadGltf(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path.string() + ": no such file");
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": not a regular file");
+  requireInputFile(path, "glTF scene");
   preflightGltf(path);
 
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(ignoreImage, nullptr);
+  // The files the scene names (its buffers) are inputs too: tinygltf's own reader would open a FIFO and wait.
+  gltf.SetFsCallbacks({fileExists, tinygltf::ExpandFilePath, readWholeFile, nullptr, nullptr});
   tinygltf::Model model;
   std::string err, warn;
   bool ok = false;

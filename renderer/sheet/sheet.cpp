@@ -257,12 +257,16 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     lastPass = std::chrono::duration<double>(std::chrono::steady_clock::now() - passStart).count();
     if (settings.targetError > 0.0) {
       compare();
-      if (settings.progress)
-        std::fprintf(stderr, "glossy: %s: %d spp, widest interval ±%.4f (target ±%.4f), %.1f s\n", material.name.c_str(),
-                     sheet.replicates * done, widest, settings.targetError, sheet.seconds);
+      if (settings.passLines)
+        std::fprintf(stderr, "glossy: %s: pass %d: %d spp, widest interval ±%.4g (target ±%.4g), %.1f s\n", material.name.c_str(),
+                     sheet.passes, sheet.replicates * done, widest, settings.targetError, sheet.seconds);
+    } else if (settings.passLines && settings.secondsPerPanel > 0.0) {
+      std::fprintf(stderr, "glossy: %s: pass %d: %d spp, %.1f s\n", material.name.c_str(), sheet.passes, sheet.replicates * done,
+                   sheet.seconds);
     }
   }
   if (settings.targetError <= 0.0 || sheet.passes == 0) compare();
+  sheet.widestHalfWidth = widest;
   sheet.spp = sheet.replicates * done;
   sheet.objectShare = sheet.spp > 0 ? double(objectPaths) / (double(sheet.spp) * w * h) : 0.0;
   sheet.verdict = figures.verdict;
@@ -375,15 +379,28 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
   writeLayeredExr(path, layers, metadata, type);
 }
 
+namespace {
+
+int labelFontSize(int panelWidth) { return std::clamp(panelWidth / 13, 9, 16); }
+int labelStrip(int panelWidth) { return 4 * labelFontSize(panelWidth) + labelFontSize(panelWidth) / 2 + 10; }
+
+}  // namespace
+
+SheetPngSize sheetPngSize(int panelWidth, int panelHeight, int panels) {
+  const int plain = panelHeight + labelStrip(panelWidth);
+  return {panelWidth * panels, plain, plain + panelHeight};
+}
+
 void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double exposure, const std::string& fontPath) {
   const int w = sheet.panels.front().image.width, h = sheet.panels.front().image.height;
   const int n = int(sheet.panels.size());
-  const int fontSize = std::clamp(w / 13, 9, 16);
+  const int fontSize = labelFontSize(w);
   const int small = std::max(8, fontSize - 2);
-  const int strip = 4 * fontSize + fontSize / 2 + 10;
+  const int strip = labelStrip(w);
   const bool mapRow = sheet.hasMeasured();
-  const int height = h + strip + (mapRow ? h : 0);
-  OIIO::ImageBuf buf(OIIO::ImageSpec(w * n, height, 3, OIIO::TypeDesc::FLOAT));
+  const SheetPngSize size = sheetPngSize(w, h, n);
+  const int height = mapRow ? size.heightWithMaps : size.height;
+  OIIO::ImageBuf buf(OIIO::ImageSpec(size.width, height, 3, OIIO::TypeDesc::FLOAT));
   const float stripColour[3] = {0.12f, 0.12f, 0.12f}, emptyColour[3] = {0.25f, 0.25f, 0.25f};
   OIIO::ImageBufAlgo::fill(buf, stripColour);
   const double scale = std::exp2(exposure);

@@ -59,6 +59,9 @@ struct SheetSettings {
   int maxDepth = 8;
   int lightSamples = RenderSettings{}.lightSamples;  // at a path's first vertex
   bool progress = true;
+  // With --time or --target-error: one line on stderr per pass (its samples, its widest interval), terminal
+  // or not, so that a long run in a batch job's log shows how it goes.
+  bool passLines = false;
   std::vector<SheetPanel> panels{sheetPanels().begin(), sheetPanels().end()};
   // Optional (path_tracer.h): the tiles of every pass; its total is set when the passes are known up front
   // (a fixed --spp). Cancelled: renderSheet stops between tiles and throws Cancelled.
@@ -113,6 +116,7 @@ struct Sheet {
   Verdict verdict;                  // indices into panels
   size_t skippedPixels = 0;         // object pixels left out of the figures: not finite
   double flipNoiseFloor = -1.0;     // ꟻLIP of the measured panel's two halves (error_maps.h); < 0: none
+  double widestHalfWidth = 0.0;     // the widest relative-RMSE interval's half-width; Inf: no interval (no measured panel)
   const PanelRender* measured() const;  // null when the grid has no measured panel
   bool hasMeasured() const { return measured() && !measured()->empty; }
 };
@@ -131,6 +135,12 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
 // object (diverging colours, ±kRelativeDifferenceRange) with the colour bar's legend under the measured panel.
 // fontPath empty: OIIO's default font search.
 void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double exposure, const std::string& fontPath);
+// The size of that PNG for `panels` panels of w × h: its width, and its height without and with the row of
+// error maps (there when the sheet has a measured panel).
+struct SheetPngSize {
+  int width, height, heightWithMaps;
+};
+SheetPngSize sheetPngSize(int panelWidth, int panelHeight, int panels);
 // "closest: Smooth E2", "tie: Smooth E2, Microfacet E2" or why there is no verdict.
 std::string verdictText(const Sheet& sheet);
 // The error table for stdout.

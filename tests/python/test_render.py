@@ -2,6 +2,7 @@
 progress callback, Ctrl-C, the GIL released while they work, and the command line's messages."""
 import os
 import signal
+import subprocess
 import threading
 import time
 
@@ -168,3 +169,19 @@ def test_sheet_progress_and_bad_input(tmp_path):
     assert str(python_error.value) == cli_error("sheet", "--material", tmp_path / "none.toml", "-o", tmp_path / "x.exr")
     with pytest.raises(glossy.InputError, match=r"^size: width: must be a whole number in \[8, 16384\], not '4'$"):
         glossy.sheet(material=material_path("alum-bronze"), size=4)
+
+
+def test_read_exr_refuses_a_fifo_at_once(tmp_path):
+    fifo = tmp_path / "pipe.exr"
+    os.mkfifo(fifo)
+    # A reader that opened the FIFO would wait for a writer (holding the GIL): another process writes to it
+    # after a few seconds, so that such a reader fails this test instead of hanging it.
+    writer = subprocess.Popen(["sh", "-c", 'sleep 5; while :; do : >"$0"; sleep 0.02; done', str(fifo)])
+    start = time.monotonic()
+    try:
+        with pytest.raises(glossy.InputError, match=r"pipe\.exr: is a FIFO"):
+            glossy.read_exr(fifo)
+    finally:
+        writer.kill()
+        writer.wait()
+    assert time.monotonic() - start < 5
