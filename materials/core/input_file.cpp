@@ -35,7 +35,7 @@ Descriptor openRegular(const std::filesystem::path& path, std::string_view kind,
   if (::stat(path.c_str(), &s) != 0) {
     const int e = errno;
     throw InputError(where + "cannot open " + std::string(kind) +
-                     (e == ENOENT || e == ENOTDIR ? " (no such file)" : " (" + std::string(std::strerror(e)) + ")"));
+                     (e == ENOENT || e == ENOTDIR ? ": not found" : ": " + std::string(std::strerror(e))));
   }
   if (!S_ISREG(s.st_mode)) throw InputError(where + notRegular(s));
   // O_NONBLOCK: should the path have become a FIFO since, opening it returns at once instead of waiting for
