@@ -56,12 +56,24 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
   metaRow(h, "PNG exposure", formatted("%+g stops", s.pngExposure));
   h << "</dl>\n</header>\n<main>\n";
 
-  // The sheet as drawn.
-  h << "<section aria-labelledby=\"sheet-heading\">\n<h2 id=\"sheet-heading\">Sheet</h2>\n<figure class=\"sheet\"><img src=\""
-    << layout::sheetImage() << "\" alt=\"" << escapeHtml("the comparison sheet of " + s.name) << "\">\n<figcaption>";
+  // The sheet as drawn: its panels, each in its box (the compare view's images), over the rest of it.
+  h << "<section aria-labelledby=\"sheet-heading\">\n<h2 id=\"sheet-heading\">Sheet</h2>\n<figure class=\"sheet\" style=\"max-width: " << s.imageWidth << "px\">"
+    << "<div class=\"sheet-panels\" style=\"aspect-ratio: " << s.imageWidth << " / " << s.panelsBottom << "\">";
+  const double w = s.imageWidth, b = s.panelsBottom;
+  for (const PanelRecord& p : s.panels)
+    h << "<img src=\"" << layout::panelImage(p.layer) << "\" alt=\"" << escapeHtml(p.label) << "\" width=\"" << p.width << "\" height=\""
+      << p.height << "\" style=\"" << formatted("left:%.4f%%;top:%.4f%%;width:%.4f%%;height:%.4f%%", 100 * p.x / w, 100 * p.y / b, 100 * p.width / w,
+                                                100 * p.height / b)
+      << "\">";
+  h << "</div>";
+  if (s.panelsBottom < s.pngHeight)
+    h << "<img class=\"sheet-lower\" src=\"" << layout::sheetLowerImage() << "\" width=\"" << s.imageWidth << "\" height=\""
+      << s.pngHeight - s.panelsBottom << "\" alt=\"" << escapeHtml("each panel's label and figures, and the error maps against the measured panel")
+      << "\">";
+  h << "\n<figcaption>";
   for (size_t k = 0; k < s.panels.size(); ++k) h << (k ? " | " : "") << escapeHtml(s.panels[k].label);
-  h << ". Under the panels: each one's label and figures; the sheets of <code>glossy sheet</code> also carry a row of error maps "
-       "against the measured panel with its legend.</figcaption></figure>\n</section>\n";
+  h << ". Under the panels: each one's label and figures, and a row of error maps against the measured panel with its legend."
+       "</figcaption></figure>\n</section>\n";
 
   // Compare view.
   const PanelRecord* measured = s.measuredPanel();
@@ -145,7 +157,7 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
         << "</p>\n";
     h << "<div class=\"plots\">\n";
     for (const PlotFigure& f : plots->figures) {
-      const std::string image = layout::plotFile(f.png.empty() ? f.svg : f.png);
+      const std::string image = layout::plotFile(f.shown);
       h << "<figure><h3>" << escapeHtml(f.title) << "</h3><img src=\"" << image << "\" alt=\"" << escapeHtml(f.title) << "\">";
       h << "<figcaption>" << escapeHtml(f.caption);
       std::string links;
