@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cstdlib>
 
 namespace glossy::test {
@@ -140,11 +141,18 @@ TEST(OutputFolder, AnInterruptedReportLeavesNothingBehind) {
     writeText(sheets / (other + ".exr"), copy);
     writeText(sheets / (other + ".png"), png);
   }
+  // A whole run's length, then runs stopped at points through it: the first making the site, the others
+  // replacing it.
+  const auto start = std::chrono::steady_clock::now();
+  r = runGlossy({"report", sheets.string(), "-o", (tmp / "timing").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fs::remove_all(tmp / "timing");
   const std::string site = (tmp / "site").string();
-  for (const char* delay : {"0.05", "0.2", "0.5", "1"}) {
-    SCOPED_TRACE(delay);
+  for (double fraction : {0.5, 0.1, 0.3, 0.7, 0.9}) {
+    SCOPED_TRACE(fraction);
     const std::string cmd = shellQuote(GLOSSY_EXE) + " report " + shellQuote(sheets.string()) + " -o " + shellQuote(site) +
-                            " 2>/dev/null & p=$!; sleep " + delay + "; kill -TERM $p 2>/dev/null; wait $p";
+                            " 2>/dev/null & p=$!; sleep " + formatted("%.3f", fraction * seconds) + "; kill -TERM $p 2>/dev/null; wait $p";
     std::system(cmd.c_str());
     for (const auto& e : fs::recursive_directory_iterator(tmp.path())) {
       const std::string name = e.path().filename().string();

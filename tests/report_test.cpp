@@ -134,6 +134,9 @@ TEST(ReportCli, TheIndexShowsTheSheetsFigures) {
   const std::string page = readText(tmp / "site/materials/alum-bronze/index.html");
   EXPECT_NE(page.find(report::shortNumber(ct->relativeRmse.lo)), std::string::npos);  // the interval
   EXPECT_NE(page.find("CT E2"), std::string::npos);
+  // The measured data by its file's name: a published site carries no folders of the machine that rendered it.
+  EXPECT_NE(page.find("alum-bronze."), std::string::npos);
+  for (const std::string& html : {index, page}) EXPECT_EQ(html.find("/alum-bronze."), std::string::npos);
 }
 
 TEST(ReportCli, StringsFromFilesAreEscaped) {

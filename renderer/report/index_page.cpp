@@ -148,7 +148,7 @@ std::string indexPage(const std::vector<SheetRecord>& sheets) {
         << "\" width=\"48\" height=\"48\" alt=\"" << escapeHtml(s.name + ": " + t->label) << "\"></a></td>";
     else
       h << "<td class=\"thumb\">–</td>";
-    h << "<td class=\"name\" data-value=\"" << escapeHtml(s.name) << "\" title=\"" << escapeHtml(s.measured) << "\"><a href=\"" << page << "\">" << escapeHtml(s.name) << "</a></td>";
+    h << "<td class=\"name\" data-value=\"" << escapeHtml(s.name) << "\" title=\"" << escapeHtml(withoutFolders(s.measured)) << "\"><a href=\"" << page << "\">" << escapeHtml(s.name) << "</a></td>";
     h << "<td class=\"text verdict\">" << escapeHtml(s.verdict.empty() ? "–" : s.verdict) << "</td>";
     const std::vector<std::string> closest = s.closestLayers();
     for (const std::string& layer : layers) {

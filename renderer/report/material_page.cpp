@@ -48,7 +48,7 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
   if (next) h << "<a href=\"" << kRoot << layout::materialPage(next->name) << "\" rel=\"next\">" << escapeHtml(next->name) << " →</a>";
   h << "</nav>\n<h1>" << escapeHtml(s.name) << "</h1>\n<p class=\"verdict\">" << escapeHtml(s.verdict.empty() ? "no verdict" : s.verdict)
     << "</p>\n<dl class=\"meta\">\n";
-  metaRow(h, "measured data", s.measured);
+  metaRow(h, "measured data", withoutFolders(s.measured));
   fileRow(h, "material file", s.materialFile);
   fileRow(h, "scene", s.scene);
   metaRow(h, "lighting", s.env);
@@ -123,7 +123,9 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
        "<th scope=\"col\">\xEA\x9F\xBBLIP [95 %]</th><th scope=\"col\">E1</th><th scope=\"col\">E2</th><th class=\"text\" scope=\"col\">Note</th></tr></thead>\n<tbody>\n";
   const std::vector<std::string> closest = s.closestLayers();
   for (const PanelRecord& p : s.panels) {
-    std::string note = p.empty ? (p.note.empty() ? std::string("empty") : "empty: " + p.note) : p.note;
+    // The measured panel's note says where its data came from: without the renderer's folders.
+    const std::string said = p.isMeasured() ? withoutFolders(p.note) : p.note;
+    std::string note = p.empty ? (said.empty() ? std::string("empty") : "empty: " + said) : said;
     if (!p.noiseFree.empty() && p.noiseFree != "yes") note += (note.empty() ? "" : "; ") + p.noiseFree;
     const bool best = std::find(closest.begin(), closest.end(), p.layer) != closest.end();
     h << "<tr><th class=\"text\" scope=\"row\">" << escapeHtml(p.label) << (best ? " <span class=\"closest-mark\">(closest)</span>" : "")
@@ -153,7 +155,7 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
     h << "<p class=\"muted\">No plots for this material (<code>glossy plot</code> makes them).</p>\n";
   } else {
     if (!plots->measured.empty() || !plots->channel.empty())
-      h << "<p class=\"muted\">" << escapeHtml(plots->measured) << (plots->channel.empty() ? "" : "; channel: " + escapeHtml(plots->channel))
+      h << "<p class=\"muted\">" << escapeHtml(withoutFolders(plots->measured)) << (plots->channel.empty() ? "" : "; channel: " + escapeHtml(plots->channel))
         << "</p>\n";
     h << "<div class=\"plots\">\n";
     for (const PlotFigure& f : plots->figures) {

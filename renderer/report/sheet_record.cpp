@@ -4,6 +4,7 @@
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "materials/params/material_name.h"
+#include "renderer/report/html_text.h"
 #include "renderer/report/input_folder.h"
 #include "renderer/sheet/sheet.h"
 
@@ -150,18 +151,6 @@ std::string attributeText(const OIIO::ImageSpec& spec, const std::string& name) 
   if (p->type() == OIIO::TypeDesc::STRING) return printableLine(p->get_string(), 2000);
   if (p->type() == OIIO::TypeDesc::INT) return std::to_string(p->get_int());
   return formatted("%g", double(p->get_float()));
-}
-
-// A scene or lighting as the site shows and compares it: every path cut to its file name, so sheets made in
-// two checkouts of one scene agree and a published site carries no local folders.
-std::string withoutFolders(const std::string& text) {
-  std::istringstream in(text);
-  std::string word, out;
-  while (in >> word) {
-    if (word.find('/') != std::string::npos) word = std::filesystem::path(word).filename().string();
-    out += (out.empty() ? "" : " ") + word;
-  }
-  return out;
 }
 
 // The settings the report compares, in the order it shows them: glossy:settings ("key=value; ..."), or for
