@@ -9,9 +9,12 @@
 #include "tests/support/test_support.h"
 
 #include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 
 #include <regex>
 #include <set>
+#include <sys/stat.h>
+#include <tuple>
 
 namespace glossy::test {
 
@@ -86,8 +89,9 @@ TEST(ReportCli, EveryImageAndLinkOfEveryPageIsInTheSite) {
       if (ref.ends_with(".png")) images.insert(target);
     }
   }
-  // Per material: the sheet and its seven panels (the index's thumbnails are measured panels).
+  // Per material: its seven panels and the sheet below them (the index's thumbnails are measured panels).
   EXPECT_EQ(images.size(), 2u * 8u);
+  EXPECT_FALSE(fs::exists(site / "materials/chrome/sheet.png")) << "the sheet is its panels and the part below, each pixel once";
   const std::string index = readText(site / "index.html");
   for (const char* name : {"alum-bronze", "chrome"}) {
     EXPECT_NE(index.find("href=\"materials/" + std::string(name) + "/index.html\""), std::string::npos) << name;
@@ -130,6 +134,9 @@ TEST(ReportCli, TheIndexShowsTheSheetsFigures) {
   const std::string page = readText(tmp / "site/materials/alum-bronze/index.html");
   EXPECT_NE(page.find(report::shortNumber(ct->relativeRmse.lo)), std::string::npos);  // the interval
   EXPECT_NE(page.find("CT E2"), std::string::npos);
+  // The measured data by its file's name: a published site carries no folders of the machine that rendered it.
+  EXPECT_NE(page.find("alum-bronze."), std::string::npos);
+  for (const std::string& html : {index, page}) EXPECT_EQ(html.find("/alum-bronze."), std::string::npos);
 }
 
 TEST(ReportCli, StringsFromFilesAreEscaped) {
@@ -139,6 +146,7 @@ TEST(ReportCli, StringsFromFilesAreEscaped) {
   {
     OIIO::ImageBuf buf((tmp / "sheets/chrome.exr").string());
     ASSERT_TRUE(buf.read(0, 0, true));
+    buf.specmod().attribute("glossy:materialName", "evil");
     buf.specmod().attribute("glossy:material", hostile);
     buf.specmod().attribute("glossy:panel.measured.note", hostile);
     buf.specmod().attribute("glossy:panel.smooth_E2.params", hostile);
@@ -162,7 +170,7 @@ TEST(ReportCli, StringsFromFilesAreEscaped) {
   const std::string page = readText(tmp / "site/materials/evil/index.html");
   EXPECT_NE(page.find("&lt;script&gt;alert(&quot;x&quot;)&lt;/script&gt;&amp;&#39;"), std::string::npos);
   EXPECT_NE(page.find("&lt;img src=x onerror=alert(1)&gt;"), std::string::npos);
-  EXPECT_TRUE(fs::is_regular_file(tmp / "site/materials/evil/plots/p.png"));
+  EXPECT_TRUE(fs::is_regular_file(tmp / "site/materials/evil/plots/p.webp"));
 }
 
 TEST(ReportCli, PlotsAreCopiedLinkedAndFiltered) {
@@ -177,40 +185,86 @@ TEST(ReportCli, PlotsAreCopiedLinkedAndFiltered) {
   writeText(plots / "plots.json", R"({"material": "chrome", "figures": [
       {"kind": "theta_h", "title": "Theta-h slices", "caption": "cap", "png": "theta_h.png", "svg": "theta_h.svg", "csv": "theta_h.csv"},
       {"kind": "polar", "title": "Polar lobes", "caption": "cap", "png": "polar.png", "svg": "polar.svg", "csv": "polar.csv"}]})");
-  ASSERT_EQ(report(sheetsDir(), tmp / "all", (tmp / "plots").string()).status, 0);
+  // --plot-data: every file, linked; the pictures as the site keeps them (plot_picture.h).
+  RunResult r = runGlossy({"report", sheetsDir().string(), (tmp / "plots").string(), "--plot-data", "-o", (tmp / "all").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
   const std::string all = readText(tmp / "all/materials/chrome/index.html");
-  for (const char* file : {"theta_h.png", "theta_h.svg", "theta_h.csv", "polar.png", "polar.svg", "polar.csv"}) {
+  for (const char* file : {"theta_h.webp", "theta_h.svg", "theta_h.csv", "polar.webp", "polar.svg", "polar.csv"}) {
     EXPECT_TRUE(fs::is_regular_file(tmp / "all/materials/chrome/plots" / file)) << file;
     EXPECT_NE(all.find("plots/" + std::string(file)), std::string::npos) << file;
   }
   EXPECT_NE(all.find("Polar lobes"), std::string::npos);
   EXPECT_NE(readText(tmp / "all/materials/alum-bronze/index.html").find("No plots for this material"), std::string::npos);
 
-  const RunResult r = runGlossy({"report", sheetsDir().string(), (tmp / "plots").string(), "--plot-kinds", "theta_h", "--no-plot-data",
-                                 "-o", (tmp / "lean").string()});
+  // The default: the pictures alone; --plot-kinds keeps the kinds named.
+  r = runGlossy({"report", sheetsDir().string(), (tmp / "plots").string(), "--plot-kinds", "theta_h", "-o", (tmp / "lean").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string lean = readText(tmp / "lean/materials/chrome/index.html");
-  EXPECT_TRUE(fs::is_regular_file(tmp / "lean/materials/chrome/plots/theta_h.png"));
-  for (const char* file : {"theta_h.svg", "theta_h.csv", "polar.png", "polar.svg", "polar.csv"}) {
+  EXPECT_TRUE(fs::is_regular_file(tmp / "lean/materials/chrome/plots/theta_h.webp"));
+  for (const char* file : {"theta_h.svg", "theta_h.csv", "polar.webp", "polar.svg", "polar.csv"}) {
     EXPECT_FALSE(fs::exists(tmp / "lean/materials/chrome/plots" / file)) << file;
     EXPECT_EQ(lean.find("plots/" + std::string(file)), std::string::npos) << file;
   }
   EXPECT_EQ(lean.find("Polar lobes"), std::string::npos);
 }
 
+// A kind of plot that does not exist would drop every plot without a word.
+TEST(ReportCli, UnknownPlotKindsAreRefused) {
+  TempDir tmp;
+  const RunResult r = runGlossy({"report", sheetsDir().string(), "--plot-kinds", "theta_h,bogus", "-o", (tmp / "site").string()});
+  expectOneLineError(r, "--plot-kinds");
+  EXPECT_NE(r.err.find("bogus"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(tmp / "site"));
+}
+
+// The site holds each pixel once, and plot pictures at the size the page shows them: a report of the
+// default sheets and plots stays under 2 MB a material (docs/report.md has the figures).
+TEST(ReportCli, ImagesAreNotDuplicatedAndPlotPicturesAreScaled) {
+  TempDir tmp;
+  const fs::path plots = tmp / "plots/chrome";
+  fs::create_directories(plots);
+  {
+    // A picture as wide as glossy plot's (1.5 px per SVG unit).
+    OIIO::ImageBuf wide(OIIO::ImageSpec(1600, 1000, 3, OIIO::TypeDesc::UINT8));
+    const float white[3] = {1, 1, 1};
+    OIIO::ImageBufAlgo::fill(wide, white);
+    ASSERT_TRUE(wide.write((plots / "theta_h.png").string()));
+  }
+  writeText(plots / "plots.json", R"({"figures": [{"kind": "theta_h", "png": "theta_h.png"}]})");
+  const RunResult r = report(sheetsDir(), tmp / "site", (tmp / "plots").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const fs::path chrome = tmp / "site/materials/chrome";
+  const RgbImage picture = readRgbImage(chrome / "plots/theta_h.webp");
+  EXPECT_EQ(picture.width, 960);
+  EXPECT_EQ(picture.height, 600);
+  // The panels and the part below them are the sheet's PNG, each pixel once.
+  const report::SheetRecord sheet = report::readSheetRecord(sheetsDir() / "chrome.exr");
+  const RgbImage png = readRgbImage(sheetsDir() / "chrome.png");
+  const RgbImage lower = readRgbImage(chrome / "sheet-lower.png");
+  int64_t pixels = int64_t(lower.width) * lower.height;
+  for (const report::PanelRecord& p : sheet.panels) pixels += int64_t(p.width) * p.height;
+  EXPECT_EQ(pixels, int64_t(png.width) * png.height);
+  EXPECT_EQ(lower.width, png.width);
+  for (int y = 0; y < lower.height; ++y)
+    for (int x = 0; x < lower.width; ++x)
+      for (int c = 0; c < 3; ++c) ASSERT_EQ(lower.at(x, y)[c], png.at(x, y + sheet.panelsBottom)[c]) << x << "," << y;
+}
+
 TEST(ReportCli, ReplacesAnEarlierReportAndLeavesItWhenTheInputIsBad) {
   TempDir tmp;
   copySheets(tmp / "sheets");
   ASSERT_EQ(report(tmp / "sheets", tmp / "site").status, 0);
-  writeText(tmp / "site/stale.txt", "from before");
+  writeText(tmp / "site/notes.txt", "the user's own");
   fs::remove(tmp / "sheets/chrome.exr");
   fs::remove(tmp / "sheets/chrome.png");
   const RunResult again = report(tmp / "sheets", tmp / "site/");
   ASSERT_EQ(again.status, 0) << again.err;
-  EXPECT_FALSE(fs::exists(tmp / "site/stale.txt"));
-  EXPECT_FALSE(fs::exists(tmp / "site/materials/chrome"));
+  EXPECT_EQ(readText(tmp / "site/notes.txt"), "the user's own") << "a file glossy did not write is never deleted";
+  EXPECT_FALSE(fs::exists(tmp / "site/materials/chrome")) << "the earlier report's files no longer made are removed";
   EXPECT_TRUE(fs::exists(tmp / "site/materials/alum-bronze/index.html"));
-  for (const auto& e : fs::directory_iterator(tmp.path())) EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+  EXPECT_EQ(readText(tmp / "site/.glossy-manifest").find("chrome"), std::string::npos);
+  for (const auto& e : fs::recursive_directory_iterator(tmp.path()))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
 
   // A corrupt sheet: refused, naming it, and the site stays as it was.
   const std::string before = readText(tmp / "site/index.html");
@@ -218,15 +272,19 @@ TEST(ReportCli, ReplacesAnEarlierReportAndLeavesItWhenTheInputIsBad) {
   writeText(tmp / "sheets/broken.png", "");
   expectOneLineError(report(tmp / "sheets", tmp / "site"), "broken.exr");
   EXPECT_EQ(readText(tmp / "site/index.html"), before);
-  // Cut short: the header reads, the pixels do not.
+  // Cut short: the PNG's header reads, its pixels do not.
   fs::remove(tmp / "sheets/broken.exr");
   fs::remove(tmp / "sheets/broken.png");
-  const std::string whole = readText(sheetsDir() / "chrome.exr");
-  writeText(tmp / "sheets/short.exr", whole.substr(0, whole.size() * 2 / 3));
-  fs::copy_file(sheetsDir() / "chrome.png", tmp / "sheets/short.png");
-  expectOneLineError(report(tmp / "sheets", tmp / "site"), "short.exr");
+  copySheets(tmp / "short");
+  fs::remove(tmp / "short/alum-bronze.exr");
+  fs::remove(tmp / "short/alum-bronze.png");
+  const std::string whole = readText(tmp / "short/chrome.png");
+  writeText(tmp / "short/chrome.png", whole.substr(0, whole.size() * 2 / 3));
+  expectOneLineError(report(tmp / "short", tmp / "site"), "chrome.png");
   EXPECT_EQ(readText(tmp / "site/index.html"), before);
-  for (const auto& e : fs::directory_iterator(tmp.path())) EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+  EXPECT_FALSE(fs::exists(tmp / "site/materials/chrome"));
+  for (const auto& e : fs::recursive_directory_iterator(tmp.path()))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
 }
 
 TEST(ReportCli, BadInputIsRefusedBeforeWriting) {
@@ -236,10 +294,10 @@ TEST(ReportCli, BadInputIsRefusedBeforeWriting) {
   expectOneLineError(report(tmp / "empty", tmp / "site"), "holds no sheets");
   copySheets(tmp / "sheets");
   writeText(tmp / "file", "x");
-  expectOneLineError(report(tmp / "sheets", tmp / "file"), "is a file");
+  expectOneLineError(report(tmp / "sheets", tmp / "file"), "-o " + (tmp / "file").string());
   fs::create_directories(tmp / "other");
   writeText(tmp / "other/precious.txt", "keep me");
-  expectOneLineError(report(tmp / "sheets", tmp / "other"), "not replacing it");
+  expectOneLineError(report(tmp / "sheets", tmp / "other"), "not writing into it");
   EXPECT_EQ(readText(tmp / "other/precious.txt"), "keep me");
   expectOneLineError(report(tmp / "sheets", tmp / "site", (tmp / "no-plots").string()), "no-plots");
   // plots.json naming a file outside its folder, or missing.
@@ -255,9 +313,136 @@ TEST(ReportCli, BadInputIsRefusedBeforeWriting) {
   fs::remove(tmp / "sheets/chrome.png");
   expectOneLineError(report(tmp / "sheets", tmp / "site"), "chrome.png");
   fs::copy_file(tmp / "sheets/alum-bronze.png", tmp / "sheets/chrome.png");
-  fs::copy_file(tmp / "sheets/chrome.exr", tmp / "sheets/bad name<x>.exr");
-  expectOneLineError(report(tmp / "sheets", tmp / "site"), "bad name<x>.exr");
+  {
+    OIIO::ImageBuf buf((tmp / "sheets/chrome.exr").string());
+    ASSERT_TRUE(buf.read(0, 0, true));
+    buf.specmod().attribute("glossy:materialName", "bad name<x>");
+    ASSERT_TRUE(buf.write((tmp / "sheets/renamed.exr").string()));
+    fs::copy_file(tmp / "sheets/chrome.png", tmp / "sheets/renamed.png");
+  }
+  expectOneLineError(report(tmp / "sheets", tmp / "site"), "renamed.exr");
   EXPECT_FALSE(fs::exists(tmp / "site"));
+}
+
+namespace {
+
+// A copy of the fixture's sheet `from` (NAME.exr and its PNG) as `to`.exr, with header attributes changed.
+void modifiedSheet(const std::string& from, const fs::path& to, const std::vector<std::pair<std::string, std::string>>& attributes) {
+  fs::create_directories(to.parent_path());
+  OIIO::ImageBuf buf((sheetsDir() / (from + ".exr")).string());
+  ASSERT_TRUE(buf.read(0, 0, true));
+  for (const auto& [name, value] : attributes) buf.specmod().attribute(name, value);
+  ASSERT_TRUE(buf.write(fs::path(to).replace_extension(".exr").string()));
+  fs::copy_file(sheetsDir() / (from + ".png"), fs::path(to).replace_extension(".png"), fs::copy_options::overwrite_existing);
+}
+
+}  // namespace
+
+// Every size and offset from a sheet's header is checked in 64 bits: a box whose y + height overflows an
+// int cut a panel from memory outside the image.
+TEST(ReportInput, BoxesBeyondTheImageAreRefusedWhateverTheirSize) {
+  TempDir tmp;
+  for (const char* box : {"0 2147483647 32 32", "2147483647 0 32 32", "0 0 4294967328 32", "0 0 99999999999999999999 32", "-1 0 32 32",
+                          "0 1 32 32", "0 0 32", "0 0 32.5 32"}) {
+    SCOPED_TRACE(box);
+    fs::remove_all(tmp / "sheets");
+    modifiedSheet("chrome", tmp / "sheets/chrome", {{"glossy:panel.smooth_E2.box", box}});
+    expectOneLineError(report(tmp / "sheets", tmp / "site"), "chrome.exr");
+    EXPECT_FALSE(fs::exists(tmp / "site"));
+    expectOneLineError(runGlossy({"merge", "sheets", (tmp / "sheets").string(), "--csv", (tmp / "t.csv").string()}), "chrome.exr");
+    EXPECT_FALSE(fs::exists(tmp / "t.csv"));
+  }
+}
+
+// The material's name is the sheet's own (glossy:materialName), not its file name; two sheets of one
+// material, or a name that cannot name a page, are refused.
+TEST(ReportInput, TheMaterialNameComesFromTheSheet) {
+  TempDir tmp;
+  modifiedSheet("chrome", tmp / "sheets/my-render", {});
+  ASSERT_EQ(report(tmp / "sheets", tmp / "site").status, 0);
+  EXPECT_TRUE(fs::is_regular_file(tmp / "site/materials/chrome/index.html"));
+  EXPECT_FALSE(fs::exists(tmp / "site/materials/my-render"));
+  EXPECT_NE(readText(tmp / "site/index.html").find(">chrome</a>"), std::string::npos);
+
+  modifiedSheet("chrome", tmp / "sheets/chrome-again", {});
+  RunResult r = report(tmp / "sheets", tmp / "site");
+  expectOneLineError(r, "chrome-again.exr");
+  EXPECT_NE(r.err.find("my-render.exr"), std::string::npos) << r.err;
+  expectOneLineError(runGlossy({"merge", "sheets", (tmp / "sheets").string(), "--csv", (tmp / "t.csv").string()}), "chrome-again.exr");
+  fs::remove(tmp / "sheets/chrome-again.exr");
+  modifiedSheet("chrome", tmp / "sheets/evil", {{"glossy:materialName", "../../escape"}});
+  expectOneLineError(report(tmp / "sheets", tmp / "site"), "evil.exr");
+  EXPECT_FALSE(fs::exists(tmp / "escape"));
+}
+
+// One index, one set of medians: over sheets made alike only. The settings are shown on the index.
+TEST(ReportInput, SheetsMadeWithDifferentSettingsAreRefused) {
+  TempDir tmp;
+  copySheets(tmp / "sheets");
+  ASSERT_EQ(report(tmp / "sheets", tmp / "site").status, 0);
+  const std::string index = readText(tmp / "site/index.html");
+  EXPECT_NE(index.find("Every sheet made with: scene preview.gltf; lighting default sky; panel size 32x32; samples per pixel 8; seed 1"),
+            std::string::npos);
+  const std::string settings = readImageAttribute(sheetsDir() / "chrome.exr", "glossy:settings");
+  for (const auto& [from, to, what] : {std::tuple{"size=32x32", "size=64x64", "panel size"}, std::tuple{"spp=8", "spp=1024", "samples per pixel"},
+                                       std::tuple{"seed=1", "seed=2", "seed"}}) {
+    SCOPED_TRACE(what);
+    std::string changed = settings;
+    ASSERT_NE(changed.find(from), std::string::npos) << settings;
+    changed.replace(changed.find(from), std::string(from).size(), to);
+    modifiedSheet("chrome", tmp / "sheets/chrome", {{"glossy:settings", changed}});
+    const RunResult r = report(tmp / "sheets", tmp / "site");
+    expectOneLineError(r, what);
+    EXPECT_NE(r.err.find("alum-bronze.exr"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("chrome.exr"), std::string::npos) << r.err;
+    EXPECT_EQ(readText(tmp / "site/index.html"), index);
+  }
+  // The scene's folder is not a setting: the same scene from another checkout agrees.
+  std::string moved = settings;
+  const size_t scene = moved.find("scene=");
+  moved.replace(scene, moved.find(';', scene) - scene, "scene=/elsewhere/scenes/preview.gltf");
+  modifiedSheet("chrome", tmp / "sheets/chrome", {{"glossy:settings", moved}});
+  EXPECT_EQ(report(tmp / "sheets", tmp / "site").status, 0);
+}
+
+// The report reads regular files inside its input folders only: a symlink leading out of them would copy
+// any file into a site meant for publishing, a FIFO would block it forever.
+TEST(ReportInput, LinksOutOfTheInputFoldersAndSpecialFilesAreRefused) {
+  TempDir tmp;
+  copySheets(tmp / "sheets");
+  writeText(tmp / "secret.csv", "private,data\n");
+  const fs::path plots = tmp / "plots/chrome";
+  fs::create_directories(plots);
+  fs::copy_file(sheetsDir() / "chrome.png", plots / "theta_h.png");
+  writeText(plots / "plots.json", R"({"figures": [{"kind": "theta_h", "png": "theta_h.png", "csv": "theta_h.csv"}]})");
+  fs::create_symlink(tmp / "secret.csv", plots / "theta_h.csv");
+  expectOneLineError(runGlossy({"report", (tmp / "sheets").string(), (tmp / "plots").string(), "--plot-data", "-o", (tmp / "site").string()}),
+                     "theta_h.csv");
+  EXPECT_FALSE(fs::exists(tmp / "site"));
+  // A link inside the folder is followed.
+  fs::remove(plots / "theta_h.csv");
+  writeText(tmp / "plots/data.csv", "x,y\n");
+  fs::create_symlink("../data.csv", plots / "theta_h.csv");
+  RunResult r = runGlossy({"report", (tmp / "sheets").string(), (tmp / "plots").string(), "--plot-data", "-o", (tmp / "site").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readText(tmp / "site/materials/chrome/plots/theta_h.csv"), "x,y\n");
+
+  // Sheets: a link out, a FIFO as a sheet, a FIFO as plots.json: refused at once, naming the file.
+  fs::copy_file(tmp / "sheets/chrome.png", tmp / "outside.png");
+  fs::copy_file(tmp / "sheets/chrome.exr", tmp / "outside.exr");
+  fs::create_symlink(tmp / "outside.exr", tmp / "sheets/linked.exr");
+  fs::copy_file(tmp / "sheets/chrome.png", tmp / "sheets/linked.png");
+  expectOneLineError(report(tmp / "sheets", tmp / "site2"), "linked.exr");
+  fs::remove(tmp / "sheets/linked.exr");
+  fs::remove(tmp / "sheets/linked.png");
+  ASSERT_EQ(::mkfifo((tmp / "sheets/fifo.exr").c_str(), 0644), 0);
+  expectOneLineError(runGlossy({"report", (tmp / "sheets").string(), "-o", (tmp / "site2").string()}), "fifo.exr");
+  expectOneLineError(runGlossy({"merge", "sheets", (tmp / "sheets").string(), "--csv", (tmp / "t.csv").string()}), "fifo.exr");
+  fs::remove(tmp / "sheets/fifo.exr");
+  fs::remove(plots / "plots.json");
+  ASSERT_EQ(::mkfifo((plots / "plots.json").c_str(), 0644), 0);
+  expectOneLineError(report(tmp / "sheets", tmp / "site2", (tmp / "plots").string()), "plots.json");
+  EXPECT_FALSE(fs::exists(tmp / "site2"));
 }
 
 TEST(ReportSummary, CountsClosestAndTiesApartAndTakesMedians) {

@@ -6,7 +6,9 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <fcntl.h>
+#include <pthread.h>
 #include <stdexcept>
 #include <string>
 #include <sys/stat.h>
@@ -27,32 +29,57 @@ std::runtime_error ioError(const std::filesystem::path& path, const char* what) 
 // The temporaries in flight, where a signal handler can read them: fixed storage (no allocation), each slot
 // claimed and released through an atomic flag, its path written before the flag says it is there.
 // A path too long for a slot, or more writers than slots, is simply not cleaned on signal.
+//
+// The handler may run on any thread, a library's worker included, while the writer's thread goes on. So a
+// writer marks its slot Creating before it checks `stopping` and creates the file, and keeps it so until the
+// slot names the file; the handler sets `stopping`, waits until no slot is Creating or Filling, then removes
+// the named files. Either the writer sees `stopping` and creates nothing, or the handler waits for its file's
+// name. The writer's thread holds the signals back while it creates, so the handler never waits for itself.
+enum SlotState : int { Free = 0, Filling = 1, Named = 2, Creating = 3 };
 struct Slot {
-  std::atomic<int> state{0};  // 0 free, 1 being filled or emptied, 2 holds a path
+  std::atomic<int> state{Free};
   std::array<char, 4096> path{};
 };
 std::array<Slot, 64> slots;
+std::atomic<bool> stopping{false};
 
+// A slot holding `path` and marked Creating, or -1.
 int claim(const std::string& path) {
   if (path.size() >= Slot{}.path.size()) return -1;
   for (int i = 0; i < int(slots.size()); ++i) {
-    int expected = 0;
-    if (slots[size_t(i)].state.compare_exchange_strong(expected, 1)) {
+    int expected = Free;
+    if (slots[size_t(i)].state.compare_exchange_strong(expected, Filling)) {
       std::memcpy(slots[size_t(i)].path.data(), path.c_str(), path.size() + 1);
-      slots[size_t(i)].state.store(2);
+      slots[size_t(i)].state.store(Creating);
       return i;
     }
   }
   return -1;
 }
 
+void name(int slot, const std::string& path) {
+  if (slot < 0) return;
+  slots[size_t(slot)].state.store(Filling);
+  std::memcpy(slots[size_t(slot)].path.data(), path.c_str(), path.size() + 1);
+  slots[size_t(slot)].state.store(Named);
+}
+
 void release(int slot) {
-  if (slot >= 0) slots[size_t(slot)].state.store(0);
+  if (slot >= 0) slots[size_t(slot)].state.store(Free);
 }
 
 extern "C" void removeTemporariesAndStop(int sig) {
+  stopping.store(true);
+  // A writer creating a file on another thread takes microseconds; a second at most, then go on regardless.
+  const struct timespec millisecond = {0, 1000000};
+  for (int waited = 0; waited < 1000; ++waited) {
+    bool busy = false;
+    for (const Slot& s : slots) busy = busy || s.state.load() == Creating || s.state.load() == Filling;
+    if (!busy) break;
+    ::nanosleep(&millisecond, nullptr);  // async-signal-safe
+  }
   for (Slot& s : slots)
-    if (s.state.load() == 2) ::unlink(s.path.data());  // async-signal-safe
+    if (s.state.load() == Named) ::unlink(s.path.data());  // async-signal-safe
   std::signal(sig, SIG_DFL);
   std::raise(sig);
 }
@@ -74,21 +101,25 @@ void removeTemporariesOnSignal() {
 
 PendingTemporary::PendingTemporary(const std::filesystem::path& path) {
   std::string tmpl = path.string() + std::string(kTemporaryInfix) + std::string(kTemporaryRandom, 'X');
-  // Claimed under the template's name first, so the file is never on disk unknown to the handler; the
-  // name mkstemp fills in is then written into the same slot.
+  sigset_t stops, before;
+  sigemptyset(&stops);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stops, sig);
+  pthread_sigmask(SIG_BLOCK, &stops, &before);
   slot_ = claim(tmpl);
+  if (stopping.load()) {  // being stopped: create nothing, and wait for the end
+    release(slot_);
+    for (;;) ::pause();
+  }
   fd_ = mkstemp(tmpl.data());
   if (fd_ < 0) {
     const int saved = errno;
     release(slot_);
+    pthread_sigmask(SIG_SETMASK, &before, nullptr);
     errno = saved;
     throw ioError(path, "cannot create a temporary file beside it");
   }
-  if (slot_ >= 0) {
-    slots[size_t(slot_)].state.store(1);  // the handler skips a path while it is being rewritten
-    std::memcpy(slots[size_t(slot_)].path.data(), tmpl.c_str(), tmpl.size() + 1);
-    slots[size_t(slot_)].state.store(2);
-  }
+  name(slot_, tmpl);
+  pthread_sigmask(SIG_SETMASK, &before, nullptr);
   tmp_ = tmpl;
 }
 

@@ -29,6 +29,7 @@ struct PlotOptions {
 int runPlot(const PlotOptions& o) {
   using namespace plot;
   checkOutputFolder(o.out, "-o");
+  OwnedFolder out(o.out, kPlotCommand, "-o");  // a folder of glossy plot's, or new: never `/` or a user's
   const MaterialFile m = loadMaterialFile(o.material);
   // The measured data as the sheets find it: --measured, else the file's own under --merl-dir,
   // $GLOSSY_MERL_DIR or the working folder, else the network embedded beside the material file.
@@ -63,7 +64,7 @@ int runPlot(const PlotOptions& o) {
     for (PlotFigure& f : imageSliceFigures(set)) figures.push_back(std::move(f));
   if (wanted("albedo")) figures.push_back(albedoFigure(set));
   if (wanted("polar")) figures.push_back(polarFigure(set, o.polarScale == "linear" ? RadialScale::Linear : RadialScale::Log));
-  writePlots(o.out, set, figures, rsvg);
+  writePlots(out, set, figures, rsvg);
   std::cerr << "glossy: wrote " << figures.size() << (figures.size() == 1 ? " figure of " : " figures of ") << m.name << " to "
             << o.out.string() << " (plots.json)\n";
   return 0;
@@ -81,12 +82,15 @@ Command addPlotCommand(CLI::App& parent) {
   app->add_option("--measured", o->measured,
                   "Measured data instead of the file's own: a MERL .binary (or .binary.xz) table or a .nbrdf network");
   app->add_option("--merl-dir", o->merlDir, "Folder with MERL tables (else $GLOSSY_MERL_DIR)");
-  app->add_option("-o,--out", o->out, "Output folder (created if missing)")->required();
+  app->add_option("-o,--out", o->out,
+                  "Output folder: created if missing; an existing one must be empty or an earlier glossy plot's, whose files "
+                  "it replaces")
+      ->required();
   app->add_option("--channel", o->channel, "Which channel to plot: R, G, B or luminance (Rec. 709)")
       ->check(CLI::IsMember({"R", "G", "B", "luminance"}))
       ->capture_default_str();
   app->add_option("--figures", o->figures, "Only these kinds of figure (default: all): theta_h, image_slice, albedo, polar")
-      ->check(CLI::IsMember({"theta_h", "image_slice", "albedo", "polar"}))
+      ->check(CLI::IsMember(std::vector<std::string>(plot::kPlotKinds.begin(), plot::kPlotKinds.end())))
       ->delimiter(',');
   app->add_option("--decades", o->decades,
                   "Decades the log scales span below the peak (default: down to every curve's floor)")

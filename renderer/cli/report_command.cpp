@@ -2,6 +2,7 @@
 // (renderer/report/report_site.h; docs/report.md).
 #include "renderer/cli/command.h"
 #include "renderer/cli/destination.h"
+#include "renderer/plot/plot_output.h"
 #include "renderer/report/report_site.h"
 
 #include <cstdio>
@@ -14,7 +15,7 @@ namespace {
 struct ReportCliOptions {
   std::string sheetsDir, plotsDir, site = "out/report";
   std::vector<std::string> plotKinds;
-  bool noPlotData = false;
+  bool plotData = false;
 };
 
 int runReport(const ReportCliOptions& o) {
@@ -23,10 +24,8 @@ int runReport(const ReportCliOptions& o) {
   if (!o.plotsDir.empty()) options.plotsDir = std::filesystem::path(o.plotsDir);
   options.site = o.site;
   options.plotKinds = o.plotKinds;
-  options.plotData = !o.noPlotData;
-  std::filesystem::path parent = std::filesystem::absolute(o.site).lexically_normal();
-  if (!parent.has_filename()) parent = parent.parent_path();
-  checkOutputFolder(parent.parent_path(), "-o");
+  options.plotData = o.plotData;
+  checkOutputFolder(o.site, "-o");
   const report::ReportResult r = report::writeReport(options);
   std::fprintf(stderr, "glossy: wrote %s/index.html: %zu materials, %zu images, %zu plot files\n", o.site.c_str(), r.materials, r.images,
                r.plots);
@@ -41,12 +40,17 @@ Command addReportCommand(CLI::App& parent) {
       "Make a static HTML site of a folder of sheets (from glossy sheets) and optionally their plots (from glossy plot): "
       "an index of every material and model's error figures, sortable and filterable, and a page per material with its "
       "sheet, a compare view, the figures, the fit parameters and the plots. Self-contained: it works from file:// offline.");
-  app->add_option("SHEETS_DIR", o->sheetsDir, "Folder of sheets: NAME.exr and NAME.png from glossy sheets")->required();
+  app->add_option("SHEETS_DIR", o->sheetsDir, "Folder of sheets: NAME.exr and NAME.png from glossy sheets, all made with the same settings")
+      ->required();
   app->add_option("PLOTS_DIR", o->plotsDir, "Folder of plots: PLOTS_DIR/NAME/plots.json from glossy plot (optional)");
-  app->add_option("-o,--output", o->site, "The site's folder (replaces an earlier report there)")->capture_default_str();
+  app->add_option("-o,--output", o->site,
+                  "The site's folder: created if missing; an existing one must be empty or an earlier report, whose files it replaces")
+      ->capture_default_str();
   app->add_option("--plot-kinds", o->plotKinds, "Only the plots of these kinds (theta_h, image_slice, albedo, polar); default: all")
+      ->check(CLI::IsMember(std::vector<std::string>(plot::kPlotKinds.begin(), plot::kPlotKinds.end())))
       ->delimiter(',');
-  app->add_flag("--no-plot-data", o->noPlotData, "Copy each plot's picture only, not its SVG and CSV (a lighter site)");
+  app->add_flag("--plot-data,!--no-plot-data", o->plotData,
+                "Also copy each plot's SVG and CSV beside its picture and link them (default: the picture alone, a lighter site)");
   return {app, [o] { return runReport(*o); }};
 }
 

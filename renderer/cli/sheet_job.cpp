@@ -68,6 +68,7 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
   }
   return {
       {"glossy:material", m.path.string()},
+      {"glossy:materialName", m.name},  // what the report names the material by, whatever the file is called
       {"glossy:fit", std::string("sheet")},
       {"glossy:measured", sheet.measured()->note},
       {"glossy:spp", std::to_string(sheet.spp)},

@@ -13,16 +13,20 @@ constexpr double kPngZoom = 1.5;  // 1.5 px per SVG unit: sharp text in document
 
 }  // namespace
 
-void writePlots(const std::filesystem::path& dir, const PlotSet& set, const std::vector<PlotFigure>& figures,
+void writePlots(OwnedFolder& dir, const PlotSet& set, const std::vector<PlotFigure>& figures,
                 const std::optional<std::filesystem::path>& rsvgConvert) {
-  std::filesystem::create_directories(dir);
+  std::vector<std::string> files = {"plots.json"};
+  for (const PlotFigure& f : figures)
+    for (const char* ext : {".svg", ".csv", ".png"})
+      if (rsvgConvert || std::string(ext) != ".png") files.push_back(f.name + ext);
+  dir.plan(files);
   nlohmann::ordered_json index;
   index["material"] = set.material;
   index["measured"] = set.measuredLabel;
   index["channel"] = channelName(set.channel);
   index["figures"] = nlohmann::ordered_json::array();
   for (const PlotFigure& f : figures) {
-    const std::filesystem::path svg = dir / (f.name + ".svg"), csv = dir / (f.name + ".csv"), png = dir / (f.name + ".png");
+    const std::filesystem::path svg = dir.path(f.name + ".svg"), csv = dir.path(f.name + ".csv"), png = dir.path(f.name + ".png");
     writeFileAtomically(svg, f.svg);
     writeFileAtomically(csv, f.csv);
     if (rsvgConvert) svgToPng(*rsvgConvert, svg, png, kPngZoom);
@@ -37,7 +41,8 @@ void writePlots(const std::filesystem::path& dir, const PlotSet& set, const std:
     entry["csv"] = csv.filename().string();
     index["figures"].push_back(entry);
   }
-  writeFileAtomically(dir / "plots.json", index.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
+  writeFileAtomically(dir.path("plots.json"), index.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n");
+  dir.finish();
 }
 
 }  // namespace glossy::plot

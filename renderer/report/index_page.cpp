@@ -54,6 +54,22 @@ std::string sourceLabel(const std::string& measured) {
   return last.find('/') != std::string::npos || last.find('.') != std::string::npos ? measured.substr(0, space) : measured;
 }
 
+// What every sheet was made with (checkSameSettings made sure they agree): the figures and medians below
+// compare like with like only under these.
+std::string settingsParagraph(const std::vector<SheetRecord>& sheets) {
+  if (sheets.empty()) return "";
+  std::map<std::string, std::string> value;
+  for (const SheetSetting& s : sheets.front().settings) value[s.key] = s.value;
+  const bool adaptive = value["time"] != "0" || value["targetError"] != "0";
+  std::string text;
+  for (const SheetSetting& s : sheets.front().settings) {
+    if (s.key == "format" || ((s.key == "time" || s.key == "targetError") && s.value == "0")) continue;
+    const std::string label = s.key == "spp" && adaptive ? "samples per pixel at most" : s.label;
+    text += (text.empty() ? "" : "; ") + escapeHtml(label) + " " + escapeHtml(s.value);
+  }
+  return "<p class=\"settings\">Every sheet made with: " + text + ".</p>\n";
+}
+
 }  // namespace
 
 const PanelRecord* thumbnailPanel(const SheetRecord& sheet) {
@@ -84,7 +100,7 @@ std::string indexPage(const std::vector<SheetRecord>& sheets) {
     h << (first ? "" : "; ") << escapeHtml(label) << " (" << count << (count == 1 ? " material)" : " materials)");
     first = false;
   }
-  h << ".</p>\n</header>\n<main>\n";
+  h << ".</p>\n" << settingsParagraph(sheets) << "</header>\n<main>\n";
 
   // Summary rows.
   h << "<h2 id=\"summary-heading\">Per model</h2>\n<div class=\"table-wrap\">\n<table id=\"summary\" class=\"summary\" "
@@ -132,7 +148,7 @@ std::string indexPage(const std::vector<SheetRecord>& sheets) {
         << "\" width=\"48\" height=\"48\" alt=\"" << escapeHtml(s.name + ": " + t->label) << "\"></a></td>";
     else
       h << "<td class=\"thumb\">–</td>";
-    h << "<td class=\"name\" data-value=\"" << escapeHtml(s.name) << "\" title=\"" << escapeHtml(s.measured) << "\"><a href=\"" << page << "\">" << escapeHtml(s.name) << "</a></td>";
+    h << "<td class=\"name\" data-value=\"" << escapeHtml(s.name) << "\" title=\"" << escapeHtml(withoutFolders(s.measured)) << "\"><a href=\"" << page << "\">" << escapeHtml(s.name) << "</a></td>";
     h << "<td class=\"text verdict\">" << escapeHtml(s.verdict.empty() ? "–" : s.verdict) << "</td>";
     const std::vector<std::string> closest = s.closestLayers();
     for (const std::string& layer : layers) {

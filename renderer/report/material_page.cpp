@@ -48,7 +48,7 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
   if (next) h << "<a href=\"" << kRoot << layout::materialPage(next->name) << "\" rel=\"next\">" << escapeHtml(next->name) << " →</a>";
   h << "</nav>\n<h1>" << escapeHtml(s.name) << "</h1>\n<p class=\"verdict\">" << escapeHtml(s.verdict.empty() ? "no verdict" : s.verdict)
     << "</p>\n<dl class=\"meta\">\n";
-  metaRow(h, "measured data", s.measured);
+  metaRow(h, "measured data", withoutFolders(s.measured));
   fileRow(h, "material file", s.materialFile);
   fileRow(h, "scene", s.scene);
   metaRow(h, "lighting", s.env);
@@ -56,12 +56,24 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
   metaRow(h, "PNG exposure", formatted("%+g stops", s.pngExposure));
   h << "</dl>\n</header>\n<main>\n";
 
-  // The sheet as drawn.
-  h << "<section aria-labelledby=\"sheet-heading\">\n<h2 id=\"sheet-heading\">Sheet</h2>\n<figure class=\"sheet\"><img src=\""
-    << layout::sheetImage() << "\" alt=\"" << escapeHtml("the comparison sheet of " + s.name) << "\">\n<figcaption>";
+  // The sheet as drawn: its panels, each in its box (the compare view's images), over the rest of it.
+  h << "<section aria-labelledby=\"sheet-heading\">\n<h2 id=\"sheet-heading\">Sheet</h2>\n<figure class=\"sheet\" style=\"max-width: " << s.imageWidth << "px\">"
+    << "<div class=\"sheet-panels\" style=\"aspect-ratio: " << s.imageWidth << " / " << s.panelsBottom << "\">";
+  const double w = s.imageWidth, b = s.panelsBottom;
+  for (const PanelRecord& p : s.panels)
+    h << "<img src=\"" << layout::panelImage(p.layer) << "\" alt=\"" << escapeHtml(p.label) << "\" width=\"" << p.width << "\" height=\""
+      << p.height << "\" style=\"" << formatted("left:%.4f%%;top:%.4f%%;width:%.4f%%;height:%.4f%%", 100 * p.x / w, 100 * p.y / b, 100 * p.width / w,
+                                                100 * p.height / b)
+      << "\">";
+  h << "</div>";
+  if (s.panelsBottom < s.pngHeight)
+    h << "<img class=\"sheet-lower\" src=\"" << layout::sheetLowerImage() << "\" width=\"" << s.imageWidth << "\" height=\""
+      << s.pngHeight - s.panelsBottom << "\" alt=\"" << escapeHtml("each panel's label and figures, and the error maps against the measured panel")
+      << "\">";
+  h << "\n<figcaption>";
   for (size_t k = 0; k < s.panels.size(); ++k) h << (k ? " | " : "") << escapeHtml(s.panels[k].label);
-  h << ". Under the panels: each one's label and figures; the sheets of <code>glossy sheet</code> also carry a row of error maps "
-       "against the measured panel with its legend.</figcaption></figure>\n</section>\n";
+  h << ". Under the panels: each one's label and figures, and a row of error maps against the measured panel with its legend."
+       "</figcaption></figure>\n</section>\n";
 
   // Compare view.
   const PanelRecord* measured = s.measuredPanel();
@@ -111,7 +123,9 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
        "<th scope=\"col\">\xEA\x9F\xBBLIP [95 %]</th><th scope=\"col\">E1</th><th scope=\"col\">E2</th><th class=\"text\" scope=\"col\">Note</th></tr></thead>\n<tbody>\n";
   const std::vector<std::string> closest = s.closestLayers();
   for (const PanelRecord& p : s.panels) {
-    std::string note = p.empty ? (p.note.empty() ? std::string("empty") : "empty: " + p.note) : p.note;
+    // The measured panel's note says where its data came from: without the renderer's folders.
+    const std::string said = p.isMeasured() ? withoutFolders(p.note) : p.note;
+    std::string note = p.empty ? (said.empty() ? std::string("empty") : "empty: " + said) : said;
     if (!p.noiseFree.empty() && p.noiseFree != "yes") note += (note.empty() ? "" : "; ") + p.noiseFree;
     const bool best = std::find(closest.begin(), closest.end(), p.layer) != closest.end();
     h << "<tr><th class=\"text\" scope=\"row\">" << escapeHtml(p.label) << (best ? " <span class=\"closest-mark\">(closest)</span>" : "")
@@ -141,11 +155,11 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
     h << "<p class=\"muted\">No plots for this material (<code>glossy plot</code> makes them).</p>\n";
   } else {
     if (!plots->measured.empty() || !plots->channel.empty())
-      h << "<p class=\"muted\">" << escapeHtml(plots->measured) << (plots->channel.empty() ? "" : "; channel: " + escapeHtml(plots->channel))
+      h << "<p class=\"muted\">" << escapeHtml(withoutFolders(plots->measured)) << (plots->channel.empty() ? "" : "; channel: " + escapeHtml(plots->channel))
         << "</p>\n";
     h << "<div class=\"plots\">\n";
     for (const PlotFigure& f : plots->figures) {
-      const std::string image = layout::plotFile(f.png.empty() ? f.svg : f.png);
+      const std::string image = layout::plotFile(f.shown);
       h << "<figure><h3>" << escapeHtml(f.title) << "</h3><img src=\"" << image << "\" alt=\"" << escapeHtml(f.title) << "\">";
       h << "<figcaption>" << escapeHtml(f.caption);
       std::string links;

@@ -3,15 +3,16 @@
 
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "renderer/report/input_folder.h"
 
 #include <nlohmann/json.hpp>
 
-#include <fstream>
-#include <sstream>
 
 namespace glossy::report {
 
 namespace {
+
+constexpr std::uintmax_t kMaxPlotsJsonBytes = std::uintmax_t(16) << 20;
 
 // A file name the site may copy: one path component of letters, digits, '_', '.', '+', '-', starting with
 // a letter or digit (never hidden, never "..").
@@ -24,16 +25,13 @@ bool isPlainFileName(const std::string& name) {
 
 }  // namespace
 
-PlotIndex readPlotIndex(const std::filesystem::path& folder) {
+PlotIndex readPlotIndex(const std::filesystem::path& plotsDir, const std::filesystem::path& folder) {
   const std::filesystem::path file = folder / "plots.json";
   const std::string where = file.string();
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(where + ": cannot read");
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
+  const std::string bytes = readInputFile(plotsDir, file, kMaxPlotsJsonBytes, "plots.json");
   nlohmann::json j;
   try {
-    j = nlohmann::json::parse(bytes.str());
+    j = nlohmann::json::parse(bytes);
   } catch (const nlohmann::json::exception& e) {
     throw InputError(where + ": not JSON: " + printableLine(e.what(), 200));
   }
@@ -54,12 +52,14 @@ PlotIndex readPlotIndex(const std::filesystem::path& folder) {
     const std::string what = "figures[" + std::to_string(k) + "].";
     if (!f.is_object()) throw InputError(where + ": " + what.substr(0, what.size() - 1) + " is not an object");
     PlotFigure fig{text(f, "kind", what), text(f, "title", what), text(f, "caption", what),
-                   text(f, "png", what), text(f, "svg", what), text(f, "csv", what)};
+                   text(f, "png", what), text(f, "svg", what), text(f, "csv", what), ""};
     for (const std::string* name : {&fig.png, &fig.svg, &fig.csv}) {
       if (name->empty()) continue;
       if (!isPlainFileName(*name)) throw InputError(where + ": " + what + " names '" + shortened(*name) + "', not a plain file name");
       std::error_code ec;
-      if (!std::filesystem::is_regular_file(folder / *name, ec)) throw InputError(where + ": " + what + " names " + *name + ", which is missing");
+      if (!std::filesystem::exists(std::filesystem::symlink_status(folder / *name, ec)))
+        throw InputError(where + ": " + what + " names " + *name + ", which is missing");
+      checkInputFile(plotsDir, folder / *name, "plot file");
     }
     if (fig.png.empty() && fig.svg.empty()) throw InputError(where + ": " + what + " has neither a png nor an svg");
     if (fig.title.empty()) fig.title = fig.kind.empty() ? "figure " + std::to_string(k + 1) : fig.kind;

@@ -4,12 +4,18 @@
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "materials/params/material_name.h"
+#include "renderer/report/html_text.h"
+#include "renderer/report/input_folder.h"
 #include "renderer/sheet/sheet.h"
 
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <array>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <map>
 #include <sstream>
 
 namespace glossy::report {
@@ -104,11 +110,90 @@ std::vector<std::string> SheetRecord::closestLayers() const {
 
 bool SheetRecord::isTie() const { return verdict.starts_with("tie: ") && closestLayers().size() > 1; }
 
-SheetRecord readSheetRecord(const std::filesystem::path& exr) {
+namespace {
+
+// What the report handles, so a header cannot make it allocate without bound: the panel count, the image's
+// side, and the pixels of the sheet's PNG it decodes (3 bytes each).
+constexpr int64_t kMaxPanels = 256;
+constexpr int64_t kMaxSide = int64_t(1) << 24;
+constexpr int64_t kMaxPngPixels = int64_t(1) << 30;
+
+// A whole number in 64 bits; nullopt for anything else (a sign, a fraction, digits beyond int64).
+std::optional<int64_t> wholeNumber(const std::string& text) {
+  int64_t v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
+  return v;
+}
+
+// "x y width height", each a whole number, the box inside a width × height image.
+std::optional<std::array<int64_t, 4>> panelBox(const std::string& text, int64_t width, int64_t height) {
+  std::istringstream in(text);
+  std::array<int64_t, 4> box{};
+  std::string word;
+  for (int64_t& v : box) {
+    if (!(in >> word)) return std::nullopt;
+    const auto n = wholeNumber(word);
+    if (!n) return std::nullopt;
+    v = *n;
+  }
+  if (in >> word) return std::nullopt;
+  const auto [x, y, w, h] = box;
+  // Each term is checked before the sums, which then cannot overflow.
+  if (x < 0 || y < 0 || w <= 0 || h <= 0 || x > width || y > height || w > width - x || h > height - y) return std::nullopt;
+  return box;
+}
+
+// An attribute as text, whatever type it was stored as.
+std::string attributeText(const OIIO::ImageSpec& spec, const std::string& name) {
+  const OIIO::ParamValue* p = spec.find_attribute(name);
+  if (!p) return "";
+  if (p->type() == OIIO::TypeDesc::STRING) return printableLine(p->get_string(), 2000);
+  if (p->type() == OIIO::TypeDesc::INT) return std::to_string(p->get_int());
+  return formatted("%g", double(p->get_float()));
+}
+
+// The settings the report compares, in the order it shows them: glossy:settings ("key=value; ..."), or for
+// a sheet from before it, the attributes of the same meaning.
+std::vector<SheetSetting> sheetSettings(const OIIO::ImageSpec& spec) {
+  struct Known {
+    const char* key;
+    const char* label;
+    const char* attribute;  // the older sheet's attribute
+  };
+  static constexpr Known kKnown[] = {
+      {"scene", "scene", "glossy:scene"},
+      {"env", "lighting", "glossy:env"},
+      {"size", "panel size", "glossy:panelSize"},
+      {"spp", "samples per pixel", "glossy:spp"},
+      {"time", "seconds per panel", "glossy:secondsPerPanel"},
+      {"targetError", "target error", "glossy:targetError"},
+      {"seed", "seed", "glossy:seed"},
+      {"maxDepth", "path segments at most", "glossy:maxDepth"},
+      {"lightSamples", "light samples", "glossy:lightSamples"},
+      {"format", "sheet format", nullptr},
+  };
+  std::map<std::string, std::string> line;
+  const OIIO::ParamValue* p = spec.find_attribute("glossy:settings");
+  const bool hasLine = p && p->type() == OIIO::TypeDesc::STRING;
+  if (hasLine)
+    for (const std::string& item : split(printableLine(p->get_string(), 8000), ';'))
+      if (const size_t eq = item.find('='); eq != std::string::npos) line[item.substr(0, eq)] = item.substr(eq + 1);
+  std::vector<SheetSetting> settings;
+  for (const Known& k : kKnown) {
+    std::string value = hasLine ? line[k.key] : k.attribute ? attributeText(spec, k.attribute) : std::string("1");
+    if (std::string(k.key) == "scene" || std::string(k.key) == "env") value = withoutFolders(value);
+    settings.push_back({k.key, k.label, value.empty() ? "unknown" : value});
+  }
+  return settings;
+}
+
+}  // namespace
+
+SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::filesystem::path& exr) {
   SheetRecord r;
-  r.name = exr.stem().string();
   r.exr = exr;
-  checkMaterialName(r.name, exr.string());
+  checkInputFile(folder, exr, "sheet");
   auto in = OIIO::ImageInput::open(exr.string());
   if (!in) throw InputError(exr.string() + ": cannot read: " + printableLine(OIIO::geterror()));
   const OIIO::ImageSpec spec = in->spec();
@@ -116,6 +201,22 @@ SheetRecord readSheetRecord(const std::filesystem::path& exr) {
   const Header h(exr, spec);
   const std::string names = h.text("glossy:panels");
   if (names.empty()) h.fail("not a glossy sheet (no glossy:panels)");
+  if (spec.width <= 0 || spec.height <= 0 || spec.width > kMaxSide || spec.height > kMaxSide)
+    h.fail(formatted("%d x %d pixels, not a sheet the report handles (at most %lld a side)", spec.width, spec.height, (long long)kMaxSide));
+  r.imageWidth = spec.width;
+  r.imageHeight = spec.height;
+
+  // The material's name from the sheet, not its file name (which a user may have chosen): it names the
+  // material's page, so it must be a usable material name.
+  if (const std::string name = h.text("glossy:materialName"); !name.empty()) {
+    checkMaterialName(name, exr.string() + ": glossy:materialName");
+    r.name = name;
+  } else if (const std::string file = h.text("glossy:material"); !file.empty()) {
+    r.name = std::filesystem::path(file).stem().string();
+    checkMaterialName(r.name, exr.string() + ": glossy:material");
+  } else {
+    h.fail("not a glossy sheet (no glossy:materialName or glossy:material)");
+  }
   r.materialFile = h.text("glossy:material");
   r.measured = h.text("glossy:measured");
   r.verdict = h.text("glossy:verdict");
@@ -125,20 +226,24 @@ SheetRecord readSheetRecord(const std::filesystem::path& exr) {
   r.pngExposure = h.number("glossy:pngExposure").value_or(0.0);
   if (std::abs(r.pngExposure) > 64.0) h.fail("glossy:pngExposure out of range");
   r.flipNoiseFloor = h.number("glossy:flipNoiseFloor");
+  r.settings = sheetSettings(spec);
 
-  for (const std::string& layer : split(names, ',')) {
+  const std::vector<std::string> layers = split(names, ',');
+  if (int64_t(layers.size()) > kMaxPanels) h.fail(formatted("%zu panels in glossy:panels, more than the report handles (%lld)", layers.size(), (long long)kMaxPanels));
+  for (const std::string& layer : layers) {
     if (!isMaterialName(layer)) h.fail("panel '" + shortened(layer) + "' in glossy:panels is not a plain name");
     if (r.panel(layer)) h.fail("panel '" + layer + "' is listed twice");
     PanelRecord p;
     p.layer = layer;
     const std::string key = "glossy:panel." + layer, error = "glossy:error." + layer;
-    std::istringstream box(h.text(key + ".box"));
-    std::string rest;
-    if (!(box >> p.x >> p.y >> p.width >> p.height) || (box >> rest) || p.x < 0 || p.y < 0 || p.width <= 0 ||
-        p.height <= 0 || p.x + p.width > spec.width || p.y + p.height > spec.height)
-      h.fail("panel '" + layer + "' has no box inside the image");
-    const int first = spec.channelindex(layer + ".R");
-    if (first < 0 || spec.channelindex(layer + ".G") < 0 || spec.channelindex(layer + ".B") < 0)
+    const auto box = panelBox(h.text(key + ".box"), spec.width, spec.height);
+    if (!box) h.fail("panel '" + layer + "' has no box inside the image");
+    p.x = int((*box)[0]);
+    p.y = int((*box)[1]);
+    p.width = int((*box)[2]);
+    p.height = int((*box)[3]);
+    r.panelsBottom = std::max(r.panelsBottom, p.y + p.height);  // <= spec.height: no overflow
+    if (spec.channelindex(layer + ".R") < 0 || spec.channelindex(layer + ".G") < 0 || spec.channelindex(layer + ".B") < 0)
       h.fail("panel '" + layer + "' has no layer " + layer + ".R/G/B");
     p.label = h.text(key + ".label");
     if (p.label.empty()) p.label = layer;
@@ -163,11 +268,17 @@ SheetRecord readSheetRecord(const std::filesystem::path& exr) {
     r.panels.push_back(std::move(p));
   }
 
+  // The PNG beside it, drawn with it: the site's images are cut from it, so it must be the EXR's width
+  // (the panels' boxes are the same in both) and reach below the panels.
   r.png = std::filesystem::path(exr).replace_extension(".png");
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(r.png, ec)) throw InputError(r.png.string() + ": missing (the sheet's PNG beside " + exr.filename().string() + ")");
+  checkInputFile(folder, r.png, "sheet's PNG beside " + exr.filename().string());
   auto png = OIIO::ImageInput::open(r.png.string());
   if (!png || png->format_name() != std::string("png")) throw InputError(r.png.string() + ": not a readable PNG");
+  const OIIO::ImageSpec& ps = png->spec();
+  if (ps.width != spec.width || ps.height < r.panelsBottom || int64_t(ps.width) * int64_t(ps.height) > kMaxPngPixels)
+    throw InputError(r.png.string() + formatted(": %d x %d pixels, not the PNG of %s (%d wide, its panels %d high)", ps.width, ps.height,
+                                                exr.filename().string().c_str(), spec.width, r.panelsBottom));
+  r.pngHeight = ps.height;
   return r;
 }
 
@@ -176,14 +287,32 @@ std::vector<SheetRecord> readSheetFolder(const std::filesystem::path& folder) {
   if (!std::filesystem::is_directory(folder, ec)) throw InputError(folder.string() + ": no such folder (SHEETS_DIR)");
   std::vector<std::filesystem::path> exrs;
   for (const auto& e : std::filesystem::directory_iterator(folder, ec))
-    if (e.path().extension() == ".exr" && !e.path().filename().string().starts_with(".") && e.is_regular_file(ec))
-      exrs.push_back(e.path());
+    if (e.path().extension() == ".exr" && !e.path().filename().string().starts_with(".")) exrs.push_back(e.path());
   if (ec) throw InputError(folder.string() + ": cannot list: " + ec.message());
   if (exrs.empty()) throw InputError(folder.string() + ": holds no sheets (NAME.exr from glossy sheets)");
   std::sort(exrs.begin(), exrs.end());
   std::vector<SheetRecord> records;
-  for (const auto& exr : exrs) records.push_back(readSheetRecord(exr));
+  std::map<std::string, std::filesystem::path> byName;
+  for (const auto& exr : exrs) {
+    records.push_back(readSheetRecord(folder, exr));
+    const auto [it, fresh] = byName.emplace(records.back().name, exr);
+    if (!fresh)
+      throw InputError(exr.string() + ": a sheet of " + records.back().name + ", like " + it->second.filename().string() +
+                       "; a report has one sheet per material");
+  }
+  std::sort(records.begin(), records.end(), [](const SheetRecord& a, const SheetRecord& b) { return a.name < b.name; });
   return records;
+}
+
+void checkSameSettings(const std::vector<SheetRecord>& sheets) {
+  for (size_t k = 1; k < sheets.size(); ++k)
+    for (size_t i = 0; i < sheets[0].settings.size() && i < sheets[k].settings.size(); ++i) {
+      const SheetSetting &a = sheets[0].settings[i], &b = sheets[k].settings[i];
+      if (a.value != b.value)
+        throw InputError(sheets[0].exr.string() + " and " + sheets[k].exr.filename().string() + " were made with different settings (" +
+                         a.label + " " + shortened(a.value) + " and " + shortened(b.value) +
+                         "): one report compares sheets made alike; make a report per setting");
+    }
 }
 
 }  // namespace glossy::report

@@ -1,8 +1,9 @@
 // What the report shows of one material sheet, read from the header of the layered EXR that `glossy sheet`
 // writes (renderer/sheet/sheet.cpp, writeSheetExr): the panels in grid order with their boxes, labels,
 // notes and fit parameters, each analytic panel's error figures against the measured panel, and the
-// verdict. Figures a sheet does not carry (an older sheet, an empty panel) are absent, never zero, so the
-// report can show "–" for them and sort them last.
+// verdict, and the settings it was made with. Figures a sheet does not carry (an older sheet, an empty panel)
+// are absent, never zero, so the report can show "–" for them and sort them last. Every size and offset
+// read from the header is checked in 64-bit arithmetic against the image before it is used.
 #pragma once
 
 #include <filesystem>
@@ -33,9 +34,17 @@ struct PanelRecord {
   bool isMeasured() const { return fit == "measured"; }
 };
 
+// One setting a sheet was made with, as the report compares and shows it.
+struct SheetSetting {
+  std::string key, label, value;  // "size", "panel size", "256x256"
+};
+
 struct SheetRecord {
-  std::string name;          // the sheet's file stem, a material name
+  std::string name;  // the material's name, glossy:materialName (older sheets: their material file's stem)
   std::filesystem::path exr, png;
+  int imageWidth = 0, imageHeight = 0;  // the EXR's, which the sheet's PNG shares
+  int panelsBottom = 0;                 // the row below every panel's box
+  int pngHeight = 0;                    // the sheet's PNG: its panels, then labels and error maps below
   std::string materialFile;  // glossy:material
   std::string measured;      // glossy:measured: where the measured data came from
   std::string verdict;       // glossy:verdict
@@ -43,6 +52,9 @@ struct SheetRecord {
   double pngExposure = 0.0;
   std::optional<double> flipNoiseFloor;  // glossy:flipNoiseFloor: the ꟻLIP render noise alone gives
   std::vector<PanelRecord> panels;  // in grid order
+  // What its pixels depend on besides the material (glossy:settings): scene, lighting, panel size, spp,
+  // seed, ... — the figures of two sheets compare only when these agree.
+  std::vector<SheetSetting> settings;
 
   const PanelRecord* panel(const std::string& layer) const;
   const PanelRecord* measuredPanel() const;
@@ -51,12 +63,20 @@ struct SheetRecord {
   bool isTie() const;
 };
 
-// Reads the sheet NAME.exr and checks NAME.png beside it. Throws InputError naming the file when it is not
-// a readable glossy sheet (not an EXR, no glossy:panels, a panel's box outside the image, a bad name).
-SheetRecord readSheetRecord(const std::filesystem::path& exr);
+// Reads the sheet NAME.exr (a regular file inside `folder`) and checks NAME.png beside it. Throws InputError
+// naming the file when it is not a readable glossy sheet (not an EXR, no glossy:panels, a panel's box
+// outside the image, a size beyond what the report handles, a bad material name, its PNG missing, not a
+// PNG or not the EXR's size).
+SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::filesystem::path& exr);
+inline SheetRecord readSheetRecord(const std::filesystem::path& exr) { return readSheetRecord(exr.parent_path().empty() ? "." : exr.parent_path(), exr); }
 
-// The sheets of a folder (every *.exr), sorted by name; throws InputError when the folder is missing or
-// holds no sheet.
+// The sheets of a folder (every *.exr), sorted by material name; throws InputError when the folder is
+// missing or holds no sheet, when an entry NAME.exr is not a regular file inside it, or when two sheets
+// are of one material.
 std::vector<SheetRecord> readSheetFolder(const std::filesystem::path& folder);
+
+// Throws InputError naming two sheets made with different settings, and the first setting that differs:
+// one index's summary and medians are over sheets made alike.
+void checkSameSettings(const std::vector<SheetRecord>& sheets);
 
 }  // namespace glossy::report

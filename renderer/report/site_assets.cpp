@@ -53,6 +53,9 @@ figure { margin: 0; }
 figure img { max-width: 100%; height: auto; background: var(--image-bg); }
 figcaption { color: var(--muted); font-size: 0.9rem; margin-top: 0.3rem; max-width: 70rem; }
 .sheet img { image-rendering: auto; }
+.sheet-panels { position: relative; background: #000; }
+.sheet-panels img { position: absolute; display: block; max-width: none; }
+.sheet-lower { display: block; width: 100%; height: auto; }
 dl.meta { display: grid; grid-template-columns: max-content 1fr; gap: 0.15rem 1rem; margin: 0.5rem 0; }
 dl.meta dt { color: var(--muted); }
 dl.meta dd { margin: 0; overflow-wrap: anywhere; }
