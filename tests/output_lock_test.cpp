@@ -116,4 +116,39 @@ TEST(CliOutputLock, TwoSheetRunsRacingOnOneOutput) {
   EXPECT_FALSE(std::filesystem::exists(dir / ".race.exr.lock"));
 }
 
+// Every command that writes a destination takes its lock: plot and report folders, merge's outputs and a
+// parameter file that fit reads and rewrites (two fits into one file must both land, not one lose the other).
+TEST(CliOutputLock, PlotReportMergeAndFitRefuseADestinationAnotherRunIsWriting) {
+  TempDir dir;
+  const auto hold = [&](const std::string& name) {
+    const int fd = ::open((dir / ("." + name + ".lock")).c_str(), O_RDWR | O_CREAT, 0644);
+    EXPECT_GE(fd, 0);
+    EXPECT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+    return fd;
+  };
+  const std::string chrome = (materialsDir() / "chrome.toml").string();
+  const std::string busy = " is being written by another glossy process";
+  std::vector<int> held;
+  held.push_back(hold("plots"));
+  expectOneLineError(runGlossy({"plot", "--material", chrome, "--figures", "albedo", "-o", (dir / "plots").string()}),
+                     (dir / "plots").string() + busy);
+  std::filesystem::create_directory(dir / "sheets");
+  held.push_back(hold("site"));
+  expectOneLineError(runGlossy({"report", (dir / "sheets").string(), "-o", (dir / "site").string()}), (dir / "site").string() + busy);
+  held.push_back(hold("errors.csv"));
+  expectOneLineError(runGlossy({"merge", "sheets", (dir / "sheets").string(), "--csv", (dir / "errors.csv").string()}),
+                     (dir / "errors.csv").string() + busy);
+  held.push_back(hold("library"));
+  expectOneLineError(runGlossy({"merge", "fits", (dir / "sheets").string(), "-o", (dir / "library").string()}),
+                     (dir / "library").string() + busy);
+  held.push_back(hold("fit.toml"));
+  const RunResult fit = runGlossy({"fit", "--measured", (materialsDir() / "measured/chrome.nbrdf").string(), "--model", "microfacet",
+                                   "--metric", "E2", "--starts", "1", "--max-iterations", "2", "-o", (dir / "fit.toml").string()});
+  expectOneLineError(fit, (dir / "fit.toml").string() + busy);
+  EXPECT_FALSE(std::filesystem::exists(dir / "fit.toml"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "plots"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "site"));
+  for (int fd : held) ::close(fd);
+}
+
 }  // namespace glossy::test

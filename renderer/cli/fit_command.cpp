@@ -2,6 +2,7 @@
 // material's parameter file; with --measured-dir, every model and metric for every table, resumably.
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
+#include "materials/core/output_lock.h"
 #include "materials/core/notes.h"
 #include "materials/core/text.h"
 #include "materials/fitting/fitter.h"
@@ -16,6 +17,7 @@
 #include <chrono>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <numeric>
 #include <sstream>
 
@@ -51,6 +53,9 @@ int runSingle(const FitOptions& o) {
   if (o.models.size() != 1 || o.metrics.size() != 1)
     throw InputError("glossy fit --measured needs one --model and one --metric (or use --measured-dir for all)");
   if (!o.output.empty()) checkOutputFile(o.output, "-o", {".toml"}, Folder::Exist);
+  // Held from before the fit until the file is written: a second run into the file is refused at once.
+  std::optional<OutputLock> lock;
+  if (!o.output.empty()) lock.emplace(o.output, "-o");
   const std::filesystem::path tablePath = findMeasured(o.measured, o.merlDir);
   const Metric metric = parseMetric(o.metrics[0], "--metric");
   requireFittable(o.models[0]);
@@ -62,10 +67,13 @@ int runSingle(const FitOptions& o) {
   FitReport report = fitModel(data, o.models[0], o.settings);
   stampGlossysFit(report.fit, tablePath);
   std::cerr << "glossy: " << tablePath.filename().string() << " " << describeFit(report) << "\n";
-  const std::string replaced = putGlossysFit(material, report.fit, o.replace);
-  if (!replaced.empty()) std::cerr << "glossy: " << (o.output.empty() ? std::string("the fit") : o.output) << ": " << replaced << "\n";
-  if (o.output.empty()) return writeStdout(toToml(material));
-  writeFileAtomically(o.output, toToml(material));
+  if (o.output.empty()) {
+    const std::string replaced = putGlossysFit(material, report.fit, o.replace);
+    if (!replaced.empty()) std::cerr << "glossy: the fit: " << replaced << "\n";
+    return writeStdout(toToml(material));
+  }
+  const std::string replaced = writeGlossysFit(o.output, tablePath, report.fit, o.replace);
+  if (!replaced.empty()) std::cerr << "glossy: " << o.output << ": " << replaced << "\n";
   return 0;
 }
 
@@ -161,9 +169,10 @@ int runBatch(const FitOptions& o) {
     FitReport report = fitModel(*d, job.model, o.settings);
     stampGlossysFit(report.fit, tables[job.table]);
     const std::filesystem::path out = std::filesystem::path(o.outDir) / (materialNameOf(tables[job.table]) + ".toml");
-    MaterialFile material = materialForFit(out, tables[job.table]);
-    const std::string replaced = putGlossysFit(material, report.fit, o.replace);
-    writeFileAtomically(out, toToml(material));  // after each fit, so an interrupted batch resumes here
+    // After each fit, so that an interrupted batch resumes here; under the file's lock, as the tasks of a job
+    // array share the folder.
+    const OutputLock lock(out, "--out-dir");
+    const std::string replaced = writeGlossysFit(out, tables[job.table], report.fit, o.replace);
 
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     const double eta = elapsed / double(j + 1) * double(jobs.size() - j - 1);

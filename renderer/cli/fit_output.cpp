@@ -1,5 +1,6 @@
 #include "renderer/cli/fit_output.h"
 
+#include "materials/core/atomic_file.h"
 #include "materials/core/text.h"
 #include "materials/params/material_name.h"
 #include "renderer/cli/brdf_options.h"
@@ -67,6 +68,13 @@ std::string putGlossysFit(MaterialFile& material, Fit fit, bool replacePublished
     }
   }
   material.put(std::move(fit));
+  return said;
+}
+
+std::string writeGlossysFit(const std::filesystem::path& path, const std::filesystem::path& data, const Fit& fit, bool replacePublished) {
+  MaterialFile material = materialForFit(path, data);
+  const std::string said = putGlossysFit(material, fit, replacePublished);
+  writeFileAtomically(path, toToml(material));
   return said;
 }
 

@@ -27,4 +27,9 @@ void stampGlossysFit(Fit& fit, const std::filesystem::path& data);
 // were there, for one line on stderr ("" when the fit was simply added).
 std::string putGlossysFit(MaterialFile& material, Fit fit, bool replacePublished);
 
+// Puts glossy's fit of `data` into the parameter file `path` (putGlossysFit) and writes it atomically. The
+// caller holds the file's lock (output_lock.h): the file is read again here, so a fit another process put in
+// before the lock was taken stays. Returns putGlossysFit's words.
+std::string writeGlossysFit(const std::filesystem::path& path, const std::filesystem::path& data, const Fit& fit, bool replacePublished);
+
 }  // namespace glossy::cli

@@ -3,6 +3,7 @@
 //                                             a published fit never replaced unless --replace)
 //   glossy merge sheets DIR --csv F --json F  every sheet's error figures in one table
 // Both read and check everything before writing anything, and write atomically.
+#include "materials/core/output_lock.h"
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
@@ -17,6 +18,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace glossy::cli {
 
@@ -43,6 +45,7 @@ std::vector<std::filesystem::path> tomlFiles(const std::filesystem::path& dir) {
 // refused: which of them should win is the user's to say.
 int runMergeFits(const MergeOptions& o) {
   checkOutputFolder(o.library, "-o");
+  const OutputLock lock(o.library, "-o");
   // Everything read and checked first: a bad file anywhere fails the merge before a file is written.
   struct Merged {
     MaterialFile material;
@@ -113,6 +116,9 @@ int runMergeSheets(const MergeOptions& o) {
   if (o.csv.empty() && o.json.empty()) throw InputError("glossy merge sheets needs --csv FILE, --json FILE or both");
   if (!o.csv.empty()) checkOutputFile(o.csv, "--csv", {".csv"}, Folder::Create);
   if (!o.json.empty()) checkOutputFile(o.json, "--json", {".json"}, Folder::Create);
+  std::optional<OutputLock> csvLock, jsonLock;
+  if (!o.csv.empty()) csvLock.emplace(o.csv, "--csv");
+  if (!o.json.empty()) jsonLock.emplace(o.json, "--json");
   const std::vector<report::SheetRecord> sheets = report::readSheetFolder(o.sheetsDir);
 
   std::string csv =

@@ -1,6 +1,7 @@
 // glossy plot: a material's BRDFs as figures — θ_h slices, image slices with the log-ratio to measured data,
 // directional albedo, in-plane polar lobes — each as SVG, PNG and the CSV of its numbers, indexed by
 // plots.json (renderer/plot/, docs/plots.md).
+#include "materials/core/output_lock.h"
 #include "materials/core/input_error.h"
 #include "materials/core/notes.h"
 #include "materials/params/material_file.h"
@@ -29,6 +30,7 @@ struct PlotOptions {
 int runPlot(const PlotOptions& o) {
   using namespace plot;
   checkOutputFolder(o.out, "-o");
+  const OutputLock lock(o.out, "-o");
   OwnedFolder out(o.out, kPlotCommand, "-o");  // a folder of glossy plot's, or new: never `/` or a user's
   const MaterialFile m = loadMaterialFile(o.material);
   // The measured data as the sheets find it: --measured, else the file's own under --merl-dir,

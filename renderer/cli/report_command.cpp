@@ -1,5 +1,6 @@
 // glossy report: a static, offline HTML site over a folder of sheets and their plots
 // (renderer/report/report_site.h; docs/report.md).
+#include "materials/core/output_lock.h"
 #include "renderer/cli/command.h"
 #include "renderer/cli/destination.h"
 #include "renderer/plot/plot_output.h"
@@ -26,6 +27,7 @@ int runReport(const ReportCliOptions& o) {
   options.plotKinds = o.plotKinds;
   options.plotData = o.plotData;
   checkOutputFolder(o.site, "-o");
+  const OutputLock lock(o.site, "-o");
   const report::ReportResult r = report::writeReport(options);
   std::fprintf(stderr, "glossy: wrote %s/index.html: %zu materials, %zu images, %zu plot files\n", o.site.c_str(), r.materials, r.images,
                r.plots);

@@ -6,6 +6,7 @@
 #include "materials/core/text.h"
 #include "materials/params/material_file.h"
 #include "renderer/image/exr_image.h"
+#include "renderer/image/image_input.h"
 #include "renderer/sheet/sheet.h"
 
 #include <OpenImageIO/imageio.h>
@@ -27,9 +28,12 @@ std::string whyIncomplete(const std::filesystem::path& exr, const std::string& s
   if (!std::filesystem::exists(png, ec)) return "no PNG";
   // The PNG is trusted only if it opens as one, at the size these settings give it.
   try {
-    requireInputFile(png, "PNG");
-    auto in = OIIO::ImageInput::open(png.string());
-    if (!in || std::string_view(in->format_name()) != "png") return "PNG that is not a PNG image";
+    std::unique_ptr<OIIO::ImageInput> in;
+    try {
+      in = openImageFile(png, "PNG");
+    } catch (const InputError&) {
+      return "PNG that is not a PNG image";
+    }
     const SheetPngSize size = sheetPngSize(sheet.width, sheet.height, int(sheet.panels.size()));
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width != size.width || (spec.height != size.height && spec.height != size.heightWithMaps))

@@ -5,7 +5,7 @@
 #include "materials/core/input_file.h"
 #include "materials/core/notes.h"
 #include "materials/core/text.h"
-#include "renderer/lights/exr_preflight.h"
+#include "renderer/image/image_input.h"
 #include "renderer/util/memory.h"
 
 #include <OpenImageIO/filesystem.h>
@@ -33,18 +33,11 @@ void writeAtomically(const std::filesystem::path& path, const OIIO::ImageSpec& s
   writeFileAtomically(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
 }
 
-// Opens an image to read: a regular file (never a FIFO, which would block OpenImageIO for ever), an
-// OpenEXR's headers checked first (exr_preflight.h), its size one that fits in memory.
+// Opens an image to read (image_input.h), its size one that fits in memory.
 std::unique_ptr<OIIO::ImageInput> openImage(const std::filesystem::path& path) {
-  requireInputFile(path, "image");
-  preflightExr(path);
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw InputError(printableLine(path.string() + ": cannot read image: " + OIIO::geterror()));
+  auto in = openImageFile(path, "image");
   const OIIO::ImageSpec& spec = in->spec();
-  // Each count read from the header: the product in 64 bits (OpenImageIO keeps them as int).
-  if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels <= 0)
-    throw InputError(path.string() + formatted(": an image of %dx%dx%d with %d channels is not one glossy reads", spec.width,
-                                               spec.height, spec.depth, spec.nchannels));
+  // The product of the header's counts in floating point (OpenImageIO keeps them as int).
   const double bytes = double(spec.width) * double(spec.height) * 3.0 * sizeof(float);
   if (const double have = physicalMemoryBytes(); have > 0.0 && bytes > have)
     throw InputError(path.string() + formatted(": %dx%d pixels need %.3g GB, more than the %.3g GB of memory here", spec.width,

@@ -229,7 +229,8 @@ PyBrdf brdfOfFit(const Fit& fit, const std::string& from) {
 // make_brdf's keywords as a fit of `model`, checked as a parameter file's are.
 PyBrdf brdfFromKeywords(const std::string& model, const py::kwargs& kwargs) {
   const ModelInfo& info = requireModel(model, "make_brdf");
-  Fit fit{{std::string(info.name), "E2"}, {}, {}, {}, {}};
+  Fit fit;
+  fit.id = {std::string(info.name), "E2"};
   for (const auto& [key, value] : kwargs) {
     const std::string k = py::str(key);
     const std::string where = "make_brdf: " + model + ": " + k;

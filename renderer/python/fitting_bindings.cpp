@@ -1,5 +1,6 @@
 // glossy.error and glossy.fit: the metrics E1 and E2 of Löw et al. 2012 and the fitter behind `glossy error`
 // and `glossy fit` (docs/fitting.md), the same numbers for the same table.
+#include "materials/core/output_lock.h"
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/fitting/fitter.h"
@@ -28,9 +29,8 @@ const PyMeasured& tableOf(const py::handle& table) {
 // glossy's, beside a published one (removed only with replace), what it replaced said on stderr.
 void saveFit(const PyFit& f, const std::string& path, bool replace) {
   cli::checkOutputFile(path, "path", {".toml"}, cli::Folder::Exist);
-  MaterialFile material = cli::materialForFit(path, f.table);
-  const std::string replaced = cli::putGlossysFit(material, f.report.fit, replace);
-  writeFileAtomically(path, toToml(material));
+  const OutputLock lock(path, "path");
+  const std::string replaced = cli::writeGlossysFit(path, f.table, f.report.fit, replace);
   if (!replaced.empty()) py::module_::import("sys").attr("stderr").attr("write")("glossy: " + path + ": " + replaced + "\n");
 }
 

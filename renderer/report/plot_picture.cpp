@@ -4,6 +4,7 @@
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "renderer/image/image_input.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagebuf.h>
@@ -26,8 +27,7 @@ bool canWriteWebp() {
 }  // namespace
 
 void checkPlotPicture(const std::filesystem::path& file) {
-  auto in = OIIO::ImageInput::open(file.string());
-  if (!in) throw InputError(file.string() + ": not a picture the report reads: " + printableLine(OIIO::geterror()));
+  auto in = openImageFile(file, "plot picture");
   const OIIO::ImageSpec& s = in->spec();
   if (s.width <= 0 || s.height <= 0 || int64_t(s.width) * int64_t(s.height) > kMaxPicturePixels || s.nchannels < 1 || s.nchannels > 4)
     throw InputError(file.string() + formatted(": %d x %d pixels of %d channels, not a plot picture the report handles", s.width, s.height,

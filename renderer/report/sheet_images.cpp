@@ -4,6 +4,7 @@
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "renderer/image/exr_image.h"
+#include "renderer/image/image_input.h"
 #include "renderer/report/sheet_record.h"
 #include "renderer/report/site_layout.h"
 
@@ -49,8 +50,7 @@ bool pngChunksAreWhole(const std::filesystem::path& png) {
 
 SheetPixels readSheetPixels(const SheetRecord& sheet) {
   if (!pngChunksAreWhole(sheet.png)) throw InputError(sheet.png.string() + ": not a whole PNG (cut short?)");
-  auto in = OIIO::ImageInput::open(sheet.png.string());
-  if (!in) throw InputError(sheet.png.string() + ": cannot read: " + printableLine(OIIO::geterror()));
+  auto in = openImageFile(sheet.png, "PNG");
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width != sheet.imageWidth || spec.height != sheet.pngHeight)
     throw InputError(sheet.png.string() + ": changed since it was checked");

@@ -4,6 +4,7 @@
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "materials/params/material_name.h"
+#include "renderer/image/image_input.h"
 #include "renderer/report/html_text.h"
 #include "renderer/report/input_folder.h"
 #include "renderer/sheet/sheet.h"
@@ -194,8 +195,7 @@ SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::file
   SheetRecord r;
   r.exr = exr;
   checkInputFile(folder, exr, "sheet");
-  auto in = OIIO::ImageInput::open(exr.string());
-  if (!in) throw InputError(exr.string() + ": cannot read: " + printableLine(OIIO::geterror()));
+  auto in = openImageFile(exr, "sheet");
   const OIIO::ImageSpec spec = in->spec();
   in->close();
   const Header h(exr, spec);
@@ -272,8 +272,7 @@ SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::file
   // (the panels' boxes are the same in both) and reach below the panels.
   r.png = std::filesystem::path(exr).replace_extension(".png");
   checkInputFile(folder, r.png, "sheet's PNG beside " + exr.filename().string());
-  auto png = OIIO::ImageInput::open(r.png.string());
-  if (!png || png->format_name() != std::string("png")) throw InputError(r.png.string() + ": not a readable PNG");
+  auto png = openImageFile(r.png, "PNG");
   const OIIO::ImageSpec& ps = png->spec();
   if (ps.width != spec.width || ps.height < r.panelsBottom || int64_t(ps.width) * int64_t(ps.height) > kMaxPngPixels)
     throw InputError(r.png.string() + formatted(": %d x %d pixels, not the PNG of %s (%d wide, its panels %d high)", ps.width, ps.height,

@@ -1,8 +1,8 @@
 // A sheet's EXR as `glossy report` and `glossy merge sheets` read it: its header made into a SheetRecord
-// (the panels' boxes, labels, figures, the verdict), and, for a sheet that is accepted, each panel's box cut
-// from its layer into a PNG, as the report does for its compare view. OpenImageIO reads only from a path: the
-// bytes become NAME.exr, with a valid PNG beside it (the record requires one).
-#include "renderer/report/panel_png.h"
+// (the panels' boxes, labels, figures, the verdict), and, for a sheet that is accepted, the site's images cut
+// from the PNG beside it in those boxes, as the report does. OpenImageIO reads only from a path: the bytes
+// become NAME.exr, with a valid PNG beside it (the record requires one).
+#include "renderer/report/sheet_images.h"
 #include "renderer/report/sheet_record.h"
 #include "tests/fuzz/fuzz_entries.h"
 #include "tests/fuzz/fuzz_temp_dir.h"
@@ -27,13 +27,12 @@ void sheetEntry(Bytes data) {
   const report::SheetRecord record = report::readSheetRecord(exr.path());
   (void)record.closestLayers();
   (void)record.isTie();
-  std::vector<const report::PanelRecord*> panels;
-  for (const report::PanelRecord& p : record.panels) panels.push_back(&p);
-  // Every panel to one file, rewritten each time: the cut, not the files, is what is fuzzed.
-  const std::filesystem::path out = exr.path().parent_path() / "panel.png";
-  report::writePanelPngs(exr.path(), panels, record.pngExposure, [&](const report::PanelRecord&) { return out; });
+  // The images to a folder of their own, emptied each time: the cut, not the files, is what is fuzzed.
+  const std::filesystem::path out = exr.path().parent_path() / "site";
+  std::filesystem::create_directory(out);
+  report::writeSheetImages(record, report::readSheetPixels(record), out);
   std::error_code ec;
-  std::filesystem::remove(out, ec);
+  std::filesystem::remove_all(out, ec);
 }
 
 }  // namespace glossy::fuzz
