@@ -125,9 +125,8 @@ std::vector<TestLayer> zeroNetwork(const std::vector<int>& widths) {
 
 }  // namespace
 
-// Every load tabulates the network 2.9 million times: a larger network than the supplement's (a valid one of
-// 11 MB took an hour and a half in every command) is refused from its layers' sizes, before its weights are
-// read, so that a file cut short in its weights still gets the size error.
+// Every load tabulates the network 2.9 million times, so its cost grows with its size: a larger network than
+// the supplement's is refused from its layers' sizes, before its weights are read, so that a file cut short in its weights still gets the size error.
 TEST(NeuralBrdf, NetworksLargerThanTheSupplementsAreRefusedBeforeTheirWeights) {
   EXPECT_NO_THROW(NeuralBrdf::parse(networkText(zeroNetwork({6, 21, 21, 3})), "supplement.nbrdf"));
   for (const std::vector<int>& widths : std::vector<std::vector<int>>{{6, 22, 21, 3}, {6, 21, 21, 21, 3}, {6, 64, 64, 3}}) {

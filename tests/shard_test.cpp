@@ -114,7 +114,7 @@ TEST(Shard, EveryItemGoesToExactlyOneShardAndCostsBalance) {
 }
 
 // More shards than items: every item its own shard, the split the same as with a load for every shard, and
-// no cost for the shards that get nothing (a load per shard made --shard 1/1000000000 take 9 GB and 29 s).
+// no cost for the shards that get nothing.
 TEST(Shard, ManyMoreShardsThanItemsCostNothing) {
   const std::vector<double> costs = {6.0, 9.0, 6.0, 2.5, 9.0};
   // Longest first onto the first least-loaded shard: 1 → 0, 4 → 1, 0 → 2, 2 → 3, 3 → 4.

@@ -89,7 +89,7 @@ std::vector<size_t> shardItems(std::span<const double> costs, const Shard& shard
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return costs[a] > costs[b]; });
   // Longest first, each to the least loaded shard (the first of equals): with non-negative costs the k-th
   // item goes to one of the first k shards, so with more shards than items the rest stay empty and need
-  // no entry. A load per shard would make --shard 1/1000000000 allocate 8 GB before doing anything.
+  // no entry, so a huge N costs nothing.
   std::vector<double> load(std::min(size_t(shard.count), costs.size()), 0.0);
   std::vector<size_t> mine;
   for (size_t item : order) {

@@ -21,9 +21,8 @@ struct SheetJob {
   SheetSettings settings;
 };
 
-// --target-error alone stops at this many samples per pixel (some 13 minutes for a default sheet on two
-// cores), saying so, rather than run for days after a target too fine to reach; --spp or --time set
-// another cap.
+// --target-error alone stops at this many samples per pixel, saying so, rather than run for days after a
+// target too fine to reach; --spp or --time set another cap.
 inline constexpr int kTargetErrorSppCap = 4096;
 
 // The sample cap of a run whose --spp was or was not given: --spp's value; with --time, as many as the

@@ -96,6 +96,17 @@ double curveFloor(const std::vector<double>& values) {
   return *nth;
 }
 
+double lowestFloor(const std::vector<std::vector<std::vector<Point>>>& curves) {
+  double floor = std::numeric_limits<double>::infinity();
+  for (const auto& group : curves)
+    for (const auto& curve : group) {
+      std::vector<double> ys;
+      for (const Point& p : curve) ys.push_back(p.y);
+      floor = std::min(floor, curveFloor(ys));
+    }
+  return floor;
+}
+
 Point PlotArea::at(double xv, double yv) const {
   return {x + w * xAxis.fraction(xv), y + h * (1.0 - yAxis.fraction(yv))};
 }

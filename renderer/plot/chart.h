@@ -48,6 +48,9 @@ std::pair<int, int> decadeRange(double floor, double peak, int minDecades, int d
 // falls toward zero (at the horizon) do not stretch the axis over decades no curve lies in. +Inf when
 // there are none.
 double curveFloor(const std::vector<double>& values);
+// The lowest floor of the y values of every curve, curves[group][curve]: where a log axis over them all must
+// reach for each curve's floor to show.
+double lowestFloor(const std::vector<std::vector<std::vector<Point>>>& curves);
 // The top of a linear axis for values up to `v`: the smallest of 1, 2, 2.5, 5 × 10^k at least v (1 for v ≤ 0).
 double niceCeil(double v);
 

@@ -60,14 +60,7 @@ PlotFigure polarFigure(const PlotSet& set, RadialScale scale) {
     }
   }
   // Down to the lowest curve's floor (ρ cos θ_i falls to 0 at the horizon: curveFloor leaves those points out).
-  double floor = std::numeric_limits<double>::infinity();
-  for (const auto& view : curves)
-    for (const auto& curve : view) {
-      std::vector<double> ys;
-      for (const Point& p : curve) ys.push_back(p.y);
-      floor = std::min(floor, curveFloor(ys));
-    }
-  const auto [lo, hi] = decadeRange(floor, peak, 3, set.decades);
+  const auto [lo, hi] = decadeRange(lowestFloor(curves), peak, 3, set.decades);
   const double linearTop = niceCeil(peak);
   // Radius of a value; NaN breaks the curve (no value), values under the log scale's floor sit at the centre.
   auto radius = [&, lo = lo, hi = hi](double v) {

@@ -43,14 +43,7 @@ PlotFigure thetaHFigure(const PlotSet& set) {
       csv.add(row);
     }
   // The axis reaches down to the lowest floor of any curve in any slice: the diffuse floors of a chrome show.
-  double floor = std::numeric_limits<double>::infinity();
-  for (const auto& slice : values)
-    for (const auto& curve : slice) {
-      std::vector<double> ys;
-      for (const Point& p : curve) ys.push_back(p.y);
-      floor = std::min(floor, curveFloor(ys));
-    }
-  const auto [lo, hi] = decadeRange(floor, peak, 3, set.decades);
+  const auto [lo, hi] = decadeRange(lowestFloor(values), peak, 3, set.decades);
   GridLayout g;
   g.columns = 2;
   g.rows = 2;
