@@ -5,11 +5,13 @@ With --check MERL_DIR, rebuilds the whole MERL table from the network by the pro
 shared/merl/SOURCES.md and compares it with MERL_DIR/<name>.binary.xz on every valid bin."""
 import argparse
 import hashlib
+import io
 import lzma
 import pathlib
 import sys
 import time
 import tomllib
+import zipfile
 
 import h5py
 import numpy as np
@@ -17,18 +19,42 @@ import numpy as np
 SHAPES = [((6, 21), (21,)), ((21, 21), (21,)), ((21, 3), (3,))]  # Keras Dense: kernel (inputs, outputs), bias
 ACTIVATIONS = ["relu", "relu", "linear"]
 MERL_SCALE = np.array([1 / 1500, 1.15 / 1500, 1.66 / 1500])
-LICENCE = ("Network weights: MIT licence, (c) 2022 asztr (github.com/asztr/Neural-BRDF). "
-           "Fitted to the MERL BRDF database, (c) MERL 2003, 2007, 2023, CC-BY-SA-4.0.")
-CITE = ['W. Matusik, H. Pfister, M. Brand, L. McMillan, "A Data-Driven Reflectance Model", '
-        'ACM Transactions on Graphics 22(3), 2003, 759-769',
-        'A. Sztrajman, G. Rainer, T. Ritschel, T. Weyrich, "Neural BRDF Representation and Importance Sampling", '
-        'Computer Graphics Forum 40(6), 2021, 332-346, doi:10.1111/cgf.14335']
+NETWORKS = "asztr/Neural-BRDF data/"  # where the zips come from (../shared/nbrdf/SOURCES.md)
+NBRDF_LICENCE = "Network weights: MIT licence, (c) 2022 asztr (github.com/asztr/Neural-BRDF)."
+NBRDF_CITE = ('A. Sztrajman, G. Rainer, T. Ritschel, T. Weyrich, "Neural BRDF Representation and Importance Sampling", '
+              'Computer Graphics Forum 40(6), 2021, 332-346, doi:10.1111/cgf.14335')
+
+# The three databases: the zip and folder their networks come in, how a network's file name becomes the
+# material's name, and how results from them are labelled. Names are unique over the three (the library's
+# sheets are NAME.exr): RGL's "_rgb" (its RGB variant) is dropped, and Nielsen's cardboard, whose name RGL
+# already has, is cardboard-nielsen2015.
+DATABASES = {
+    "merl": dict(
+        zip="merl_nbrdf.zip", folder="merl_nbrdf", rename=lambda n: n,
+        label="MERL (NBRDF reconstruction)", measurement="the MERL measurement",
+        licence="Fitted to the MERL BRDF database, (c) MERL 2003, 2007, 2023, CC-BY-SA-4.0.",
+        cite='W. Matusik, H. Pfister, M. Brand, L. McMillan, "A Data-Driven Reflectance Model", '
+             'ACM Transactions on Graphics 22(3), 2003, 759-769'),
+    "rgl-epfl": dict(
+        zip="rgl-isotropic_nbrdf.zip", folder="rgl-isotropic_nbrdf", rename=lambda n: n.removesuffix("_rgb"),
+        label="RGL-EPFL (NBRDF reconstruction)", measurement="the RGL-EPFL measurement (its RGB variant)",
+        licence="Fitted to the RGL-EPFL isotropic BRDF database (rgl.epfl.ch/materials).",
+        cite='J. Dupuy, W. Jakob, "An Adaptive Parameterization for Efficient Material Acquisition and Rendering", '
+             'ACM Transactions on Graphics 37(6), 2018'),
+    "nielsen2015": dict(
+        zip="nielsen_nbrdf.zip", folder="nielsen_nbrdf",
+        rename=lambda n: "cardboard-nielsen2015" if n == "cardboard" else n,
+        label="Nielsen 2015 (NBRDF reconstruction)", measurement="the Nielsen et al. 2015 measurement",
+        licence="Fitted to the BRDFs measured by Nielsen, Jensen and Ramamoorthi 2015.",
+        cite='J. B. Nielsen, H. W. Jensen, R. Ramamoorthi, "On Optimal, Minimal BRDF Sampling for Reflectance '
+             'Acquisition", ACM Transactions on Graphics 34(6), 2015'),
+}
 
 
-def read_layers(path):
+def read_layers(path, data):
     """The Dense layers' (kernel, bias) in order, found through the Keras attributes layer_names and weight_names."""
     layers = []
-    with h5py.File(path, "r") as f:
+    with h5py.File(io.BytesIO(data), "r") as f:
         for layer in f.attrs["layer_names"]:
             group = f[layer.decode()]
             names = [n.decode() for n in group.attrs["weight_names"]]
@@ -54,25 +80,25 @@ def row(values):
     return ", ".join(number(v) for v in values)
 
 
-def write_nbrdf(path, name, h5_name, sha256, layers):
+def write_nbrdf(path, name, db, member, sha256, layers):
     q = lambda s: '"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"'
-    src = f"asztr/Neural-BRDF data/merl_nbrdf.zip: merl_nbrdf/{h5_name}"
+    src = f"{NETWORKS}{db['zip']}: {member}"
     out = [
-        f"# {name}: the Neural BRDF (Sztrajman et al. 2021) fitted to the MERL measurement, converted by "
+        f"# {name}: the Neural BRDF (Sztrajman et al. 2021) fitted to {db['measurement']}, converted by "
         f"scripts/nbrdf-from-h5 from {src}.",
         "# The network is a multilayer perceptron 6 -> 21 (ReLU) -> 21 (ReLU) -> 3, 675 float32 weights; each [[layer]]",
         "# computes y[o] = activation(biases[o] + sum over i of weights[o * inputs + i] * x[i]), in the order given.",
         "# Input: the half vector h = (sin θh, 0, cos θh) (φh = 0), then the difference vector",
         "# d = (sin θd cos φd, sin θd sin φd, cos θd), in Rusinkiewicz's half-difference angles (MERL's).",
         "# Output: linear RGB, each x becoming exp(x) - 1, in BRDF units (1/sr), MERL's channel scales already applied.",
-        '# A reconstruction of the measurement, not the measurement: label results "MERL (NBRDF reconstruction)".',
+        f'# A reconstruction of the measurement, not the measurement: label results "{db["label"]}".',
         "# Licence and citations: the licence and cite keys below. docs/measured.md documents this format.",
         'format = "glossy-nbrdf 1"',
         f"material = {q(name)}",
-        'label = "MERL (NBRDF reconstruction)"',
+        f"label = {q(db['label'])}",
         f"source = {q(f'{src} (sha256 {sha256})')}",
-        f"licence = {q(LICENCE)}",
-        "cite = [" + ", ".join(q(c) for c in CITE) + "]",
+        f"licence = {q(NBRDF_LICENCE + ' ' + db['licence'])}",
+        "cite = [" + ", ".join(q(c) for c in (db["cite"], NBRDF_CITE)) + "]",
         'input = "half-difference"   # (sin θh, 0, cos θh, sin θd cos φd, sin θd sin φd, cos θd)',
         'output = "expm1"            # each output x becomes exp(x) − 1, in BRDF units (1/sr)',
     ]
@@ -142,22 +168,34 @@ def check_table(merl_path, layers):
 
 def main():
     parser = argparse.ArgumentParser(description="Neural BRDF .h5 weights -> .nbrdf text files")
-    parser.add_argument("h5", nargs="+", type=pathlib.Path)
+    parser.add_argument("--database", required=True, choices=sorted(DATABASES))
+    parser.add_argument("zip", type=pathlib.Path, help="the database's zip of networks (../shared/nbrdf/)")
+    parser.add_argument("names", nargs="*", help="only these networks (their names in the zip, without .h5)")
     parser.add_argument("-o", "--out-dir", required=True, type=pathlib.Path)
     parser.add_argument("--check", metavar="MERL_DIR", type=pathlib.Path,
-                        help="compare the network's table with MERL_DIR/<name>.binary.xz")
+                        help="compare the network's table with MERL_DIR/<name>.binary.xz where there is one")
     args = parser.parse_args()
+    db = DATABASES[args.database]
+    if args.zip.name != db["zip"]:
+        sys.exit(f"{args.zip}: the {args.database} networks come in {db['zip']}")
     args.out_dir.mkdir(parents=True, exist_ok=True)
     ok = True
-    for h5 in args.h5:
-        name = h5.stem
-        layers = read_layers(h5)
-        out = args.out_dir / f"{name}.nbrdf"
-        write_nbrdf(out, name, h5.name, hashlib.sha256(h5.read_bytes()).hexdigest(), layers)
-        check_round_trip(out, name, layers)
-        print(f"{out}: {sum(a.size for layer in layers for a in layer)} weights, round-trip exact")
-        if args.check:
-            ok &= check_table(args.check / f"{name}.binary.xz", layers)
+    with zipfile.ZipFile(args.zip) as z:
+        members = sorted(m for m in z.namelist() if m.startswith(db["folder"] + "/") and m.endswith(".h5"))
+        if args.names:
+            members = [m for m in members if pathlib.PurePosixPath(m).stem in args.names]
+            if len(members) != len(set(args.names)):
+                sys.exit(f"{args.zip}: not every name given is a network there")
+        for member in members:
+            data = z.read(member)
+            name = db["rename"](pathlib.PurePosixPath(member).stem)
+            layers = read_layers(member, data)
+            out = args.out_dir / f"{name}.nbrdf"
+            write_nbrdf(out, name, db, member, hashlib.sha256(data).hexdigest(), layers)
+            check_round_trip(out, name, layers)
+            print(f"{out}: {sum(a.size for layer in layers for a in layer)} weights, round-trip exact")
+            if args.check and (args.check / f"{name}.binary.xz").exists():
+                ok &= check_table(args.check / f"{name}.binary.xz", layers)
     sys.exit(0 if ok else 1)
 
 

@@ -86,6 +86,7 @@ NeuralBrdf NeuralBrdf::parse(std::string_view text, const std::string& source) {
   NeuralBrdf n;
   n.source_ = source;
   n.material_ = requireString(root, "material", top);
+  n.label_ = requireString(root, "label", top);
   const toml::node* layersNode = root.get("layer");
   const toml::array* layers = layersNode ? layersNode->as_array() : nullptr;
   if (!layers || !layers->is_array_of_tables() || layers->empty())

@@ -51,6 +51,8 @@ class NeuralBrdf {
   MerlTable tabulate() const;
 
   const std::string& material() const { return material_; }
+  // How results from the network are labelled, naming its database: "RGL-EPFL (NBRDF reconstruction)".
+  const std::string& label() const { return label_; }
   const std::string& source() const { return source_; }  // the file, as given
 
  private:
@@ -61,7 +63,7 @@ class NeuralBrdf {
     std::vector<double> biases;
   };
   std::vector<Layer> layers_;
-  std::string material_, source_;
+  std::string material_, label_, source_;
 };
 
 }  // namespace glossy

@@ -341,7 +341,7 @@ std::optional<std::filesystem::path> resolveMeasured(const std::string& measured
   for (const char* extension : {".xz", ".binary", ".nbrdf"})
     if (stem.extension() == extension) stem = stem.stem();
   if (stem.empty() || stem == "." || stem == "..") return std::nullopt;
-  const std::filesystem::path network = materialDir / "measured" / (stem.string() + ".nbrdf");
+  const std::filesystem::path network = materialDir / (stem.string() + ".nbrdf");
   if (std::filesystem::is_regular_file(network, ec)) return network;
   return std::nullopt;
 }

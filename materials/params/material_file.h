@@ -79,7 +79,7 @@ Brdf makeBrdf(const Fit& fit);
 // The file of a material's measured data (its `measured`: a MERL table, NAME.binary or NAME.binary.xz, or a
 // Neural BRDF, NAME.nbrdf), looked for in this order: as given if absolute, under merlDir, under
 // $GLOSSY_MERL_DIR, in the working folder (each also as NAME.xz); then, for a material file in
-// materialDir, the network embedded beside it, materialDir/measured/STEM.nbrdf (STEM: the name's last
+// materialDir, the network embedded beside it, materialDir/STEM.nbrdf (STEM: the name's last
 // component without .xz, .binary or .nbrdf; docs/measured.md). nullopt when `measured` is empty or
 // none exists.
 std::optional<std::filesystem::path> resolveMeasured(const std::string& measured, const std::filesystem::path& merlDir = {},

@@ -53,10 +53,9 @@ std::shared_ptr<const MerlTable> loadMeasured(const std::filesystem::path& path)
 }
 
 std::string measuredDatabase(const std::filesystem::path& path) {
+  if (path.extension() == ".nbrdf") return NeuralBrdf::load(path).label();
   std::error_code ec;
-  const bool reconstruction =
-      path.extension() == ".nbrdf" || std::filesystem::exists(path.parent_path() / "nbrdf_weights", ec);
-  return reconstruction ? "MERL (NBRDF reconstruction)" : "MERL";
+  return std::filesystem::exists(path.parent_path() / "nbrdf_weights", ec) ? "MERL (NBRDF reconstruction)" : "MERL";
 }
 
 std::string measuredLabel(const std::filesystem::path& path) { return measuredDatabase(path) + " " + path.string(); }

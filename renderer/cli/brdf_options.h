@@ -25,10 +25,11 @@ struct BrdfOptions {
 // has unmeasured bins (they evaluate to 0): merl.md asks for the count to be reported wherever the data is
 // used.
 std::shared_ptr<const MerlTable> loadMeasured(const std::filesystem::path& path);
-// How a sheet or an image names that data: "MERL (NBRDF reconstruction) FILE" for a network or a table of
-// shared/merl (whose folder says so beside them), else "MERL FILE".
+// How a sheet or an image names that data: "LABEL FILE" with a network's own label ("RGL-EPFL (NBRDF
+// reconstruction)"), "MERL (NBRDF reconstruction) FILE" for a table of shared/merl (whose folder says so beside
+// them), else "MERL FILE".
 std::string measuredLabel(const std::filesystem::path& path);
-// The database part of that name: "MERL (NBRDF reconstruction)" or "MERL".
+// The database part of that name: a network's label, "MERL (NBRDF reconstruction)" or "MERL".
 std::string measuredDatabase(const std::filesystem::path& path);
 
 // The file a --measured option names, by the one rule every command and the Python module use

@@ -60,10 +60,11 @@ inline CLI::Validator integerIn(long long lo, long long hi) {
 // creating them (`--threads 1e8`).
 inline constexpr int kMaxThreads = 4096;
 
-// The committed material library: ./materials when run from a checkout, else the source tree's.
+// The committed material library, a folder per database: ./materials/library when run from a checkout, else
+// the source tree's (or the Python package's).
 std::filesystem::path defaultMaterialsDir();
-// The material files `paths` name, sorted and each once: a folder stands for its *.toml files, anything else
-// for itself. No paths: the library.
+// The material files `paths` name, sorted and each once: a folder stands for the *.toml files in it and its
+// subfolders, anything else for itself. No paths: the library.
 std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>& paths);
 
 }  // namespace glossy::cli

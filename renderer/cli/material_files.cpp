@@ -8,9 +8,8 @@ namespace glossy::cli {
 
 std::filesystem::path defaultMaterialsDir() {
   std::error_code ec;
-  if (std::filesystem::is_directory("materials", ec) && std::filesystem::exists("materials/alum-bronze.toml", ec))
-    return "materials";
-  return dataDir() / "materials";
+  if (std::filesystem::exists("materials/library/merl/alum-bronze.toml", ec)) return "materials/library";
+  return dataDir() / "materials/library";
 }
 
 std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>& paths) {
@@ -21,8 +20,10 @@ std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>&
       files.emplace_back(p);
       continue;
     }
-    for (const auto& e : std::filesystem::directory_iterator(p))
-      if (e.path().extension() == ".toml") files.push_back(e.path());
+    // Its subfolders too: the library keeps a folder per database. Links to folders are not followed, so a
+    // link cannot make the walk endless.
+    for (const auto& e : std::filesystem::recursive_directory_iterator(p))
+      if (e.path().extension() == ".toml" && !e.is_directory()) files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
   files.erase(std::unique(files.begin(), files.end()), files.end());
