@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <string>
+#include <utility>
 
 namespace glossy {
 
@@ -49,6 +50,54 @@ std::string channelListProblem(const std::string& list) {
   return "channel list runs past the size it claims";
 }
 
+// The types OpenEXR reads as a fixed number of bytes whatever size the attribute claims: a claim that differs
+// would leave OpenEXR reading the rest of the header from another place than this check does.
+constexpr std::pair<const char*, int32_t> kFixedSizes[] = {
+    {"box2i", 16},       {"box2f", 16},    {"chromaticities", 32}, {"compression", 1}, {"double", 8},
+    {"envmap", 1},       {"float", 4},     {"int", 4},             {"keycode", 28},    {"lineOrder", 1},
+    {"m33f", 36},        {"m33d", 72},     {"m44f", 64},           {"m44d", 128},      {"rational", 8},
+    {"tiledesc", 9},     {"timecode", 8},  {"v2i", 8},             {"v2f", 8},         {"v2d", 16},
+    {"v3i", 12},         {"v3f", 12},      {"v3d", 24},            {"deepImageState", 1}};
+
+int32_t fixedSize(const std::string& type) {
+  for (const auto& [name, bytes] : kFixedSizes)
+    if (type == name) return bytes;
+  return -1;
+}
+
+int32_t littleEndianInt(const std::string& bytes, size_t at) {
+  int32_t v;
+  std::memcpy(&v, bytes.data() + at, sizeof v);
+  return v;
+}
+
+// What OpenEXR would allocate from the contents of a variable-size attribute rather than from its claimed
+// size: a string vector's strings (each an int32 length, then the bytes) and a preview image (width and
+// height, then 4 bytes per pixel). "" when every such size stays within the attribute.
+std::string contentProblem(const std::string& type, const std::string& value) {
+  if (type == "stringvector") {
+    for (size_t at = 0; at < value.size();) {
+      if (value.size() - at < 4) return "string vector ends inside a string's length";
+      const int32_t length = littleEndianInt(value, at);
+      at += 4;
+      if (length < 0 || uintmax_t(length) > value.size() - at)
+        return "string vector holds a string of " + std::to_string(length) + " bytes, more than the " +
+               std::to_string(value.size() - at) + " left in it";
+      at += size_t(length);
+    }
+  } else if (type == "preview") {
+    if (value.size() < 8) return "preview image is shorter than its size";
+    const auto width = uint32_t(littleEndianInt(value, 0)), height = uint32_t(littleEndianInt(value, 4));
+    if (uint64_t(width) * height * 4 != value.size() - 8)
+      return "preview image of " + std::to_string(width) + " x " + std::to_string(height) + " pixels does not fit its " +
+             std::to_string(value.size()) + " bytes";
+  }
+  return "";
+}
+
+// Attributes whose contents are checked, read whole (their claimed size is within the file's).
+bool checksContents(const std::string& type) { return type == "chlist" || type == "stringvector" || type == "preview"; }
+
 }  // namespace
 
 void preflightExr(const std::filesystem::path& path) {
@@ -79,14 +128,18 @@ void preflightExr(const std::filesystem::path& path) {
       if (bytes < 0 || uintmax_t(bytes) > size - at)
         throw fail("attribute '" + name + "' claims " + std::to_string(bytes) + " bytes, more than the " +
                    std::to_string(size - at) + " left in the file");
-      if (type == "chlist") {
-        // OpenEXR passes on any pixel type, and OpenImageIO aborts the program on one it does not know.
-        if (bytes > kMaxChannelList)
+      if (const int32_t fixed = fixedSize(type); fixed >= 0 && bytes != fixed)
+        throw fail("attribute '" + name + "' of type " + type + " claims " + std::to_string(bytes) + " bytes, not its " +
+                   std::to_string(fixed));
+      if (checksContents(type)) {
+        if (type == "chlist" && bytes > kMaxChannelList)
           throw fail("channel list '" + name + "' is " + std::to_string(bytes) + " bytes, more than the " +
                      std::to_string(kMaxChannelList) + " of any real file");
-        std::string list(size_t(bytes), '\0');
-        if (!in.read(list.data(), bytes)) throw fail("attribute '" + name + "' cannot be read");
-        if (const std::string problem = channelListProblem(list); !problem.empty()) throw fail(problem);
+        std::string value(size_t(bytes), '\0');
+        if (!in.read(value.data(), bytes)) throw fail("attribute '" + name + "' cannot be read");
+        // OpenEXR passes on any pixel type, and OpenImageIO aborts the program on one it does not know.
+        const std::string problem = type == "chlist" ? channelListProblem(value) : contentProblem(type, value);
+        if (!problem.empty()) throw fail("attribute '" + name + "': " + problem);
       } else {
         in.seekg(bytes, std::ios::cur);
       }
