@@ -4,8 +4,9 @@
 tests/scripts/refit-fixture/ holds four parameter files: blue-rubber (the six published fits and glossy's real
 fits of them), gold-paint (the six published fits and six perturbed ones marked as glossy's), chrome (published
 only) and no-network (both kinds, but no network beside it). The test copies them with the library's networks
-into a temporary folder, runs the script, and checks its CSV, summary and figure against `glossy error --json`
-run here directly and the statistics computed here; then that bad input is refused with exit 2 and one line.
+into a temporary folder, runs a copy of the script with --docs, and checks its CSV, summary and figure (and
+the copy of docs/fitting.md) against `glossy error --json` run here directly and the statistics computed here;
+then that bad input is refused with exit 2 and one line, before anything is written.
 """
 import argparse
 import csv
@@ -61,14 +62,19 @@ def main():
     p.add_argument("--source-dir", required=True)
     a = p.parse_args()
     source = Path(a.source_dir)
-    script = source / "scripts/compare-published-fits"
     with tempfile.TemporaryDirectory() as tmp:
-        db, out = Path(tmp) / "db", Path(tmp) / "out"
+        db, out, root = Path(tmp) / "db", Path(tmp) / "out", Path(tmp) / "root"
+        # The script in a tree of its own, so that --docs writes into this copy of docs/fitting.md.
+        script = root / "scripts/compare-published-fits"
+        script.parent.mkdir(parents=True)
+        (root / "docs").mkdir()
+        shutil.copy(source / "scripts/compare-published-fits", script)
+        shutil.copy(source / "docs/fitting.md", root / "docs/fitting.md")
         shutil.copytree(source / "tests/scripts/refit-fixture", db)
         for name in ["blue-rubber", "gold-paint", "chrome"]:
             shutil.copy(source / f"materials/library/merl/{name}.nbrdf", db)
         env = dict(os.environ, GLOSSY=a.exe)
-        run = subprocess.run([sys.executable, str(script), str(db), "--out-dir", str(out), "-j", "2"],
+        run = subprocess.run([sys.executable, str(script), str(db), "--out-dir", str(out), "-j", "2", "--docs"],
                              capture_output=True, text=True, env=env)
         check(run.returncode == 0, f"the script exits 0 (got {run.returncode}: {run.stderr.strip()})")
         if run.returncode != 0:
@@ -147,17 +153,28 @@ def main():
         titles = [t.text for t in svg.iter("{http://www.w3.org/2000/svg}title") if t.text and "published" in t.text]
         check(len(titles) == 12, f"12 markers in the figure (got {len(titles)})")
 
+        # --docs: the summary between the page's markers, the figure beside it.
+        page = (root / "docs/fitting.md").read_text()
+        begin, end = "<!-- refit summary: written by scripts/compare-published-fits --docs -->\n", "<!-- end of refit summary -->"
+        check(begin + summary + end in page, "--docs puts the summary between docs/fitting.md's markers")
+        check((root / "docs/images/refit/refit.svg").read_bytes() == (out / "refit.svg").read_bytes(),
+              "--docs puts the figure into docs/images/refit/")
+
         # Bad input: exit 2, one line naming the folder, file or option, and nothing written.
         (db / "bad.toml").write_text("name = \n")
         bad_out = Path(tmp) / "bad-out"
         for argv, names in [([str(db), "--out-dir", str(bad_out)], "bad.toml"),
                             ([str(Path(tmp) / "absent")], "absent"),
-                            ([str(db), "-j", "0"], "-j 0")]:
+                            ([str(db), "-j", "0"], "-j 0"),
+                            ([str(db), "--out-dir", str(bad_out), "--docs"], "fitting.md")]:
+            if argv[-1] == "--docs":
+                (db / "bad.toml").unlink()
+                (root / "docs/fitting.md").write_text("# no markers\n")
             r = subprocess.run([sys.executable, str(script), *argv], capture_output=True, text=True, env=env)
             lines = r.stderr.strip().splitlines()
             check(r.returncode == 2 and len(lines) == 1 and names in lines[0],
                   f"{argv}: exit 2 and one line naming {names} (got {r.returncode}: {r.stderr.strip()})")
-        check(not (bad_out / "refit.csv").exists(), "nothing written for a malformed file")
+        check(not (bad_out / "refit.csv").exists(), "nothing written for bad input")
     print("ok" if not failures else f"{len(failures)} check(s) failed")
     return 1 if failures else 0
 
