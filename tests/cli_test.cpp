@@ -81,7 +81,7 @@ TEST(CliEval, TheEmbeddedNetworkIsItsReconstructedTable) {
   for (const auto& r : readCsv(sharedDir() / "testvectors/brdf_eval.csv"))
     if (r.at("fit") == "measured") rows.push_back(r);
   const RunResult table = runGlossy({"eval", "--pdf", "--measured", (sharedDir() / "merl/blue-rubber.binary.xz").string()}, directions(rows));
-  const RunResult network = runGlossy({"eval", "--pdf", "--measured", (materialsDir() / "measured/blue-rubber.nbrdf").string()}, directions(rows));
+  const RunResult network = runGlossy({"eval", "--pdf", "--measured", (materialsDir() / "blue-rubber.nbrdf").string()}, directions(rows));
   ASSERT_EQ(network.status, 0) << network.err;
   ASSERT_FALSE(rows.empty());
   EXPECT_EQ(parseOutput(network.out), parseOutput(table.out));
@@ -116,8 +116,8 @@ TEST(CliEval, BadInputExitsTwoWithOneLineNamingTheFile) {
   expectOneLineError(runGlossy({"eval", "--material", good, "--fit", "phong:E1"}), "unknown model 'phong'");
   expectOneLineError(runGlossy({"eval", "--material", (tmp / "absent.toml").string(), "--fit", "smooth:E2"}), "absent.toml");
   expectOneLineError(runGlossy({"eval", "--measured", (tmp / "absent.binary").string()}), "absent.binary");
-  writeText(tmp / "broken.nbrdf", "format = \"glossy-nbrdf 1\"\nmaterial = \"x\"\ninput = \"half-difference\"\noutput = \"expm1\"\n[[layer]]\ninputs = 6\n");
-  expectOneLineError(runGlossy({"eval", "--measured", (tmp / "broken.nbrdf").string()}, "0,0,1,0,0,1\n"), "broken.nbrdf:5: layer 1: key 'outputs' is missing");
+  writeText(tmp / "broken.nbrdf", "format = \"glossy-nbrdf 1\"\nmaterial = \"x\"\nlabel = \"x\"\ninput = \"half-difference\"\noutput = \"expm1\"\n[[layer]]\ninputs = 6\n");
+  expectOneLineError(runGlossy({"eval", "--measured", (tmp / "broken.nbrdf").string()}, "0,0,1,0,0,1\n"), "broken.nbrdf:6: layer 1: key 'outputs' is missing");
 }
 
 TEST(CliSample, SamplesAgreeWithEvalAndArePerSeedDeterministic) {

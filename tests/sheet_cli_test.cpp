@@ -205,25 +205,25 @@ eta = 1.5
 }
 
 // scripts/run's command on a clone with nothing beside it: no ../shared, no $GLOSSY_MERL_DIR or
-// $GLOSSY_SHARED_DIR. The measured panel comes from the network embedded in materials/measured/, the sheet
+// $GLOSSY_SHARED_DIR. The measured panel comes from the network embedded beside the material file, the sheet
 // says so, and every model gets its figures.
 TEST(CliSheet, AFreshCloneAloneRendersAllSevenPanelsFromTheEmbeddedNetwork) {
   TempDir tmp;
   const std::filesystem::path clone = tmp / "glossy";
-  std::filesystem::create_directories(clone / "materials/measured");
-  std::filesystem::copy_file(materialsDir() / "alum-bronze.toml", clone / "materials/alum-bronze.toml");
-  std::filesystem::copy_file(materialsDir() / "measured/alum-bronze.nbrdf", clone / "materials/measured/alum-bronze.nbrdf");
+  std::filesystem::create_directories(clone / "materials/library/merl");
+  for (const char* file : {"alum-bronze.toml", "alum-bronze.nbrdf"})
+    std::filesystem::copy_file(materialsDir() / file, clone / "materials/library/merl" / file);
   ASSERT_FALSE(std::filesystem::exists(tmp / "shared"));
   const std::vector<std::string> unset = {"GLOSSY_MERL_DIR", "GLOSSY_SHARED_DIR"};
-  const std::vector<std::string> args = {"sheet", "--material", "materials/alum-bronze.toml", "-o", "out/alum-bronze.exr",
+  const std::vector<std::string> args = {"sheet", "--material", "materials/library/merl/alum-bronze.toml", "-o", "out/alum-bronze.exr",
                                          "--width", "16", "--height", "16", "--spp", "8"};
   const RunResult r = runGlossyIn(clone, unset, args);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("MERL (NBRDF reconstruction) materials/measured/alum-bronze.nbrdf"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("MERL (NBRDF reconstruction) materials/library/merl/alum-bronze.nbrdf"), std::string::npos) << r.out;
   EXPECT_TRUE(r.out.find("closest: ") != std::string::npos || r.out.find("tie: ") != std::string::npos) << r.out;
   const std::filesystem::path exr = clone / "out/alum-bronze.exr";
   const auto attr = [&](const std::string& key) { return readImageAttribute(exr, key); };
-  EXPECT_EQ(attr("glossy:measured"), "MERL (NBRDF reconstruction) materials/measured/alum-bronze.nbrdf");
+  EXPECT_EQ(attr("glossy:measured"), "MERL (NBRDF reconstruction) materials/library/merl/alum-bronze.nbrdf");
   for (const char* layer : {"measured", "microfacet_E2", "smooth_E2", "ashikhmin_shirley_E1", "ashikhmin_shirley_E2",
                             "cook_torrance_E1", "cook_torrance_E2"}) {
     EXPECT_EQ(attr("glossy:panel." + std::string(layer) + ".empty"), "0") << layer;
@@ -238,10 +238,10 @@ TEST(CliSheet, AFreshCloneAloneRendersAllSevenPanelsFromTheEmbeddedNetwork) {
   EXPECT_TRUE(std::filesystem::exists(clone / "out/alum-bronze.png"));
 
   // glossy list tells a table from a network; without the network the panel is empty and says why.
-  const RunResult list = runGlossyIn(clone, unset, {"list", "materials/alum-bronze.toml"});
+  const RunResult list = runGlossyIn(clone, unset, {"list", "materials/library/merl/alum-bronze.toml"});
   ASSERT_EQ(list.status, 0) << list.err;
   EXPECT_NE(list.out.find("network"), std::string::npos) << list.out;
-  std::filesystem::remove(clone / "materials/measured/alum-bronze.nbrdf");
+  std::filesystem::remove(clone / "materials/library/merl/alum-bronze.nbrdf");
   const RunResult bare = runGlossyIn(clone, unset, args);
   ASSERT_EQ(bare.status, 0) << bare.err;
   EXPECT_EQ(attr("glossy:panel.measured.empty"), "1");
@@ -313,7 +313,7 @@ TEST(CliSheet, TargetErrorRendersUntilEveryIntervalIsThatNarrow) {
                                       "0.0001", "--spp", "32", "-o", (tmp / "c.exr").string()});
   ASSERT_EQ(capped.status, 0) << capped.err;
   EXPECT_EQ(readImageAttribute(tmp / "c.exr", "glossy:spp"), "32");
-  // (A copy away from materials/measured/, so that no embedded network stands in for the table.)
+  // (A copy away from its network, so that no embedded network stands in for the table.)
   std::filesystem::copy_file(materialsDir() / "gold-paint.toml", tmp / "gold-paint.toml");
   const RunResult blind = runGlossy({"sheet", "--material", (tmp / "gold-paint.toml").string(), "--merl-dir",
                                      tmp.path().string(), "--width", "16", "--height", "16", "--target-error", "0.0001", "-o",
