@@ -248,6 +248,64 @@ TEST(CliSheet, AFreshCloneAloneRendersAllSevenPanelsFromTheEmbeddedNetwork) {
   EXPECT_NE(bare.out.find("no measured panel"), std::string::npos) << bare.out;
 }
 
+// A network names its database wherever the sheet names its measured data: the error table,
+// glossy:measured and the measured panel's caption in the PNG. The same network labelled MERL gives the same
+// sheet but for that caption.
+TEST(CliSheet, ANetworkFromRglEpflNamesThatDatabase) {
+  const std::filesystem::path spectralon = libraryDir() / "rgl-epfl/spectralon.nbrdf";
+  ASSERT_TRUE(std::filesystem::exists(spectralon)) << spectralon;
+  TempDir tmp;
+  const std::string merl = readText(materialsDir() / "chrome.toml");
+  const size_t first = merl.find("[[fit]]");
+  const std::string oneFit = merl.substr(first, merl.find("\n[[fit]]", first) - first);
+  const std::string label = "label = \"RGL-EPFL (NBRDF reconstruction)\"";
+  std::string relabelled = readText(spectralon);
+  ASSERT_NE(relabelled.find(label), std::string::npos);
+  relabelled.replace(relabelled.find(label), label.size(), "label = \"MERL (NBRDF reconstruction)\"");
+  writeText(tmp / "merl-labelled.nbrdf", relabelled);
+  const auto sheet = [&](const std::string& name, const std::filesystem::path& network) {
+    writeText(tmp / (name + ".toml"), "name = \"spectralon\"\nmeasured = \"" + network.string() + "\"\n\n" + oneFit);
+    return runGlossy({"sheet", "--material", (tmp / (name + ".toml")).string(), "--width", "32", "--height", "32",
+                      "--spp", "2", "-o", (tmp / (name + ".exr")).string()});
+  };
+  const RunResult rgl = sheet("rgl", spectralon), relabel = sheet("relabelled", tmp / "merl-labelled.nbrdf");
+  ASSERT_EQ(rgl.status, 0) << rgl.err;
+  ASSERT_EQ(relabel.status, 0) << relabel.err;
+  const std::string named = "RGL-EPFL (NBRDF reconstruction) " + spectralon.string();
+  EXPECT_NE(rgl.out.find(named), std::string::npos) << rgl.out;
+  EXPECT_EQ(readImageAttribute(tmp / "rgl.exr", "glossy:measured"), named);
+  EXPECT_EQ(readImageAttribute(tmp / "rgl.exr", "glossy:panel.measured.note"), named);
+  EXPECT_EQ(readImageAttribute(tmp / "relabelled.exr", "glossy:measured"),
+            "MERL (NBRDF reconstruction) " + (tmp / "merl-labelled.nbrdf").string());
+
+  // The PNGs differ, and only in the caption under the measured panel (the first of seven).
+  const auto png = [](const std::filesystem::path& path) {
+    auto in = OIIO::ImageInput::open(path.string());
+    EXPECT_TRUE(in) << path;
+    if (!in) return std::pair{OIIO::ImageSpec(), std::vector<unsigned char>()};
+    const OIIO::ImageSpec spec = in->spec();
+    std::vector<unsigned char> pixels(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
+    EXPECT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, pixels.data()));
+    return std::pair{spec, pixels};
+  };
+  const auto [spec, a] = png(tmp / "rgl.png");
+  const auto [specB, b] = png(tmp / "relabelled.png");
+  ASSERT_EQ(spec.width, specB.width);
+  ASSERT_EQ(a.size(), b.size());
+  const int panel = spec.width / 7;
+  size_t differ = 0;
+  for (int y = 0; y < spec.height; ++y)
+    for (int x = 0; x < spec.width; ++x)
+      for (int c = 0; c < spec.nchannels; ++c) {
+        const size_t i = (size_t(y) * size_t(spec.width) + size_t(x)) * size_t(spec.nchannels) + size_t(c);
+        if (a[i] == b[i]) continue;
+        ++differ;
+        EXPECT_LT(x, panel) << "(" << x << ", " << y << ") differs outside the measured panel's column";
+        EXPECT_GE(y, panel) << "(" << x << ", " << y << ") differs in the panel itself";
+      }
+  EXPECT_GT(differ, 0u) << "the measured panel's caption names the database";
+}
+
 TEST(CliSheet, SmoothFresnelIsWhatTheFileSays) {
   TempDir tmp;
   writeText(tmp / "vh.toml", R"(name = "vh"
