@@ -284,7 +284,7 @@ void aim(tinygltf::Node& node, glm::dvec3 eye, glm::dvec3 target) {
   place(node, eye, glm::quat_cast(glm::dmat3(cameraToWorld)));
 }
 
-const char* const kGlossyMaterial = "materials/alum-bronze.toml";
+const char* const kGlossyMaterial = "materials/library/merl/alum-bronze.toml";
 const char* const kGlossyFit = "microfacet:E2";
 
 bool writeSphere(const std::filesystem::path& dir) {

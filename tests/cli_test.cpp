@@ -81,7 +81,7 @@ TEST(CliEval, TheEmbeddedNetworkIsItsReconstructedTable) {
   for (const auto& r : readCsv(sharedDir() / "testvectors/brdf_eval.csv"))
     if (r.at("fit") == "measured") rows.push_back(r);
   const RunResult table = runGlossy({"eval", "--pdf", "--measured", (sharedDir() / "merl/blue-rubber.binary.xz").string()}, directions(rows));
-  const RunResult network = runGlossy({"eval", "--pdf", "--measured", (materialsDir() / "measured/blue-rubber.nbrdf").string()}, directions(rows));
+  const RunResult network = runGlossy({"eval", "--pdf", "--measured", (materialsDir() / "blue-rubber.nbrdf").string()}, directions(rows));
   ASSERT_EQ(network.status, 0) << network.err;
   ASSERT_FALSE(rows.empty());
   EXPECT_EQ(parseOutput(network.out), parseOutput(table.out));
@@ -116,8 +116,8 @@ TEST(CliEval, BadInputExitsTwoWithOneLineNamingTheFile) {
   expectOneLineError(runGlossy({"eval", "--material", good, "--fit", "phong:E1"}), "unknown model 'phong'");
   expectOneLineError(runGlossy({"eval", "--material", (tmp / "absent.toml").string(), "--fit", "smooth:E2"}), "absent.toml");
   expectOneLineError(runGlossy({"eval", "--measured", (tmp / "absent.binary").string()}), "absent.binary");
-  writeText(tmp / "broken.nbrdf", "format = \"glossy-nbrdf 1\"\nmaterial = \"x\"\ninput = \"half-difference\"\noutput = \"expm1\"\n[[layer]]\ninputs = 6\n");
-  expectOneLineError(runGlossy({"eval", "--measured", (tmp / "broken.nbrdf").string()}, "0,0,1,0,0,1\n"), "broken.nbrdf:5: layer 1: key 'outputs' is missing");
+  writeText(tmp / "broken.nbrdf", "format = \"glossy-nbrdf 1\"\nmaterial = \"x\"\nlabel = \"x\"\ninput = \"half-difference\"\noutput = \"expm1\"\n[[layer]]\ninputs = 6\n");
+  expectOneLineError(runGlossy({"eval", "--measured", (tmp / "broken.nbrdf").string()}, "0,0,1,0,0,1\n"), "broken.nbrdf:6: layer 1: key 'outputs' is missing");
 }
 
 TEST(CliSample, SamplesAgreeWithEvalAndArePerSeedDeterministic) {
@@ -225,6 +225,63 @@ TEST(CliList, ListsTheLibrary) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("100 materials, 600 of the grid's fits"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("alum-bronze"), std::string::npos);
+}
+
+// With no path, from the checkout: a section per database folder that holds parameter files, headed by its
+// networks' label, its folder and its count, in folder order.
+TEST(CliList, GroupsTheLibraryByDatabase) {
+  const RunResult r = runGlossyIn(sourceDir(), {"GLOSSY_MERL_DIR"}, {"list"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  size_t last = 0, materials = 0;
+  for (const auto& [folder, label] : std::vector<std::pair<std::string, std::string>>{
+           {"merl", "MERL (NBRDF reconstruction)"},
+           {"nielsen2015", "Nielsen 2015 (NBRDF reconstruction)"},
+           {"rgl-epfl", "RGL-EPFL (NBRDF reconstruction)"}}) {
+    size_t files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(libraryDir() / folder)) files += e.path().extension() == ".toml";
+    const std::string heading = label + " — materials/library/" + folder + ", " + std::to_string(files) + " materials\n";
+    const size_t at = r.out.find(heading);
+    if (files == 0) {
+      EXPECT_EQ(at, std::string::npos) << heading;
+      continue;
+    }
+    ASSERT_NE(at, std::string::npos) << heading << r.out;
+    EXPECT_GT(at, last) << heading;
+    last = at;
+    materials += files;
+  }
+  EXPECT_GE(materials, 100u);
+  EXPECT_NE(r.out.find("\n" + std::to_string(materials) + " materials, "), std::string::npos) << r.out;
+  EXPECT_LT(r.out.find("\nalum-bronze "), r.out.find("\nchrome ")) << "sorted within";
+}
+
+// Files given on the command line go under their folders the same way: a folder's heading is its networks'
+// label (none without networks), its materials sorted under it.
+TEST(CliList, GroupsGivenFilesByTheirFolder) {
+  TempDir tmp;
+  for (const char* folder : {"a", "b", "c"}) std::filesystem::create_directories(tmp / folder);
+  for (const char* file : {"chrome.toml", "chrome.nbrdf", "gold-paint.toml"})
+    std::filesystem::copy_file(materialsDir() / file, tmp / "a" / file);
+  std::filesystem::copy_file(libraryDir() / "rgl-epfl/spectralon.nbrdf", tmp / "b/spectralon.nbrdf");
+  std::string chrome = readText(materialsDir() / "chrome.toml");
+  chrome.replace(chrome.find("name = \"chrome\""), 15, "name = \"spectralon\"");
+  chrome.replace(chrome.find("measured = \"chrome.binary\""), 26, "measured = \"spectralon.binary\"");
+  writeText(tmp / "b/spectralon.toml", chrome);
+  std::filesystem::copy_file(materialsDir() / "blue-rubber.toml", tmp / "c/blue-rubber.toml");
+  const RunResult r = runGlossyIn(tmp.path(), {"GLOSSY_MERL_DIR"},
+                                  {"list", "c/blue-rubber.toml", "b/spectralon.toml", "a/gold-paint.toml", "a/chrome.toml"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const size_t a = r.out.find("\nMERL (NBRDF reconstruction) — a, 2 materials\n");
+  const size_t b = r.out.find("\nRGL-EPFL (NBRDF reconstruction) — b, 1 material\n");
+  const size_t c = r.out.find("\nc, 1 material\n");
+  ASSERT_NE(a, std::string::npos) << r.out;
+  ASSERT_NE(b, std::string::npos) << r.out;
+  ASSERT_NE(c, std::string::npos) << r.out;
+  const size_t chromeRow = r.out.find("\nchrome "), goldRow = r.out.find("\ngold-paint "),
+               spectralonRow = r.out.find("\nspectralon "), rubberRow = r.out.find("\nblue-rubber ");
+  EXPECT_TRUE(a < chromeRow && chromeRow < goldRow && goldRow < b) << r.out;
+  EXPECT_TRUE(b < spectralonRow && spectralonRow < c && c < rubberRow) << r.out;
+  EXPECT_NE(r.out.find("4 materials, 24 of the grid's fits"), std::string::npos) << r.out;
 }
 
 }  // namespace glossy::test

@@ -231,7 +231,7 @@ TEST(CliFit, BatchResumesPastFitsAnEarlierGlossyWroteUnmarked) {
 TEST(CliError, PublishedFitsAgainstTheSharedTablesGiveFiniteErrors) {
   GLOSSY_REQUIRE_SHARED("merl/alum-bronze.binary.xz");
   const RunResult r = runGlossy({"error", "--measured", (sharedDir() / "merl" / "alum-bronze.binary.xz").string(), "--material",
-                                 (sourceDir() / "materials" / "alum-bronze.toml").string(), "--json"});
+                                 (materialsDir() / "alum-bronze.toml").string(), "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto json = nlohmann::json::parse(r.out);
   ASSERT_EQ(json["fits"].size(), 6u);

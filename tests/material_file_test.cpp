@@ -211,22 +211,21 @@ TEST(MaterialFile, MeasuredResolvesAgainstMerlDirThenEnvironmentAndAcceptsXz) {
 }
 
 // After the tables (--merl-dir, $GLOSSY_MERL_DIR, the working folder) comes the network embedded beside
-// the material file; a name from a file cannot lead out of its measured/ folder.
+// the material file; a name from a file cannot lead out of the material's folder.
 TEST(MaterialFile, MeasuredFallsBackToTheEmbeddedNetworkLast) {
   TempDir merl, materials, env;
-  std::filesystem::create_directories(materials / "measured");
-  writeText(materials / "measured/z.nbrdf", "");
+  writeText(materials / "z.nbrdf", "");
   writeText(merl / "z.binary", "");
   writeText(env / "z.binary.xz", "");
   EXPECT_EQ(resolveMeasured("z.binary", merl.path(), materials.path()), merl / "z.binary");
   setenv("GLOSSY_MERL_DIR", env.path().c_str(), 1);
   EXPECT_EQ(resolveMeasured("z.binary", {}, materials.path()), env / "z.binary.xz");
   unsetenv("GLOSSY_MERL_DIR");
-  EXPECT_EQ(resolveMeasured("z.binary", {}, materials.path()), materials / "measured/z.nbrdf");
-  EXPECT_EQ(resolveMeasured("z.binary.xz", {}, materials.path()), materials / "measured/z.nbrdf");
-  EXPECT_EQ(resolveMeasured("z.nbrdf", {}, materials.path()), materials / "measured/z.nbrdf");
+  EXPECT_EQ(resolveMeasured("z.binary", {}, materials.path()), materials / "z.nbrdf");
+  EXPECT_EQ(resolveMeasured("z.binary.xz", {}, materials.path()), materials / "z.nbrdf");
+  EXPECT_EQ(resolveMeasured("z.nbrdf", {}, materials.path()), materials / "z.nbrdf");
   EXPECT_EQ(resolveMeasured("z.binary", {}, {}), std::nullopt) << "no material folder: no network";
-  EXPECT_EQ(resolveMeasured("../../measured/z.binary", {}, materials.path()), materials / "measured/z.nbrdf");
+  EXPECT_EQ(resolveMeasured("../../z.binary", {}, materials.path()), materials / "z.nbrdf");
   EXPECT_EQ(resolveMeasured("..", {}, materials.path()), std::nullopt);
   EXPECT_EQ(resolveMeasured("w.binary", {}, materials.path()), std::nullopt);
 }

@@ -40,7 +40,7 @@ std::vector<std::vector<std::string>> commandsWith(const std::string& measured, 
 TEST(MeasuredResolution, EveryCommandLooksUnderMerlDirAndTheVariable) {
   TempDir tmp;
   std::filesystem::create_directories(tmp / "merl");
-  std::filesystem::copy_file(materialsDir() / "measured/chrome.nbrdf", tmp / "merl/network.nbrdf");
+  std::filesystem::copy_file(materialsDir() / "chrome.nbrdf", tmp / "merl/network.nbrdf");
   // Not found as given (the tests run elsewhere): an error naming it, for every command alike.
   for (const auto& args : commandsWith("network.nbrdf", tmp.path())) {
     SCOPED_TRACE(args[0]);
@@ -64,7 +64,7 @@ TEST(MeasuredResolution, EveryCommandLooksUnderMerlDirAndTheVariable) {
 TEST(MeasuredResolution, EvalOfANameFoundUnderMerlDirIsEvalOfThePath) {
   TempDir tmp;
   std::filesystem::create_directories(tmp / "merl");
-  std::filesystem::copy_file(materialsDir() / "measured/chrome.nbrdf", tmp / "merl/network.nbrdf");
+  std::filesystem::copy_file(materialsDir() / "chrome.nbrdf", tmp / "merl/network.nbrdf");
   const std::string pairs = "0,0,1,0,0,1\n0.3,0,0.95,-0.3,0,0.95\n";
   const RunResult byPath = runGlossy({"eval", "--measured", (tmp / "merl/network.nbrdf").string()}, pairs);
   const RunResult byName = runGlossy({"eval", "--measured", "network.nbrdf", "--merl-dir", (tmp / "merl").string()}, pairs);

@@ -17,7 +17,7 @@ namespace {
 
 const char* const kSupplement[] = {"alum-bronze", "blue-acrylic", "blue-rubber", "chrome", "gold-metallic-paint2", "gold-paint"};
 
-std::filesystem::path embedded(const std::string& name) { return materialsDir() / "measured" / (name + ".nbrdf"); }
+std::filesystem::path embedded(const std::string& name) { return materialsDir() / (name + ".nbrdf"); }
 
 std::string numbers(const std::vector<double>& v) {
   std::ostringstream s;
@@ -34,7 +34,8 @@ struct TestLayer {
 };
 
 std::string networkText(const std::vector<TestLayer>& layers, const std::string& head = "") {
-  std::string text = head.empty() ? "format = \"glossy-nbrdf 1\"\nmaterial = \"test\"\ninput = \"half-difference\"\noutput = \"expm1\"\n"
+  std::string text = head.empty() ? "format = \"glossy-nbrdf 1\"\nmaterial = \"test\"\nlabel = \"Test (NBRDF reconstruction)\"\n"
+                                    "input = \"half-difference\"\noutput = \"expm1\"\n"
                                   : head;
   for (const TestLayer& l : layers)
     text += "[[layer]]\ninputs = " + std::to_string(l.inputs) + "\noutputs = " + std::to_string(l.outputs) +
@@ -77,6 +78,10 @@ TEST(NeuralBrdf, BadFilesAreInputErrorsNamingTheFile) {
                 .find("cartesian"),
             std::string::npos);
   EXPECT_NE(error(networkText({})).find("[[layer]]"), std::string::npos);
+  // Every result names the database by the network's label: a network without one is refused.
+  EXPECT_NE(error(networkText(layers, "format = \"glossy-nbrdf 1\"\nmaterial = \"x\"\ninput = \"half-difference\"\noutput = \"expm1\"\n"))
+                .find("label"),
+            std::string::npos);
 
   std::vector<TestLayer> chain = layers;
   chain[1].inputs = 3;
@@ -84,7 +89,7 @@ TEST(NeuralBrdf, BadFilesAreInputErrorsNamingTheFile) {
   EXPECT_NE(error(networkText(chain)).find("3 inputs, but 2"), std::string::npos);
   std::vector<TestLayer> shortWeights = layers;
   shortWeights[0].weights.pop_back();
-  EXPECT_NE(error(networkText(shortWeights)).find("bad.nbrdf:9: layer 1: key 'weights' has 11 numbers, expected 12"), std::string::npos)
+  EXPECT_NE(error(networkText(shortWeights)).find("bad.nbrdf:10: layer 1: key 'weights' has 11 numbers, expected 12"), std::string::npos)
       << error(networkText(shortWeights));
   std::vector<TestLayer> nan = layers;
   std::string text = networkText(nan);

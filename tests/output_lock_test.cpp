@@ -142,7 +142,7 @@ TEST(CliOutputLock, PlotReportMergeAndFitRefuseADestinationAnotherRunIsWriting) 
   expectOneLineError(runGlossy({"merge", "fits", (dir / "sheets").string(), "-o", (dir / "library").string()}),
                      (dir / "library").string() + busy);
   held.push_back(hold("fit.toml"));
-  const RunResult fit = runGlossy({"fit", "--measured", (materialsDir() / "measured/chrome.nbrdf").string(), "--model", "microfacet",
+  const RunResult fit = runGlossy({"fit", "--measured", (materialsDir() / "chrome.nbrdf").string(), "--model", "microfacet",
                                    "--metric", "E2", "--starts", "1", "--max-iterations", "2", "-o", (dir / "fit.toml").string()});
   expectOneLineError(fit, (dir / "fit.toml").string() + busy);
   EXPECT_FALSE(std::filesystem::exists(dir / "fit.toml"));

@@ -302,7 +302,7 @@ TEST(PlotCli, NoLocalPathInWhatItWrites) {
   const auto dir = chromePlots();
   const nlohmann::json index = readIndex(dir);
   EXPECT_EQ(index["measured"], "MERL (NBRDF reconstruction) chrome.nbrdf");
-  const std::string local = materialsDir().parent_path().string();
+  const std::string local = sourceDir().string();
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() == ".png") continue;
     const std::string text = readText(entry.path());

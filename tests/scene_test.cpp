@@ -251,7 +251,7 @@ TEST(SceneLoader, ReadsMaterials) {
        {"emissiveFactor", {1.0, 0.5, 0.0}},
        {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}}},
       {{"name", "bronze"},
-       {"extras", {{"glossy", {{"material", "materials/alum-bronze.toml"}, {"fit", "microfacet:E2"}}}}}},
+       {"extras", {{"glossy", {{"material", "materials/library/merl/alum-bronze.toml"}, {"fit", "microfacet:E2"}}}}}},
       {{"name", "glow"}, {"emissiveFactor", {0.5, 0.5, 0.5}}}};
   g.doc["extensionsUsed"] = {"KHR_materials_emissive_strength"};
   const int pos = g.addPositions(kQuad), idx = g.addIndices(kQuadIndices);
@@ -267,7 +267,7 @@ TEST(SceneLoader, ReadsMaterials) {
   expectNear(s.materials[0].emission, {4.0, 2.0, 0.0});
   EXPECT_TRUE(s.materials[0].isEmissive());
   EXPECT_TRUE(s.materials[0].glossyMaterial.empty());
-  EXPECT_EQ(s.materials[1].glossyMaterial, "materials/alum-bronze.toml");
+  EXPECT_EQ(s.materials[1].glossyMaterial, "materials/library/merl/alum-bronze.toml");
   EXPECT_EQ(s.materials[1].glossyFit, "microfacet:E2");
   EXPECT_FALSE(s.materials[1].isEmissive());
   expectNear(s.materials[1].baseColor, {1.0, 1.0, 1.0});  // glTF's default baseColorFactor
@@ -508,7 +508,7 @@ TEST(CommittedScenes, Sphere) {
   const SceneDescription s = loadGltf(path);
   ASSERT_EQ(s.meshes.size(), 1u);
   ASSERT_EQ(s.materials.size(), 1u);
-  EXPECT_EQ(s.materials[0].glossyMaterial, "materials/alum-bronze.toml");
+  EXPECT_EQ(s.materials[0].glossyMaterial, "materials/library/merl/alum-bronze.toml");
   EXPECT_EQ(s.materials[0].glossyFit, "microfacet:E2");
   for (const glm::vec3& p : s.meshes[0].positions) EXPECT_NEAR(glm::length(p), 1.0f, 1e-6f);
   ASSERT_EQ(s.cameras.size(), 2u);
@@ -542,7 +542,7 @@ TEST(CommittedScenes, Preview) {
       expectNear(m.baseColor, {0.5, 0.5, 0.5});
       EXPECT_TRUE(m.glossyMaterial.empty());
     } else {
-      EXPECT_EQ(m.glossyMaterial, "materials/alum-bronze.toml");
+      EXPECT_EQ(m.glossyMaterial, "materials/library/merl/alum-bronze.toml");
     }
   EXPECT_TRUE(backdrop);
   expectCamerasSeeTheObject(s);

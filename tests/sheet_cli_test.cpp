@@ -205,25 +205,25 @@ eta = 1.5
 }
 
 // scripts/run's command on a clone with nothing beside it: no ../shared, no $GLOSSY_MERL_DIR or
-// $GLOSSY_SHARED_DIR. The measured panel comes from the network embedded in materials/measured/, the sheet
+// $GLOSSY_SHARED_DIR. The measured panel comes from the network embedded beside the material file, the sheet
 // says so, and every model gets its figures.
 TEST(CliSheet, AFreshCloneAloneRendersAllSevenPanelsFromTheEmbeddedNetwork) {
   TempDir tmp;
   const std::filesystem::path clone = tmp / "glossy";
-  std::filesystem::create_directories(clone / "materials/measured");
-  std::filesystem::copy_file(materialsDir() / "alum-bronze.toml", clone / "materials/alum-bronze.toml");
-  std::filesystem::copy_file(materialsDir() / "measured/alum-bronze.nbrdf", clone / "materials/measured/alum-bronze.nbrdf");
+  std::filesystem::create_directories(clone / "materials/library/merl");
+  for (const char* file : {"alum-bronze.toml", "alum-bronze.nbrdf"})
+    std::filesystem::copy_file(materialsDir() / file, clone / "materials/library/merl" / file);
   ASSERT_FALSE(std::filesystem::exists(tmp / "shared"));
   const std::vector<std::string> unset = {"GLOSSY_MERL_DIR", "GLOSSY_SHARED_DIR"};
-  const std::vector<std::string> args = {"sheet", "--material", "materials/alum-bronze.toml", "-o", "out/alum-bronze.exr",
+  const std::vector<std::string> args = {"sheet", "--material", "materials/library/merl/alum-bronze.toml", "-o", "out/alum-bronze.exr",
                                          "--width", "16", "--height", "16", "--spp", "8"};
   const RunResult r = runGlossyIn(clone, unset, args);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("MERL (NBRDF reconstruction) materials/measured/alum-bronze.nbrdf"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("MERL (NBRDF reconstruction) materials/library/merl/alum-bronze.nbrdf"), std::string::npos) << r.out;
   EXPECT_TRUE(r.out.find("closest: ") != std::string::npos || r.out.find("tie: ") != std::string::npos) << r.out;
   const std::filesystem::path exr = clone / "out/alum-bronze.exr";
   const auto attr = [&](const std::string& key) { return readImageAttribute(exr, key); };
-  EXPECT_EQ(attr("glossy:measured"), "MERL (NBRDF reconstruction) materials/measured/alum-bronze.nbrdf");
+  EXPECT_EQ(attr("glossy:measured"), "MERL (NBRDF reconstruction) materials/library/merl/alum-bronze.nbrdf");
   for (const char* layer : {"measured", "microfacet_E2", "smooth_E2", "ashikhmin_shirley_E1", "ashikhmin_shirley_E2",
                             "cook_torrance_E1", "cook_torrance_E2"}) {
     EXPECT_EQ(attr("glossy:panel." + std::string(layer) + ".empty"), "0") << layer;
@@ -238,14 +238,72 @@ TEST(CliSheet, AFreshCloneAloneRendersAllSevenPanelsFromTheEmbeddedNetwork) {
   EXPECT_TRUE(std::filesystem::exists(clone / "out/alum-bronze.png"));
 
   // glossy list tells a table from a network; without the network the panel is empty and says why.
-  const RunResult list = runGlossyIn(clone, unset, {"list", "materials/alum-bronze.toml"});
+  const RunResult list = runGlossyIn(clone, unset, {"list", "materials/library/merl/alum-bronze.toml"});
   ASSERT_EQ(list.status, 0) << list.err;
   EXPECT_NE(list.out.find("network"), std::string::npos) << list.out;
-  std::filesystem::remove(clone / "materials/measured/alum-bronze.nbrdf");
+  std::filesystem::remove(clone / "materials/library/merl/alum-bronze.nbrdf");
   const RunResult bare = runGlossyIn(clone, unset, args);
   ASSERT_EQ(bare.status, 0) << bare.err;
   EXPECT_EQ(attr("glossy:panel.measured.empty"), "1");
   EXPECT_NE(bare.out.find("no measured panel"), std::string::npos) << bare.out;
+}
+
+// A network names its database wherever the sheet names its measured data: the error table,
+// glossy:measured and the measured panel's caption in the PNG. The same network labelled MERL gives the same
+// sheet but for that caption.
+TEST(CliSheet, ANetworkFromRglEpflNamesThatDatabase) {
+  const std::filesystem::path spectralon = libraryDir() / "rgl-epfl/spectralon.nbrdf";
+  ASSERT_TRUE(std::filesystem::exists(spectralon)) << spectralon;
+  TempDir tmp;
+  const std::string merl = readText(materialsDir() / "chrome.toml");
+  const size_t first = merl.find("[[fit]]");
+  const std::string oneFit = merl.substr(first, merl.find("\n[[fit]]", first) - first);
+  const std::string label = "label = \"RGL-EPFL (NBRDF reconstruction)\"";
+  std::string relabelled = readText(spectralon);
+  ASSERT_NE(relabelled.find(label), std::string::npos);
+  relabelled.replace(relabelled.find(label), label.size(), "label = \"MERL (NBRDF reconstruction)\"");
+  writeText(tmp / "merl-labelled.nbrdf", relabelled);
+  const auto sheet = [&](const std::string& name, const std::filesystem::path& network) {
+    writeText(tmp / (name + ".toml"), "name = \"spectralon\"\nmeasured = \"" + network.string() + "\"\n\n" + oneFit);
+    return runGlossy({"sheet", "--material", (tmp / (name + ".toml")).string(), "--width", "32", "--height", "32",
+                      "--spp", "2", "-o", (tmp / (name + ".exr")).string()});
+  };
+  const RunResult rgl = sheet("rgl", spectralon), relabel = sheet("relabelled", tmp / "merl-labelled.nbrdf");
+  ASSERT_EQ(rgl.status, 0) << rgl.err;
+  ASSERT_EQ(relabel.status, 0) << relabel.err;
+  const std::string named = "RGL-EPFL (NBRDF reconstruction) " + spectralon.string();
+  EXPECT_NE(rgl.out.find(named), std::string::npos) << rgl.out;
+  EXPECT_EQ(readImageAttribute(tmp / "rgl.exr", "glossy:measured"), named);
+  EXPECT_EQ(readImageAttribute(tmp / "rgl.exr", "glossy:panel.measured.note"), named);
+  EXPECT_EQ(readImageAttribute(tmp / "relabelled.exr", "glossy:measured"),
+            "MERL (NBRDF reconstruction) " + (tmp / "merl-labelled.nbrdf").string());
+
+  // The PNGs differ, and only in the caption under the measured panel (the first of seven).
+  const auto png = [](const std::filesystem::path& path) {
+    auto in = OIIO::ImageInput::open(path.string());
+    EXPECT_TRUE(in) << path;
+    if (!in) return std::pair{OIIO::ImageSpec(), std::vector<unsigned char>()};
+    const OIIO::ImageSpec spec = in->spec();
+    std::vector<unsigned char> pixels(size_t(spec.width) * size_t(spec.height) * size_t(spec.nchannels));
+    EXPECT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, pixels.data()));
+    return std::pair{spec, pixels};
+  };
+  const auto [spec, a] = png(tmp / "rgl.png");
+  const auto [specB, b] = png(tmp / "relabelled.png");
+  ASSERT_EQ(spec.width, specB.width);
+  ASSERT_EQ(a.size(), b.size());
+  const int panel = spec.width / 7;
+  size_t differ = 0;
+  for (int y = 0; y < spec.height; ++y)
+    for (int x = 0; x < spec.width; ++x)
+      for (int c = 0; c < spec.nchannels; ++c) {
+        const size_t i = (size_t(y) * size_t(spec.width) + size_t(x)) * size_t(spec.nchannels) + size_t(c);
+        if (a[i] == b[i]) continue;
+        ++differ;
+        EXPECT_LT(x, panel) << "(" << x << ", " << y << ") differs outside the measured panel's column";
+        EXPECT_GE(y, panel) << "(" << x << ", " << y << ") differs in the panel itself";
+      }
+  EXPECT_GT(differ, 0u) << "the measured panel's caption names the database";
 }
 
 TEST(CliSheet, SmoothFresnelIsWhatTheFileSays) {
@@ -313,7 +371,7 @@ TEST(CliSheet, TargetErrorRendersUntilEveryIntervalIsThatNarrow) {
                                       "0.0001", "--spp", "32", "-o", (tmp / "c.exr").string()});
   ASSERT_EQ(capped.status, 0) << capped.err;
   EXPECT_EQ(readImageAttribute(tmp / "c.exr", "glossy:spp"), "32");
-  // (A copy away from materials/measured/, so that no embedded network stands in for the table.)
+  // (A copy away from its network, so that no embedded network stands in for the table.)
   std::filesystem::copy_file(materialsDir() / "gold-paint.toml", tmp / "gold-paint.toml");
   const RunResult blind = runGlossy({"sheet", "--material", (tmp / "gold-paint.toml").string(), "--merl-dir",
                                      tmp.path().string(), "--width", "16", "--height", "16", "--target-error", "0.0001", "-o",

@@ -1,6 +1,6 @@
-// A Neural BRDF (Sztrajman, Rainer, Ritschel, Weyrich 2021): a small network fitted to one measured MERL
-// material, a few kilobytes where the table is 35 MB, so that the repository can carry measured data
-// (materials/measured/). The network maps Rusinkiewicz half/difference angles to RGB:
+// A Neural BRDF (Sztrajman, Rainer, Ritschel, Weyrich 2021): a small network fitted to one measured
+// material (of MERL, RGL-EPFL or Nielsen 2015), a few kilobytes where a MERL table is 35 MB, so that the
+// repository can carry measured data (materials/library/). The network maps Rusinkiewicz half/difference angles to RGB:
 //   x = (sin θ_h, 0, cos θ_h, sin θ_d cos φ_d, sin θ_d sin φ_d, cos θ_d)      (φ_h = 0: isotropic)
 //   ρ = exp(y) − 1,  y = dense layers of x (ReLU between them, linear last), in BRDF units (1/sr).
 // The file format (.nbrdf, TOML) is in docs/measured.md; scripts/nbrdf-from-h5 makes it from the

@@ -1,6 +1,8 @@
-// glossy list: the material library at a glance, with each fit's head-on albedo.
+// glossy list: the material library at a glance, a section per database folder, with each fit's head-on
+// albedo.
 #include "materials/core/input_error.h"
 #include "materials/models/albedo.h"
+#include "materials/nbrdf/neural_brdf.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/command.h"
 #include "renderer/sheet/sheet.h"
@@ -8,7 +10,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
+#include <set>
 
 namespace glossy::cli {
 
@@ -29,40 +33,66 @@ std::string measuredState(const MaterialFile& m, const std::string& merlDir) {
   return !path ? "missing" : path->extension() == ".nbrdf" ? "network" : "found";
 }
 
+// A folder's database, as its networks label themselves ("MERL (NBRDF reconstruction)"); the labels joined
+// if they differ, empty without networks. A network that does not load names nothing here: list reads
+// material files, and the commands that read the network report it.
+std::string databaseLabel(const std::filesystem::path& folder) {
+  std::set<std::string> labels;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(folder.empty() ? "." : folder, ec)) {
+    if (e.path().extension() != ".nbrdf" || !e.is_regular_file(ec)) continue;
+    try {
+      labels.insert(NeuralBrdf::load(e.path()).label());
+    } catch (const InputError&) {
+    }
+  }
+  std::string joined;
+  for (const std::string& l : labels) joined += (joined.empty() ? "" : "; ") + l;
+  return joined;
+}
+
 int runList(const ListOptions& o) {
   const auto files = materialFiles(o.paths);
   if (files.empty()) throw InputError((o.paths.empty() ? defaultMaterialsDir().string() : o.paths.front()) + ": no .toml material files");
 
-  std::printf("Head-on directional albedo a(N) = ∫ρ(L,N) cos θ_L dω_L of each fit (mean of R, G, B);\n"
-              "'measured' says whether the material's MERL table was found (--merl-dir, $GLOSSY_MERL_DIR), or only\n"
-              "its embedded Neural BRDF network ('network').\n\n");
-  std::printf("%-26s %-9s", "material", "measured");
-  for (const SheetPanel& c : sheetPanels())
-    if (!c.fit.empty()) std::printf(" %*s", width(c), c.label.c_str());
-  std::printf("\n");
+  std::printf("Head-on directional albedo a(N) = ∫ρ(L,N) cos θ_L dω_L of each fit (mean of R, G, B), a section\n"
+              "per database folder; 'measured' says whether the material's MERL table was found (--merl-dir,\n"
+              "$GLOSSY_MERL_DIR), or only the Neural BRDF network beside it ('network').\n");
+  // A section per folder, headed by its database; the files of each come sorted from materialFiles.
+  std::map<std::filesystem::path, std::vector<std::filesystem::path>> byFolder;
+  for (const auto& file : files) byFolder[file.parent_path()].push_back(file);
   int bad = 0, fits = 0;
-  for (const auto& file : files) {
-    MaterialFile m;
-    try {
-      m = loadMaterialFile(file);
-    } catch (const InputError& e) {
-      std::cerr << "glossy: " << e.what() << "\n";
-      ++bad;
-      continue;
-    }
-    std::printf("%-26s %-9s", m.name.c_str(), measuredState(m, o.merlDir).c_str());
-    for (const SheetPanel& c : sheetPanels()) {
-      if (c.fit.empty()) continue;
-      const Fit* f = m.find(FitId::parse(c.fit, c.label));
-      if (!f) {
-        std::printf(" %*s", width(c), "-");
+  for (const auto& [folder, members] : byFolder) {
+    const std::string label = databaseLabel(folder);
+    std::printf("\n%s%s%s, %zu material%s\n", label.c_str(), label.empty() ? "" : " — ",
+                folder.empty() ? "." : folder.string().c_str(), members.size(), members.size() == 1 ? "" : "s");
+    std::printf("%-26s %-9s", "material", "measured");
+    for (const SheetPanel& c : sheetPanels())
+      if (!c.fit.empty()) std::printf(" %*s", width(c), c.label.c_str());
+    std::printf("\n");
+    for (const auto& file : members) {
+      MaterialFile m;
+      try {
+        m = loadMaterialFile(file);
+      } catch (const InputError& e) {
+        std::cerr << "glossy: " << e.what() << "\n";
+        ++bad;
         continue;
       }
-      const Rgb a = albedoAtNormalIncidence(makeBrdf(*f));
-      std::printf(" %*.4f", width(c), (a.r + a.g + a.b) / 3.0);
-      ++fits;
+      std::printf("%-26s %-9s", m.name.c_str(), measuredState(m, o.merlDir).c_str());
+      for (const SheetPanel& c : sheetPanels()) {
+        if (c.fit.empty()) continue;
+        const Fit* f = m.find(FitId::parse(c.fit, c.label));
+        if (!f) {
+          std::printf(" %*s", width(c), "-");
+          continue;
+        }
+        const Rgb a = albedoAtNormalIncidence(makeBrdf(*f));
+        std::printf(" %*.4f", width(c), (a.r + a.g + a.b) / 3.0);
+        ++fits;
+      }
+      std::printf("\n");
     }
-    std::printf("\n");
   }
   std::printf("\n%zu materials, %d of the grid's fits", files.size() - size_t(bad), fits);
   if (bad) std::printf(", %d unreadable (see stderr)", bad);
@@ -77,7 +107,9 @@ Command addListCommand(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand("list",
       "List material parameter files with the head-on albedo of each fit of the comparison grid "
       "(a quick consistency check: the fits of one material should roughly agree).");
-  app->add_option("paths", o->paths, "Material files or folders (default: the committed library, materials/)");
+  app->add_option("paths", o->paths,
+                  "Material files or folders, listed by folder (default: the committed library, materials/library/, "
+                  "a section per database)");
   app->add_option("--merl-dir", o->merlDir, "Folder holding the MERL .binary tables");
   return {app, [o] { return runList(*o); }};
 }

@@ -209,7 +209,7 @@ Command addSheetCommand(CLI::App& parent) {
   app->add_option("--material", o->material, "Material parameter file (TOML)")->required();
   app->add_option("--measured", o->measured, "MERL .binary (or .binary.xz) or .nbrdf network for the measured panel; default: "
                                              "the file's own, looked up in --merl-dir, $GLOSSY_MERL_DIR, the working folder, then "
-                                             "the network embedded beside the material file (materials/measured/)");
+                                             "the network embedded beside the material file (NAME.nbrdf)");
   addRenderOptions(app, *o);
   app->add_option("-o,--output", o->output, "Output EXR (the PNG is written beside it)")->capture_default_str();
   return {app, [o] { return runSheet(*o); }};

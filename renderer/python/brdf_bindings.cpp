@@ -343,7 +343,7 @@ A material parameter file: its name, its measured data's name and its fits, each
   m.def("load_material", [](const py::object& path) {
           return guarded([&] { return std::make_shared<PyMaterial>(PyMaterial{loadMaterialFile(pathText(path))}); });
         }, py::arg("path"), R"doc(
-Reads a material parameter file (TOML): glossy.load_material("materials/alum-bronze.toml").
+Reads a material parameter file (TOML): glossy.load_material("materials/library/merl/alum-bronze.toml").
 Raises InputError, with the message `glossy` prints, naming the file, line and key for anything malformed.
 )doc");
   m.def("load_merl", [](const py::object& path, const py::object& merlDir) {

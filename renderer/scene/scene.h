@@ -22,7 +22,7 @@ struct SceneMaterial {
   std::string name;
   Rgb baseColor{0.8};    // Lambertian albedo when no glossy material is bound
   Rgb emission{0.0};     // emissiveFactor × KHR_materials_emissive_strength; non-zero makes an area light
-  // extras.glossy binding, or empty: {"material": "materials/x.toml", "fit": "microfacet:E2"}; the
+  // extras.glossy binding, or empty: {"material": "materials/library/merl/x.toml", "fit": "microfacet:E2"}; the
   // material path is as written in the file (resolved by the caller against the scene's folder, then cwd).
   std::string glossyMaterial;
   std::string glossyFit;

@@ -92,6 +92,14 @@ std::string fitted(std::string text, int width, int fontSize, const std::string&
   return text;
 }
 
+// The measured panel's database, from its note "LABEL FILE", short enough for the panel: a network's label
+// ("RGL-EPFL (NBRDF reconstruction)" → "RGL-EPFL (NBRDF reconstr.)"), else "MERL".
+std::string databaseCaption(const std::string& note) {
+  const std::string reconstruction = "(NBRDF reconstruction)";
+  const size_t at = note.find(reconstruction);
+  return at == std::string::npos ? "MERL" : note.substr(0, at) + "(NBRDF reconstr.)";
+}
+
 // A fit's parameters as its file has them, on one line: "kd = [0.1, 0.2, 0.3]; ks = [...]; n = 6679.5".
 std::string paramsText(const Fit& fit) {
   MaterialFile one;
@@ -438,7 +446,7 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
     else if (!p.panel.fit.empty())
       second = "no measured panel";
     else
-      second = p.note.find("NBRDF") != std::string::npos ? "MERL (NBRDF reconstr.)" : "MERL";
+      second = databaseCaption(p.note);
     label(p.panel.label, fontSize + 2, fontSize, white);
     if (!second.empty()) label(second, 2 * fontSize + 5, small, grey);
     if (p.brdfE1 >= 0.0) label(formatted(w >= 120 ? "E1 %.3g  E2 %.3g" : "%.2g %.2g", p.brdfE1, p.brdfE2), 3 * fontSize + 7, small, grey);

@@ -1,4 +1,4 @@
-// Where the program's own files are: the default scene (scenes/), the material library (materials/). The
+// Where the program's own files are: the default scene (scenes/), the material library (materials/library/). The
 // source tree the program was built from, unless a packaged copy says otherwise (the Python module's
 // wheel carries them in glossy/data and sets it on import).
 #pragma once

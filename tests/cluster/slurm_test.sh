@@ -114,7 +114,7 @@ state() { sacct_state=$(scontrol show job "$1" 2>/dev/null | sed -n 's/.*JobStat
 
 mkdir -p "$work/lib" "$work/tables" "$work/run"
 for m in "${materials[@]}"; do
-  cp "$source_dir/materials/$m.toml" "$work/lib/"
+  cp "$source_dir/materials/library/merl/$m.toml" "$work/lib/"
   ln -s "$shared_dir/merl/$m.binary.xz" "$work/tables/$m.binary.xz"
 done
 cd "$work/run"

@@ -33,7 +33,7 @@ def cli_error(*args, stdin=None):
 
 
 def material_path(name):
-    return SOURCE_DIR / "materials" / f"{name}.toml"
+    return SOURCE_DIR / "materials" / "library" / "merl" / f"{name}.toml"
 
 
 def shared(*parts):

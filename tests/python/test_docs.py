@@ -43,7 +43,7 @@ def test_the_worked_example_runs_and_prints_what_the_page_says(tmp_path, monkeyp
 def test_the_readme_snippet_runs_from_the_checkout(monkeypatch):
     import glossy
     monkeypatch.chdir(SOURCE_DIR)
-    monkeypatch.delenv("GLOSSY_MERL_DIR", raising=False)   # a fresh clone: the networks in materials/measured
+    monkeypatch.delenv("GLOSSY_MERL_DIR", raising=False)   # a fresh clone: the networks beside the materials
     blocks = python_blocks((SOURCE_DIR / "README.md").read_text())
     assert len(blocks) == 1
     namespace = {}
@@ -109,7 +109,7 @@ def test_the_messages_the_page_quotes_are_the_ones_raised(monkeypatch):
     text = " ".join(DOC.read_text().split())
     missing_fit, bad_spp = re.search(r"with the line `glossy` prints for the same input: `([^`]*)`.*?"
                                      r"with their Python names: `([^`]*)`", text).groups()
-    material = glossy.load_material("materials/alum-bronze.toml")
+    material = glossy.load_material("materials/library/merl/alum-bronze.toml")
     with pytest.raises(glossy.InputError) as raised:
         material.brdf(missing_fit.split("has no ")[1].split(" fit")[0])
     assert str(raised.value) == missing_fit

@@ -60,8 +60,8 @@ def make_site(exe, source, shared, work):
     mats = work / "materials"
     mats.mkdir()
     for name in ["alum-bronze", "chrome"]:
-        shutil.copy(source / "materials" / f"{name}.toml", mats / f"{name}.toml")
-    text = (source / "materials" / "gold-paint.toml").read_text()
+        shutil.copy(source / "materials" / "library" / "merl" / f"{name}.toml", mats / f"{name}.toml")
+    text = (source / "materials" / "library" / "merl" / "gold-paint.toml").read_text()
     text = text.replace('name = "gold-paint"', 'name = "no-data"').replace('measured = "gold-paint.binary"', 'measured = "no-data.binary"')
     (mats / "no-data.toml").write_text(text[:text.rfind("[[fit]]")])  # its last fit left out: an empty panel
     merl = shared / "merl"

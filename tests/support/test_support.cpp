@@ -18,7 +18,8 @@ std::filesystem::path sharedDir() {
   return GLOSSY_SHARED_DIR;
 }
 std::filesystem::path sourceDir() { return GLOSSY_SOURCE_DIR; }
-std::filesystem::path materialsDir() { return sourceDir() / "materials"; }
+std::filesystem::path libraryDir() { return sourceDir() / "materials/library"; }
+std::filesystem::path materialsDir() { return libraryDir() / "merl"; }
 
 std::string shellQuote(const std::string& s) {
   std::string q = "'";

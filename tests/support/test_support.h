@@ -21,6 +21,9 @@ namespace glossy::test {
 // ../shared beside the checkout ($GLOSSY_SHARED_DIR overrides).
 std::filesystem::path sharedDir();
 std::filesystem::path sourceDir();
+// The committed library, a folder per database (materials/library), and its MERL folder, where the
+// 100 MERL materials' parameter files and networks are.
+std::filesystem::path libraryDir();
 std::filesystem::path materialsDir();
 
 // Skips the calling test, with a message naming the folder, when shared/<sub> is absent.

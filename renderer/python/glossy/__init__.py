@@ -5,7 +5,7 @@ measured data, the metrics E1 and E2 with the fitter, and the path tracer with i
 the numbers and images of the `glossy` command, from Python. docs/python.md walks through an example.
 
     import glossy
-    table = glossy.load_merl("materials/measured/alum-bronze.nbrdf")   # or a MERL NAME.binary(.xz)
+    table = glossy.load_merl("materials/library/merl/alum-bronze.nbrdf")   # or a MERL NAME.binary(.xz)
     fit = glossy.fit(table, model="cook-torrance", metric="E2")
     image = glossy.render(brdf=fit.brdf, spp=16, size=256)
 """
