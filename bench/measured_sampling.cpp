@@ -89,7 +89,7 @@ int main(int argc, char** argv) {
     row.build = seconds(t0);
     row.bytes = tabulated.sampling->bytes();
 
-    const MaterialFile m = loadMaterialFile(std::filesystem::path(GLOSSY_SOURCE_DIR) / "materials" / (name + ".toml"));
+    const MaterialFile m = loadMaterialFile(std::filesystem::path(GLOSSY_SOURCE_DIR) / "materials/library/merl" / (name + ".toml"));
     const Fit* fit = bestFit(m, *table);
     std::vector<Brdf> strategies;
     for (const auto& [label, c] : cosineShares) {

@@ -22,7 +22,7 @@ root = Path(__file__).resolve().parents[1]
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--pairs", type=int, default=1_000_000)
 parser.add_argument("--runs", type=int, default=5, help="timed calls per BRDF; the median is kept")
-parser.add_argument("--material", default=str(root / "materials/alum-bronze.toml"))
+parser.add_argument("--material", default=str(root / "materials/library/merl/alum-bronze.toml"))
 parser.add_argument("--measured", default=str(root.parent / "shared/merl/alum-bronze.binary.xz"))
 parser.add_argument("--exe", default=str(root / "build/bench/brdf_eval_bench"))
 args = parser.parse_args()

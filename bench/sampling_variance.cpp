@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
     std::printf("| material | fit | lobe | cosine | cosine/lobe | spp factor |\n|---|---|---|---|---|---|\n");
     std::vector<double> factors;
     for (const char* name : {"alum-bronze", "blue-acrylic", "blue-rubber", "chrome", "gold-metallic-paint2", "gold-paint"}) {
-      const MaterialFile m = loadMaterialFile(std::filesystem::path(GLOSSY_SOURCE_DIR) / "materials" / (std::string(name) + ".toml"));
+      const MaterialFile m = loadMaterialFile(std::filesystem::path(GLOSSY_SOURCE_DIR) / "materials/library/merl" / (std::string(name) + ".toml"));
       for (const Fit& fit : m.fits) {
         const Brdf brdf = makeBrdf(fit);
         const RgbImage ref = setup.render(brdf, size, refSpp, false, 1000);

@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
   const Environment environment = Environment::makeDefault();
   const Camera& camera = description.cameras.front();
   const SheetScene scene = makeSheetScene(description, bvh, environment, camera);
-  const MaterialFile m = loadMaterialFile(source / "materials" / (material + ".toml"));
+  const MaterialFile m = loadMaterialFile(source / "materials/library/merl" / (material + ".toml"));
   const auto table = resolveMeasured(m.measured, merlDir, m.path.parent_path());
   if (!table) {
     std::fprintf(stderr, "sheet_cost: no %s in %s\n", m.measured.c_str(), merlDir.c_str());

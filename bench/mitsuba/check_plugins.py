@@ -98,9 +98,9 @@ def main():
     ok = True
     cases = [
         ("Cook-Torrance E1, blue-rubber", cook_torrance.bsdf_dict(fit("blue-rubber", "cook-torrance", "E1")),
-         ["--material", str(root / "materials/blue-rubber.toml"), "--fit", "cook-torrance:E1"], True),
+         ["--material", str(root / "materials/library/merl/blue-rubber.toml"), "--fit", "cook-torrance:E1"], True),
         ("Microfacet E2, aluminium", microfacet.bsdf_dict(fit("aluminium", "microfacet", "E2")),
-         ["--material", str(root / "materials/aluminium.toml"), "--fit", "microfacet:E2"], True),
+         ["--material", str(root / "materials/library/merl/aluminium.toml"), "--fit", "microfacet:E2"], True),
         ("measured, blue-rubber (NBRDF reconstruction)",
          measured.bsdf_dict(table, fit("blue-rubber", "cook-torrance", "E1")), ["--measured", str(table)], False),
     ]

@@ -333,12 +333,12 @@ def efficiency_cell(a, ctx, lighting, material):
     emitter = {"studio": {"type": "envmap", "filename": str(ctx["studio"])},
                "sky": {"type": "envmap", "filename": str(out / "sky.exr")},
                "constant": {"type": "constant", "radiance": {"type": "rgb", "value": 1.0}}}[lighting]
-    ct_fit = fit_of(root / "materials/blue-rubber.toml", "cook-torrance", "E1")
+    ct_fit = fit_of(root / "materials/library/merl/blue-rubber.toml", "cook-torrance", "E1")
     if material == "ct":
         gltf, extra, bsdf = out / "eff-ct.gltf", (), cook_torrance.bsdf_dict(ct_fit)
     elif material == "microfacet":
         gltf, extra = out / "eff-microfacet.gltf", ()
-        bsdf = microfacet.bsdf_dict(fit_of(root / "materials/aluminium.toml", "microfacet", "E2"))
+        bsdf = microfacet.bsdf_dict(fit_of(root / "materials/library/merl/aluminium.toml", "microfacet", "E2"))
     else:  # glossy: its tabulated sampler; Mitsuba: the CT E1 fit's mixture as the proposal (measured.py)
         gltf, extra, bsdf = out / "eff-ct.gltf", ("--measured", ctx["merl"]), measured.bsdf_dict(ctx["merl"], ct_fit)
     if a.light_samples is not None:
@@ -464,7 +464,7 @@ def main():
     p.add_argument("--ray-spp", type=int, default=16, help="rays: spp of the recorded render")
     p.add_argument("--ref-spp", type=int, default=1024, help="agreement: spp of each converged image (two halves)")
     p.add_argument("--check-spp", type=int, default=256, help="agreement: spp of each diffuse-sphere check image")
-    p.add_argument("--sphere-material", default="materials/alum-bronze.toml",
+    p.add_argument("--sphere-material", default="materials/library/merl/alum-bronze.toml",
                    help="the material of sphere.gltf: the rays and agreement sections' and bench/compare-builds'")
     p.add_argument("--sphere-fit", default="cook-torrance:E2")
     p.add_argument("--fresh", action="store_true", help="agreement: re-render the cached converged images")
@@ -489,8 +489,8 @@ def main():
     if model != "cook-torrance":
         raise SystemExit("compare.py: the rays and agreement sections take cook-torrance fits only")
     triangles = bench_scene.write_scene(out, a.size, a.size, material_file, a.sphere_fit)
-    bench_scene.write_sphere_gltf(out / "eff-ct.gltf", root / "materials/blue-rubber.toml", "cook-torrance:E1", a.size, a.size)
-    bench_scene.write_sphere_gltf(out / "eff-microfacet.gltf", root / "materials/aluminium.toml", "microfacet:E2",
+    bench_scene.write_sphere_gltf(out / "eff-ct.gltf", root / "materials/library/merl/blue-rubber.toml", "cook-torrance:E1", a.size, a.size)
+    bench_scene.write_sphere_gltf(out / "eff-microfacet.gltf", root / "materials/library/merl/aluminium.toml", "microfacet:E2",
                                   a.size, a.size)
     subprocess.run([str(exe), "--write-sky", str(out / "sky.exr")], check=True)
     log(f"scene: UV sphere {bench_scene.SEGMENTS}x{bench_scene.RINGS}, {triangles} triangles; sky {out / 'sky.exr'}")

@@ -65,7 +65,7 @@ def main():
     p.add_argument("--root", type=Path, default=HERE.parent.parent, help="glossy checkout")
     p.add_argument("--build", type=Path, default=None, help="glossy build folder (default ROOT/build)")
     p.add_argument("--env", required=True, help="lat-long map file, or constant:VALUE")
-    p.add_argument("--material", default="materials/blue-rubber.toml")
+    p.add_argument("--material", default="materials/library/merl/blue-rubber.toml")
     p.add_argument("--fit", default="cook-torrance:E1")
     p.add_argument("--size", type=int, default=256)
     p.add_argument("--spp", type=int, default=64)
