@@ -28,7 +28,7 @@ struct Measured {
   double cosineWeight = 1.0, proposalWeight = 0.0;
 
   Measured() = default;
-  // The table with its tabulated sampler (built here, about 0.13 s) and the default cosine share.
+  // The table with its tabulated sampler (built here, from the table) and the default cosine share.
   explicit Measured(std::shared_ptr<const MerlTable> t);
   // For comparisons: cosine sampling alone.
   static Measured cosineOnly(std::shared_ptr<const MerlTable> t);

@@ -1,6 +1,7 @@
 #include "materials/nbrdf/neural_brdf.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/lane_math.h"
 #include "materials/core/input_file.h"
 #include "materials/core/toml_input.h"
 
@@ -147,8 +148,8 @@ Rgb NeuralBrdf::evalAngles(double thetaH, double thetaD, double phiD) const {
   a[4] = sd * std::sin(phiD);
   a[5] = std::cos(thetaD);
   for (const Layer& layer : layers_) {
-    // Each output sums its inputs in order, then the bias; input by input for all outputs at once, so
-    // that the outputs' sums run side by side (the tabulation evaluates the network 2.2 million times).
+    // Each output sums its inputs in order, then the bias: the order tabulate()'s lanes keep too, so that
+    // a tabulated value is the one evaluated here.
     const size_t outputs = size_t(layer.outputs);
     std::fill_n(b.begin(), outputs, 0.0);
     for (int i = 0; i < layer.inputs; ++i) {
@@ -165,32 +166,129 @@ Rgb NeuralBrdf::evalAngles(double thetaH, double thetaD, double phiD) const {
   return {std::expm1(a[0]), std::expm1(a[1]), std::expm1(a[2])};
 }
 
+namespace {
+
+// tabulate() evaluates the network kLanes times side by side: every array below holds one value per lane,
+// and each lane goes through evalAngles's arithmetic in its order (products summed input by input from 0,
+// then the bias; no fused multiply-add anywhere in this file: materials/CMakeLists.txt), so a lane's result
+// is the one evalAngles gives, whatever the lanes beside it and whichever kernel ran. 32 lanes keep 8 AVX2
+// sums in flight, as the adds' latency needs; with fewer, each add waits for the one before.
+constexpr int kLanes = 32;
+using Lanes = std::array<double, kLanes>;
+
+// A layer as the kernels read it: weights input-major, as NeuralBrdf keeps them.
+struct LayerView {
+  int inputs, outputs;
+  bool relu;
+  const double* weights;
+  const double* biases;
+};
+
+// The forward pass of kLanes inputs x (6 rows) into y (3 rows, before exp(y) − 1); a and b are scratch
+// of kMaxWidth rows. Inlined into each kernel below, so that each compiles it for its own ISA.
+[[gnu::always_inline]] inline void forwardLanes(const LayerView* layers, int count, const Lanes* x, Lanes* a, Lanes* b,
+                                                Lanes* y) {
+  const Lanes* in = x;
+  for (int k = 0; k < count; ++k) {
+    const LayerView& layer = layers[k];
+    Lanes* out = k + 1 == count ? y : (k % 2 ? b : a);
+    for (int o = 0; o < layer.outputs; ++o) {
+      Lanes sum{};
+      for (int i = 0; i < layer.inputs; ++i) {
+        const double w = layer.weights[size_t(i) * size_t(layer.outputs) + size_t(o)];
+        for (int l = 0; l < kLanes; ++l) sum[l] += w * in[i][l];
+      }
+      for (int l = 0; l < kLanes; ++l) {
+        const double s = sum[l] + layer.biases[o];
+        out[o][l] = layer.relu ? std::max(s, 0.0) : s;
+      }
+    }
+    in = out;
+  }
+}
+
+using Forward = void (*)(const LayerView*, int, const Lanes*, Lanes*, Lanes*, Lanes*);
+void forwardBaseline(const LayerView* layers, int count, const Lanes* x, Lanes* a, Lanes* b, Lanes* y) {
+  forwardLanes(layers, count, x, a, b, y);
+}
+#if defined(__x86_64__)
+// The same pass in AVX2's 4-lane registers, chosen at run time as lane_math's blocks are (the build is
+// baseline x86-64).
+__attribute__((target("avx2"))) void forwardAvx2(const LayerView* layers, int count, const Lanes* x, Lanes* a, Lanes* b,
+                                                  Lanes* y) {
+  forwardLanes(layers, count, x, a, b, y);
+}
+#endif
+
+}  // namespace
+
 MerlTable NeuralBrdf::tabulate() const {
   constexpr int nH = MerlTable::kThetaH, nD = MerlTable::kThetaD, nP = MerlTable::kPhiD;
   constexpr double degree = kPi / 180.0;
+  // The inputs' sines and cosines, from the same arguments as evalAngles's calls: θ_h at the bins' lower
+  // edges, θ_d = j°, φ_d = k° for k < 360 (k° + 180° for the second half of bin k); and at the bins' centres
+  // for the horizon test.
+  std::array<double, nH> sinH, cosH, sinCentreH, cosCentreH;
+  for (int i = 0; i < nH; ++i) {
+    const double edgeH = double(i) * i / (nH * nH) * (kPi / 2.0);
+    const double centreH = (i + 0.5) * (i + 0.5) / (nH * nH) * (kPi / 2.0);
+    sinH[i] = std::sin(edgeH), cosH[i] = std::cos(edgeH);
+    sinCentreH[i] = std::sin(centreH), cosCentreH[i] = std::cos(centreH);
+  }
+  std::array<double, nD> sinD, cosD, sinCentreD, cosCentreD;
+  for (int j = 0; j < nD; ++j) {
+    sinD[j] = std::sin(j * degree), cosD[j] = std::cos(j * degree);
+    sinCentreD[j] = std::sin((j + 0.5) * degree), cosCentreD[j] = std::cos((j + 0.5) * degree);
+  }
+  std::array<double, 2 * nP> sinP, cosP;
+  std::array<double, nP> cosCentreP;
+  for (int k = 0; k < 2 * nP; ++k) sinP[k] = std::sin(k * degree), cosP[k] = std::cos(k * degree);
+  for (int k = 0; k < nP; ++k) cosCentreP[k] = std::cos((k + 0.5) * degree);
+
+  std::vector<LayerView> layers;
+  for (const Layer& l : layers_) layers.push_back({l.inputs, l.outputs, l.relu, l.weights.data(), l.biases.data()});
+  Forward forward = forwardBaseline;
+#if defined(__x86_64__)
+  if (lanes::isa() == lanes::Isa::Avx2) forward = forwardAvx2;
+#endif
+
   std::vector<double> values(3 * MerlTable::kBins);
   tbb::parallel_for(tbb::blocked_range<int>(0, nH), [&](const tbb::blocked_range<int>& rows) {
+    std::vector<Lanes> scratch(2 * kMaxWidth);
+    Lanes x[kInputs] = {}, y[kOutputs];
+    // A batch holds kLanes / 2 measured bins of a row, bin m in lanes 2m (φ_d = k°) and 2m + 1 (k° + 180°).
+    size_t bins[kLanes / 2];
+    int inBatch = 0;
+    const auto finish = [&] {
+      forward(layers.data(), int(layers.size()), x, scratch.data(), scratch.data() + kMaxWidth, y);
+      for (int m = 0; m < inBatch; ++m)
+        for (int c = 0; c < 3; ++c) {
+          const double rho = std::max(0.5 * (std::expm1(y[c][2 * m]) + std::expm1(y[c][2 * m + 1])), 0.0);
+          values[size_t(c) * MerlTable::kBins + bins[m]] = double(float(rho / MerlTable::kScale[c]));
+        }
+      inBatch = 0;
+    };
     for (int i = rows.begin(); i < rows.end(); ++i) {
-      const double edgeH = double(i) * i / (nH * nH) * (kPi / 2.0);
-      const double centreH = (i + 0.5) * (i + 0.5) / (nH * nH) * (kPi / 2.0);
       for (int j = 0; j < nD; ++j)
         for (int k = 0; k < nP; ++k) {
           const size_t bin = MerlBin{i, j, k}.index();
           // Unmeasured where the bin's centre sees a direction below the horizon: L is D turned by θ_h about
           // y, and V its mirror about H, so cos θ_{L,V} = cos θ_h cos θ_d ∓ sin θ_h sin θ_d cos φ_d.
-          const double td = (j + 0.5) * degree, pd = (k + 0.5) * degree;
-          const double along = std::cos(centreH) * std::cos(td), across = std::sin(centreH) * std::sin(td) * std::cos(pd);
+          const double along = cosCentreH[i] * cosCentreD[j], across = sinCentreH[i] * sinCentreD[j] * cosCentreP[k];
           if (std::min(along - across, along + across) < -0.01) {
             for (int c = 0; c < 3; ++c) values[size_t(c) * MerlTable::kBins + bin] = -1.0;
             continue;
           }
-          const Rgb a = evalAngles(edgeH, j * degree, k * degree), b = evalAngles(edgeH, j * degree, (k + 180) * degree);
-          for (int c = 0; c < 3; ++c) {
-            const double rho = std::max(0.5 * (a[c] + b[c]), 0.0);
-            values[size_t(c) * MerlTable::kBins + bin] = double(float(rho / MerlTable::kScale[c]));
+          for (int side = 0; side < 2; ++side) {
+            const int l = 2 * inBatch + side, p = k + side * nP;
+            x[0][l] = sinH[i], x[1][l] = 0.0, x[2][l] = cosH[i];
+            x[3][l] = sinD[j] * cosP[p], x[4][l] = sinD[j] * sinP[p], x[5][l] = cosD[j];
           }
+          bins[inBatch++] = bin;
+          if (inBatch == kLanes / 2) finish();
         }
     }
+    if (inBatch > 0) finish();  // the lanes past inBatch hold earlier bins' inputs: computed, not stored
   });
   return MerlTable::fromValues(values, source_);
 }

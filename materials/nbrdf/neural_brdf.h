@@ -47,7 +47,8 @@ class NeuralBrdf {
   // θ_h = (i/90)² 90°, θ_d = j°, and φ_d = k° and k° + 180° (the lower bin edges, where the training
   // targets were the table's entries; the two φ_d the table folds together), clamped at 0, divided by the
   // channel scale and rounded to float. A bin whose centre has a direction below the horizon
-  // (min(cos θ_i, cos θ_o) < −0.01) is unmeasured. Computed on all cores (about 0.5 s on 2).
+  // (min(cos θ_i, cos θ_o) < −0.01) is unmeasured. Every load tabulates, so it is computed on all cores and
+  // many bins side by side (AVX2 where the CPU has it), each value still exactly evalAngles's.
   MerlTable tabulate() const;
 
   const std::string& material() const { return material_; }

@@ -95,12 +95,13 @@ std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
 }
 
 // What fitting a table costs, in units of a Microfacet or Smooth fit under one metric at the default settings
-// (about 7 CPU seconds with the table's loading; Ashikhmin-Shirley and Cook-Torrance take half as long again,
-// and a .nbrdf network's tabulation about 2 more: docs/cluster.md).
-double fitCost(const std::filesystem::path& table, const std::vector<std::string>& models, size_t metrics) {
+// (about 7 CPU seconds with the table's loading; Ashikhmin-Shirley and Cook-Torrance take half as long again:
+// docs/cluster.md). Loading is a small part of a unit for a .binary.xz and a .nbrdf alike, so every table
+// costs the same.
+double fitCost(const std::vector<std::string>& models, size_t metrics) {
   static const std::map<std::string, double, std::less<>> kModelCost = {
       {"microfacet", 1.0}, {"smooth", 1.0}, {"ashikhmin-shirley", 1.5}, {"cook-torrance", 1.5}};
-  double cost = table.extension() == ".nbrdf" ? 0.3 : 0.0;
+  double cost = 0.0;
   for (const std::string& m : models) {
     const auto it = kModelCost.find(m);
     cost += double(metrics) * (it == kModelCost.end() ? 1.0 : it->second);
@@ -119,8 +120,7 @@ int runBatch(const FitOptions& o) {
   for (const std::string& m : o.metrics.empty() ? std::vector<std::string>{"E1", "E2"} : o.metrics) metrics.push_back(parseMetric(m, "--metric"));
   for (const auto& m : models) requireFittable(m);
   if (!shard.source.empty()) {
-    std::vector<double> costs;
-    for (const auto& t : tables) costs.push_back(fitCost(t, models, metrics.size()));
+    const std::vector<double> costs(tables.size(), fitCost(models, metrics.size()));
     std::vector<std::filesystem::path> mine;
     double myCost = 0.0;
     for (size_t k : shardItems(costs, shard)) {
