@@ -3,6 +3,7 @@
 #include "materials/core/input_error.h"
 #include "materials/fitting/fitter.h"
 #include "materials/fitting/metric.h"
+#include "materials/nbrdf/neural_brdf.h"
 #include "tests/support/test_support.h"
 
 #include <algorithm>
@@ -155,6 +156,16 @@ TEST(FitModel, TheResultDoesNotDependOnTheStartsOrTheThreadCount) {
   FitSettings one;
   one.threads = 1;
   EXPECT_EQ(fitModel(data, "cook-torrance", one).fit, standard.fit);
+}
+
+TEST(FitModel, AFitThatRunsToABoundIsAValidFit) {
+  // RGL-EPFL's colodur_kalahari_2a under Smooth E2: the best scale A runs to the top of its range, where the
+  // fitter once stopped at 1e7, beyond what a parameter file may hold, so the fit could not be written.
+  const auto table = std::make_shared<const MerlTable>(NeuralBrdf::load(libraryDir() / "rgl-epfl/colodur_kalahari_2a.nbrdf").tabulate());
+  const MetricData data(*table, Metric::E2);
+  const FitReport report = fitModel(data, "smooth");
+  EXPECT_NO_THROW(validateFit(report.fit, "the fit"));
+  EXPECT_TRUE(std::isfinite(report.error));
 }
 
 TEST(FitModel, ModelsWithoutALobeCannotBeFitted) {

@@ -237,7 +237,7 @@ TEST(NeuralBrdf, SheetFromTheNetworkIsTheSheetFromTheTable) {
   const EmbreeScene bvh(description);
   const Environment environment = Environment::makeDefault();
   const SheetScene scene = makeSheetScene(description, bvh, environment, description.cameras.front());
-  const MaterialFile m = loadMaterialFile(materialsDir() / "library/merl/gold-paint.toml");
+  const MaterialFile m = loadMaterialFile(materialsDir() / "gold-paint.toml");
   SheetSettings settings;
   settings.width = settings.height = 48;
   settings.spp = 16;

@@ -1,6 +1,7 @@
 #include "materials/fitting/fitter.h"
 
 #include "materials/core/input_error.h"
+#include "materials/models/common_params.h"
 #include "materials/models/registry.h"
 
 #include <ceres/ceres.h>
@@ -18,8 +19,9 @@ namespace glossy {
 
 namespace {
 
-// Kd and the scale, as logarithms: 1e-9 reads as 0 in any render, 1e6 is beyond every published A.
-constexpr double kLinearLo = 1e-9, kKdHi = 10.0, kScaleHi = 1e7;
+// Kd and the scale, as logarithms: 1e-9 reads as 0 in any render; the scale stops where parameter files
+// stop (common_params.h), so that every fit the fitter makes can be written and read back.
+constexpr double kLinearLo = 1e-9, kKdHi = 10.0, kScaleHi = params::kScaleRange.hi;
 
 template <class M>
 concept Fittable = requires(const M& m, const LobeGeometry& g, const double* s) {
@@ -196,8 +198,11 @@ Candidate refine(const M& model, const std::vector<FitPoint>& pts, Metric metric
   ceres::Solve(options, &problem, &summary);
 
   Candidate out = start;
-  for (int c = 0; c < 3; ++c) out.kd[c] = std::exp(xKd[c]), out.scale[c] = std::exp(xScale[c]);
-  for (int k = 0; k < K; ++k) out.shape[k] = fromUnconstrained(M::kShape[k].scale, xShape[k]);
+  // exp(log(bound)) can land an ulp outside the bound: clamped, so that a value at its bound stays valid.
+  for (int c = 0; c < 3; ++c)
+    out.kd[c] = std::clamp(std::exp(xKd[c]), kLinearLo, kKdHi), out.scale[c] = std::clamp(std::exp(xScale[c]), kLinearLo, kScaleHi);
+  for (int k = 0; k < K; ++k)
+    out.shape[k] = std::clamp(fromUnconstrained(M::kShape[k].scale, xShape[k]), M::kShape[k].lo, M::kShape[k].hi);
   out.sum = std::isfinite(summary.final_cost) ? 2.0 * summary.final_cost : std::numeric_limits<double>::infinity();
   // Never worse than the start (a failed solve keeps it).
   return out.sum <= start.sum ? out : start;

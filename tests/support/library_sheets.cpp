@@ -23,7 +23,7 @@ const std::map<std::string, std::string> kLabels = {{"merl", "MERL (NBRDF recons
 std::vector<std::string> libraryMaterials() {
   std::vector<std::string> out;
   for (const auto& [database, label] : kLabels)
-    for (const auto& e : std::filesystem::directory_iterator(materialsDir() / "library" / database))
+    for (const auto& e : std::filesystem::directory_iterator(libraryDir() / database))
       if (e.path().extension() == ".toml") out.push_back(database + "/" + e.path().stem().string());
   std::sort(out.begin(), out.end());
   return out;
@@ -32,7 +32,7 @@ std::vector<std::string> libraryMaterials() {
 void expectCompleteSheets(const std::vector<std::string>& materials) {
   TempDir tmp;
   std::vector<std::string> args = {"sheets", "--width", "32", "--height", "32", "--spp", "16", "-o", (tmp / "out").string()};
-  for (const std::string& m : materials) args.push_back((materialsDir() / "library" / (m + ".toml")).string());
+  for (const std::string& m : materials) args.push_back((libraryDir() / (m + ".toml")).string());
   // The networks in the repository, not a MERL folder that happens to be set.
   const RunResult r = runGlossyIn(tmp.path(), {"GLOSSY_MERL_DIR"}, args);
   ASSERT_EQ(r.status, 0) << r.err;
