@@ -239,7 +239,8 @@ TEST(CliList, GroupsTheLibraryByDatabase) {
            {"rgl-epfl", "RGL-EPFL (NBRDF reconstruction)"}}) {
     size_t files = 0;
     for (const auto& e : std::filesystem::directory_iterator(libraryDir() / folder)) files += e.path().extension() == ".toml";
-    const std::string heading = label + " — materials/library/" + folder + ", " + std::to_string(files) + " materials\n";
+    const std::string heading =
+        label + " — materials/library/" + folder + ", " + std::to_string(files) + (files == 1 ? " material\n" : " materials\n");
     const size_t at = r.out.find(heading);
     if (files == 0) {
       EXPECT_EQ(at, std::string::npos) << heading;
