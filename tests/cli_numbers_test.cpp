@@ -30,18 +30,26 @@ std::vector<Case> cases(const TempDir& tmp) {
     return a;
   };
   std::vector<Case> all;
-  for (const auto& c : {render, sheet, sheets}) {
-    all.push_back({c, "--env-rotate", with(nonFinite, {"1e308", "361", "x"})});
-    all.push_back({c, "--env-constant", with(nonFinite, {"1e308", "-1", "1,nan,1", "1,1,1e13"})});
-    all.push_back({c, "--threads", with(nonFinite, {"-1", "1e8", "100000000", "4097", "2.5", "1e308"})});
-    all.push_back({c, "--width", with(nonFinite, {"0", "-1", "1e308", "99999999999999999999"})});
-    all.push_back({c, "--spp", with(nonFinite, {"0", "-1", "1e308"})});
-  }
+  // Every value goes to render; sheet and sheets declare the same options with the same checks, so each of
+  // theirs gets a non-finite value and an out-of-range one: every glossy process costs its start-up.
+  all.push_back({render, "--env-rotate", with(nonFinite, {"1e308", "361", "x"})});
+  all.push_back({render, "--env-constant", with(nonFinite, {"1e308", "-1", "1,nan,1", "1,1,1e13"})});
+  all.push_back({render, "--threads", with(nonFinite, {"-1", "1e8", "100000000", "4097", "2.5", "1e308"})});
+  all.push_back({render, "--width", with(nonFinite, {"0", "-1", "1e308", "99999999999999999999"})});
+  all.push_back({render, "--spp", with(nonFinite, {"0", "-1", "1e308"})});
   for (const auto& c : {sheet, sheets}) {
-    all.push_back({c, "--time", with(nonFinite, {"0", "-1", "1e308", "1e7"})});
-    all.push_back({c, "--target-error", with(nonFinite, {"0", "-0.1", "1e308", "11"})});
-    all.push_back({c, "--exposure", with(nonFinite, {"1e308", "65", "-65"})});
+    all.push_back({c, "--env-rotate", {"nan", "361"}});
+    all.push_back({c, "--env-constant", {"inf", "1,nan,1"}});
+    all.push_back({c, "--threads", {"-inf", "4097"}});
+    all.push_back({c, "--width", {"1e400", "0"}});
+    all.push_back({c, "--spp", {"NaN", "-1"}});
   }
+  all.push_back({sheet, "--time", with(nonFinite, {"0", "-1", "1e308", "1e7"})});
+  all.push_back({sheet, "--target-error", with(nonFinite, {"0", "-0.1", "1e308", "11"})});
+  all.push_back({sheet, "--exposure", with(nonFinite, {"1e308", "65", "-65"})});
+  all.push_back({sheets, "--time", {"nan", "1e7"}});
+  all.push_back({sheets, "--target-error", {"-inf", "11"}});
+  all.push_back({sheets, "--exposure", {"1e400", "-65"}});
   all.push_back({sample, "-n", with(nonFinite, {"-1", "1e300", "2000000000"})});
   all.push_back({fit, "--threads", with(nonFinite, {"0", "-1", "1e8"})});
   all.push_back({fit, "--starts", with(nonFinite, {"0", "1e308"})});
