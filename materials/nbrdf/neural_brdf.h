@@ -29,7 +29,7 @@ class NeuralBrdf {
   // The supplement's networks are 6 → 21 → 21 → 3: 675 weights and biases, 11 KB. Every load tabulates the
   // network 2.9 million times, so its cost is that count times the parameters: a network with more than
   // theirs is refused, from its layers' sizes, before any weight is read (a valid 11 MB network would
-  // otherwise load for an hour and a half in every command). A file over kMaxBytes is refused unread.
+  // otherwise cost every command a thousand times a supplement network's load). A file over kMaxBytes is refused unread.
   static constexpr int kMaxParameters = 675;
   static constexpr int kMaxWidth = kMaxParameters / kOutputs;  // what a layer can have within the count
   static constexpr std::uintmax_t kMaxBytes = 256u << 10;

@@ -95,9 +95,8 @@ std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
 }
 
 // What fitting a table costs, in units of a Microfacet or Smooth fit under one metric at the default settings
-// (about 7 CPU seconds with the table's loading; Ashikhmin-Shirley and Cook-Torrance take half as long again:
-// docs/cluster.md). Loading is a small part of a unit for a .binary.xz and a .nbrdf alike, so every table
-// costs the same.
+// (Ashikhmin-Shirley and Cook-Torrance take half as long again: docs/cluster.md, "Expected cost"). Loading is
+// a small part of a unit for a .binary.xz and a .nbrdf alike, so every table costs the same.
 double fitCost(const std::vector<std::string>& models, size_t metrics) {
   static const std::map<std::string, double, std::less<>> kModelCost = {
       {"microfacet", 1.0}, {"smooth", 1.0}, {"ashikhmin-shirley", 1.5}, {"cook-torrance", 1.5}};
