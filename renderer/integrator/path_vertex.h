@@ -168,6 +168,7 @@ struct LightPath {
   Vec3 wiLocal{0.0};
   Rgb radiance{0.0};
   double pdf = 0.0;  // solid angle, the light's choice included
+  bool delta = false;  // LightSample::delta: no BSDF sample competes with it
   Ray shadow;        // tfar < 0: nothing can lie between (the light touches the point)
 };
 
@@ -178,6 +179,7 @@ inline bool toLight(const ShadingPoint& sp, const ChosenLight& chosen, const Lig
   if (out.wiLocal.z <= 0.0) return false;
   out.radiance = s.radiance;
   out.pdf = chosen.probability * s.pdf;
+  out.delta = s.delta;
   out.shadow = spawnRay(sp.position, sp.ng, sp.margin, s.wi);
   if (!s.distant) {
     // To the light's point, itself moved off the light by its margin. Where the two margins overlap
@@ -209,12 +211,12 @@ inline VertexLight sampleLight(const PathContext& context, const ShadingPoint& s
 }
 
 // What one of a vertex's `count` light samples brings if nothing blocks it, MIS-weighted against the
-// BRDF's own sampling (the power heuristic with sample counts), before the path's throughput. False when
-// that is nothing.
+// BRDF's own sampling (the power heuristic with sample counts; weight 1 for a delta light, which no BSDF
+// sample finds), before the path's throughput. False when that is nothing.
 inline bool lightContribution(const LightPath& light, int count, const BrdfValue& value, Rgb& contribution) {
   if (maxComponent(value.f) <= 0.0) return false;
   const double pdf = count * light.pdf;
-  const double w = powerHeuristic(pdf, value.pdf);
+  const double w = light.delta ? 1.0 : powerHeuristic(pdf, value.pdf);
   contribution = value.f * light.radiance * (light.wiLocal.z * w / pdf);
   return true;
 }
