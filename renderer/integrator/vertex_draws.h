@@ -52,11 +52,8 @@ inline void drawVertices(CmjSampler* samplers, const int* lanes, int n, DrawsUse
   for (int k = 0; k < n; ++k) out[lanes[k]].lightSamples = split ? int(samplers[lanes[k]].splits()) : 1;
   for (int slot = 0; slot < VertexDraws::kDimensions; ++slot) {
     if ((slot == VertexDraws::kLightChoice && !used.lightChoice) || (slot == VertexDraws::kRoulette && !used.roulette)) {
-      for (int k = 0; k < n; ++k) {
-        samplers[lanes[k]].skip(1);
-        VertexDraws& d = out[lanes[k]];
-        (slot == VertexDraws::kRoulette ? d.roulette : d.lightChoice[0]) = 0.0;
-      }
+      // Left as it was: the choice has one outcome (one light has all the power), roulette is not played.
+      for (int k = 0; k < n; ++k) samplers[lanes[k]].skip(1);
     } else if (split && slot == VertexDraws::kLightChoice) {
       for (int k = 0; k < n; ++k) samplers[lanes[k]].getSplit1D(out[lanes[k]].lightChoice);
     } else if (split && slot == VertexDraws::kLight) {
