@@ -2,7 +2,7 @@
 // samples distributed as the density it reports, for smooth, single-corner, half-black and very high-contrast
 // patches; the density is the bilinear function over its mean; each coordinate's map is monotone (so
 // stratified u stay stratified); the linear inversion is exact at its ends and in its degenerate cases.
-#include "materials/sampling/bilinear_patch.h"
+#include "renderer/lights/bilinear_patch.h"
 #include "tests/support/chi2.h"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
-// The environment's compact tables (materials/sampling/compact_cdf.h, nested_grid.h): shares that sum to
+// The environment's compact tables (renderer/lights/compact_cdf.h, nested_grid.h): shares that sum to
 // one, a share for every child with weight however faint, none for the others, and draws that land in
 // each child exactly as often as its share says.
-#include "materials/sampling/compact_cdf.h"
-#include "materials/sampling/nested_grid.h"
+#include "renderer/lights/compact_cdf.h"
+#include "renderer/lights/nested_grid.h"
 #include "tests/support/chi2.h"
 
 #include <gtest/gtest.h>

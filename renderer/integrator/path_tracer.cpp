@@ -3,7 +3,6 @@
 #include "renderer/integrator/path_tracer.h"
 
 #include "renderer/camera/camera_rays.h"
-#include "renderer/integrator/path_vertex.h"
 #include "renderer/integrator/shared_draws.h"
 #include "renderer/util/progress.h"
 
@@ -62,7 +61,7 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
 
   const CameraRays cameraRays(camera, settings.width, settings.height);
   const CmjPattern pattern(uint32_t(std::max(1, settings.spp)), uint32_t(std::clamp(settings.lightSamples, 1, kMaxLightSamples)));
-  auto renderTiles = [&](const tbb::blocked_range2d<int>& tiles) {
+  auto renderTileRange = [&](const tbb::blocked_range2d<int>& tiles) {
     uint64_t localDropped = 0, localObjectPaths = 0;
     CmjSampler samplers[kWaveSize];
     Ray rays[kWaveSize];
@@ -138,7 +137,7 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
               if (stop)
                 traceToObject(contexts[0], ray, samplers[i], radiance[i], stops[size_t(i)]);
               else
-                radiance[i] = tracePath(contexts[0], ray, samplers[i]);
+                radiance[i] = Li(contexts[0], ray, samplers[i]);
             }
           } else {
             CmjSampler::get2D(samplers, kLanes.data(), lanes, film);
@@ -176,7 +175,7 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
   };
 
   tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
-  arena.execute([&] { tbb::parallel_for(tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1), renderTiles); });
+  arena.execute([&] { tbb::parallel_for(tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1), renderTileRange); });
   progress.finish();
   stats.droppedSamples = dropped.load();
   stats.objectPaths = objectPaths.load();

@@ -7,6 +7,7 @@
 #include "materials/models/brdf.h"
 #include "renderer/image/exr_image.h"
 #include "renderer/lights/environment.h"
+#include "renderer/lights/light_set.h"
 #include "renderer/scene/embree_scene.h"
 #include "renderer/util/job_control.h"
 
@@ -60,6 +61,13 @@ struct RenderScene {
     return m < 0 ? defaultBrdf : brdfs[size_t(m)];
   }
   bool isObject(uint32_t mesh) const { return mesh < objectMeshes.size() && objectMeshes[mesh]; }
+};
+
+// What a path tracer works from.
+struct PathContext {
+  const RenderScene& scene;
+  const RenderSettings& settings;
+  const LightSet& lights;
 };
 
 struct RenderStats {

@@ -1,11 +1,9 @@
-// The reference path tracer (path_reference.cpp), batched: the paths of up to kWaveSize samples advance
-// together, one vertex at a time, each of its steps (path_vertex.h) taken for all lanes before the next.
-// Rays go to Embree as packets of kPacketSize lanes; the sampler's draws, the lights' samples and the
+// The wave (wave_tracer.h). Rays go to Embree as packets of kPacketSize lanes; the sampler's draws, the lights' samples and the
 // BRDFs' samples and values are batch calls, whose long chains of arithmetic and cache misses overlap
 // across lanes. Every lane takes the steps the reference takes, in its order, with the same draws, so
 // each lane's radiance is the reference's bit for bit.
-#include "renderer/integrator/path_vertex.h"
 #include "renderer/integrator/shared_draws.h"
+#include "renderer/integrator/wave_tracer.h"
 
 #include <algorithm>
 
@@ -55,10 +53,10 @@ void WaveTracer::resume(const ObjectVertex* vertices, int n, Rgb* radiance) {
     const ObjectVertex& v = vertices[i];
     path_[i] = v.path;
     radiance[i] = v.radiance;
-    point_[i] = v.point;
-    point_[i].brdf = &context_.scene.brdfOf(v.mesh);
-    draws_[i] = v.draws;
-    light_[i] = v.light;
+    point_[i] = v.vertex.point;
+    point_[i].brdf = &context_.scene.brdfOf(v.vertex.mesh);
+    draws_[i] = v.vertex.draws;
+    light_[i] = v.vertex.light;
     resumeSamplers_[i] = v.sampler;
     lanes.add(i);
   }
@@ -111,7 +109,7 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
     sampleLights(depth, shading, shared);
     for (int k = 0; k < shading.n; ++k) {
       const int i = shading.lane[k];
-      if (stopping[i]) stops[i] = ObjectVertex{depth, hit_[i].mesh, path_[i], radiance[i], point_[i], draws_[i], light_[i], samplers[i]};
+      if (stopping[i]) stops[i] = ObjectVertex{depth, path_[i], radiance[i], {hit_[i].mesh, point_[i], draws_[i], light_[i]}, samplers[i]};
     }
     reflectAll(depth, reflecting, rays, alive, radiance);
   }

@@ -11,7 +11,7 @@
 // would have computed itself, bit for bit (tests/sheet_coherence_test.cpp).
 #pragma once
 
-#include "renderer/integrator/path_vertex.h"
+#include "renderer/integrator/wave_tracer.h"
 
 #include <algorithm>
 #include <vector>

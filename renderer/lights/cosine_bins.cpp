@@ -1,6 +1,6 @@
 #include "renderer/lights/cosine_bins.h"
 
-#include "materials/sampling/compact_cdf.h"
+#include "renderer/lights/compact_cdf.h"
 
 #include <glm/geometric.hpp>
 #include <tbb/parallel_for.h>

@@ -1,6 +1,8 @@
 // What the path tracer asks of a light, whatever its kind: a sample toward a shading point, the density
 // of that sample, and the radiance a ray that reaches the light brings. Distant lights (the environment)
-// are reached by rays that leave the scene; surface lights (emissive triangles) by rays that hit them.
+// are reached by rays that leave the scene; surface lights (emissive triangles) by rays that hit them;
+// delta lights (point, spot, directional) by no ray: only their samples find them, so MIS gives those
+// samples weight 1.
 //
 // Adding a light type: one file that defines a Light and a LightFactory for it, and its factory's name in
 // the registration line of light_set.cpp (docs/rendering.md).
@@ -9,6 +11,7 @@
 #include "materials/core/types.h"
 #include "renderer/scene/embree_scene.h"
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -28,10 +31,19 @@ struct Receiver {
 struct LightSample {
   Vec3 wi{0.0};        // unit, from the point toward the light
   Rgb radiance{0.0};   // arriving at the point along −wi if nothing blocks it
-  double pdf = 0.0;    // solid angle at the point; 0: no sample
-  bool distant = true;
+  double pdf = 0.0;    // solid angle at the point; 0: no sample. A delta light's: its choice alone, 1
+  bool distant = true;  // the shadow ray runs to infinity
   Vec3 target{0.0};    // a surface light's point, moved off its surface toward the point by its margin
+  bool delta = false;  // from a light no BSDF sample can hit: radiance is what arrives, not a density
 };
+
+// The sample of a light at one point (point and spot lights) with intensity I seen from `at`: I / r².
+inline LightSample towardPoint(const Receiver& at, const Vec3& position, const Rgb& intensity) {
+  const Vec3 d = position - at.point;
+  const double distance2 = d.x * d.x + d.y * d.y + d.z * d.z;
+  if (!(distance2 > 0.0)) return {};
+  return {d / std::sqrt(distance2), intensity / distance2, 1.0, false, position, true};
+}
 
 class Light {
  public:

@@ -6,12 +6,25 @@ namespace glossy {
 
 // The light types, each defined in its own file under renderer/lights/. Adding a type adds its factory's
 // name to this line.
-LightFactory environmentLight, emissiveTriangles;
-static LightFactory* const kLightTypes[] = {environmentLight, emissiveTriangles};
+LightFactory environmentLight, emissiveTriangles, pointLights, spotLights, directionalLights;
+static LightFactory* const kLightTypes[] = {environmentLight, emissiveTriangles, pointLights, spotLights, directionalLights};
+
+namespace {
+std::vector<LightFactory*>& registeredTypes() {
+  static std::vector<LightFactory*> types;
+  return types;
+}
+}  // namespace
+
+bool registerLightType(LightFactory* type) {
+  registeredTypes().push_back(type);
+  return true;
+}
 
 LightSet::LightSet(const LightSources& sources) {
   std::vector<FoundLight> found;
   for (LightFactory* type : kLightTypes) type(sources, found);
+  for (LightFactory* type : registeredTypes()) type(sources, found);
   surface_.resize(sources.scene.meshes.size());
   std::vector<double> powers;
   for (FoundLight& f : found) {

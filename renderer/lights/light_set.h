@@ -18,6 +18,13 @@ struct ChosenLight {
   explicit operator bool() const { return light != nullptr; }
 };
 
+// Adds a light type to those of light_set.cpp's line, for every LightSet made after: how a program that
+// links the renderer library (a test) brings a type of its own, in one line of the type's own file:
+// `static const bool registered = registerLightType(myLights);`. The renderer's own types are listed in
+// light_set.cpp instead, since a static library drops a file nothing refers to. Not thread-safe: call it
+// before rendering (a static initializer is).
+bool registerLightType(LightFactory* type);
+
 class LightSet {
  public:
   // Every registered light type's lights in the scene (light_set.cpp).

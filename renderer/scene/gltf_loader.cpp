@@ -233,6 +233,8 @@ class GltfReader {
       if (!allFinite({glm::value_ptr(world), 16})) fail(where + ": its transform is not finite");
       if (node.mesh >= 0) addMesh(node.mesh, world, where);
       if (node.camera >= 0) addCamera(node, index, world, where);
+      if (const auto light = node.extensions.find("KHR_lights_punctual"); light != node.extensions.end())
+        addLight(light->second, world, where);
       for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) stack.emplace_back(*c, world);
     }
   }
@@ -252,6 +254,38 @@ class GltfReader {
     }
     if (!(std::abs(glm::dot(axes[0], glm::cross(axes[1], axes[2]))) > 1e-9))
       fail(where + ": the camera's world transform is singular (its axes are coplanar)");
+  }
+
+  // A KHR_lights_punctual light, placed by its node (it shines down the node's −Z), within the bounds the
+  // extension's specification sets.
+  void addLight(const tinygltf::Value& extension, const glm::dmat4& world, const std::string& nodeWhere) {
+    const tinygltf::Value& index = extension.Get("light");
+    if (!index.IsInt()) fail(nodeWhere + ": its KHR_lights_punctual has no light index");
+    const int i = index.GetNumberAsInt();
+    if (i < 0 || size_t(i) >= model_.lights.size()) fail(nodeWhere + ": light " + std::to_string(i) + " does not exist");
+    const tinygltf::Light& l = model_.lights[size_t(i)];
+    SceneLight out{label("light", l.name, i) + " on " + nodeWhere, l.type};
+    const std::string& where = out.name;
+    if (l.type != "point" && l.type != "spot" && l.type != "directional")
+      fail(where + ": type '" + l.type + "' is not point, spot or directional");
+    const std::vector<double> color = l.color.empty() ? std::vector<double>{1.0, 1.0, 1.0} : l.color;
+    if (color.size() != 3 || !allFinite(color) || *std::min_element(color.begin(), color.end()) < 0.0)
+      fail(where + ": color must be three finite values ≥ 0");
+    if (!(l.intensity >= 0.0) || !std::isfinite(l.intensity)) fail(where + ": intensity must be finite and ≥ 0");
+    out.intensity = Rgb(color[0], color[1], color[2]) * l.intensity;
+    if (l.type == "spot") {
+      out.innerConeAngle = l.spot.innerConeAngle;
+      out.outerConeAngle = l.spot.outerConeAngle;
+      if (!(0.0 <= out.innerConeAngle && out.innerConeAngle <= out.outerConeAngle && out.outerConeAngle > 0.0 &&
+            out.outerConeAngle <= kPi / 2.0))
+        fail(where + ": its cone must have 0 ≤ innerConeAngle ≤ outerConeAngle ≤ π/2 (and outerConeAngle > 0)");
+    }
+    if (isSingular(world)) fail(where + ": its node's world transform is singular (a scale of 0 on it or a parent)");
+    out.position = glm::dvec3(world[3]);
+    if (!(std::max({std::abs(out.position.x), std::abs(out.position.y), std::abs(out.position.z)}) <= kMaxSceneCoordinate))
+      fail(where + ": its position is beyond ±1e15 in world space");
+    out.direction = -glm::dvec3(world[2]) / robustLength(glm::dvec3(world[2]));
+    scene_.lights.push_back(std::move(out));
   }
 
   void addCamera(const tinygltf::Node& node, int nodeIndex, const glm::dmat4& world, const std::string& where) {

@@ -16,9 +16,9 @@ namespace glossy {
 
 namespace {
 
-// Required extensions whose absence of support changes nothing the renderer draws: emissive strength is
-// read, and textures (so their transforms) are not used at all.
-constexpr std::array kSupportedRequired = {"KHR_materials_emissive_strength", "KHR_texture_transform"};
+// Required extensions glossy reads (punctual lights, emissive strength) or whose absence of support changes
+// nothing the renderer draws (textures, so their transforms, are not used at all).
+constexpr std::array kSupportedRequired = {"KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform"};
 
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
   throw InputError(printableLine(path.string() + ": " + what));

@@ -47,17 +47,30 @@ struct Camera {
   double xmag = 1.0, ymag = 1.0;  // orthographic: half extents of the view
 };
 
+// A light placed by a node: glTF KHR_lights_punctual's point, spot and directional lights. A light type
+// (renderer/lights/) renders the entries of its `type`.
+struct SceneLight {
+  std::string name;  // "light 'Lamp' on node 'N'", for messages
+  std::string type;  // "point", "spot", "directional"
+  Rgb intensity{0.0};  // color × intensity: candela (point, spot) or lux (directional); docs/rendering.md
+  Vec3 position{0.0};
+  Vec3 direction{0.0, 0.0, -1.0};  // unit, where it shines: its node's −Z
+  double innerConeAngle = 0.0, outerConeAngle = kPi / 4.0;  // spot, radians from direction
+};
+
 struct SceneDescription {
   std::filesystem::path source;
   std::vector<Mesh> meshes;
   std::vector<SceneMaterial> materials;
   std::vector<Camera> cameras;  // in glTF node order; the first is the default
+  std::vector<SceneLight> lights;
 };
 
 // Loads .gltf (external or embedded buffers) or .glb. Throws InputError naming the file and the
 // node/mesh for malformed or degenerate input (no triangles at all, bad indices, positions or cameras that
 // are not finite or beyond kMaxSceneCoordinate, a camera whose transform is singular, a required extension
-// it does not support, a version other than 2.x, a `scene` that does not exist). Skipped with a warning on
+// it does not support, a version other than 2.x, a `scene` that does not exist, a light of another type, with an intensity or color that is negative or not finite,
+// a spot cone outside 0 ≤ inner ≤ outer ≤ π/2, or on a singular transform). Skipped with a warning on
 // stderr, if other geometry remains: primitives that are not TRIANGLES, primitives a singular transform
 // (scale 0) leaves without area. Emissive textures are not read: a material with one emits nothing (warned).
 SceneDescription loadGltf(const std::filesystem::path& path);

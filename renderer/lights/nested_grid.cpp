@@ -1,6 +1,6 @@
-#include "materials/sampling/nested_grid.h"
+#include "renderer/lights/nested_grid.h"
 
-#include "materials/sampling/compact_cdf.h"
+#include "renderer/lights/compact_cdf.h"
 
 #include <cmath>
 #include <stdexcept>
