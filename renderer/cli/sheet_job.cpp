@@ -50,7 +50,7 @@ std::string sheetSettings(const MaterialFile& m, const Stage& stage, const Sheet
          "; spp=" + std::to_string(s.spp) + "; time=" + formatted("%.17g", s.secondsPerPanel) +
          "; targetError=" + formatted("%.17g", s.targetError) + "; size=" + std::to_string(s.width) + "x" +
          std::to_string(s.height) + "; seed=" + std::to_string(s.seed) + "; maxDepth=" + std::to_string(s.maxDepth) +
-         "; lightSamples=" + std::to_string(s.lightSamples) +
+         "; lightSamples=" + std::to_string(s.lightSamples) + "; panels=" + panelList(s.panels) +
          "; half=" + (o.half ? "1" : "0") + "; exposure=" + formatted("%.17g", o.exposure) +
          "; measured=" + (measured ? measured->string() : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
          contentDigest(m.path) + "; version=" + GLOSSY_VERSION + "; format=" + std::to_string(kSheetFormat);
@@ -70,7 +70,7 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       {"glossy:material", m.path.string()},
       {"glossy:materialName", m.name},  // what the report names the material by, whatever the file is called
       {"glossy:fit", std::string("sheet")},
-      {"glossy:measured", sheet.measured()->note},
+      {"glossy:measured", sheet.measured() ? sheet.measured()->note : std::string("none: no measured panel")},
       {"glossy:spp", std::to_string(sheet.spp)},
       {"glossy:secondsPerPanel", float(o.settings.secondsPerPanel)},
       {"glossy:targetError", float(o.settings.targetError)},
