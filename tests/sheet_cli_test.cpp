@@ -15,8 +15,6 @@ namespace glossy::test {
 
 namespace {
 
-const char* const kSupplement[] = {"alum-bronze", "blue-acrylic", "blue-rubber", "chrome", "gold-metallic-paint2", "gold-paint"};
-
 std::vector<std::string> tiny(std::vector<std::string> args) {
   for (const char* a : {"--width", "16", "--height", "16", "--spp", "2"}) args.push_back(a);
   return args;
@@ -33,7 +31,7 @@ std::vector<std::string> channelsOf(const std::filesystem::path& exr) {
 TEST(CliSheet, EverySupplementMaterialGivesTheLayeredExrAndThePngWithNoNonFiniteValue) {
   GLOSSY_REQUIRE_SHARED("merl");
   TempDir tmp;
-  for (const char* name : kSupplement) {
+  for (const std::string& name : supplementMaterials()) {
     const std::filesystem::path exr = tmp / (std::string(name) + ".exr");
     const RunResult r = runGlossy(tiny({"sheet", "--material", (materialsDir() / (std::string(name) + ".toml")).string(),
                                         "--measured", (sharedDir() / "merl" / (std::string(name) + ".binary")).string(), "-o",
@@ -65,7 +63,7 @@ TEST(CliSheet, EverySupplementMaterialGivesTheLayeredExrAndThePngWithNoNonFinite
     EXPECT_EQ(readImageAttribute(exr, "glossy:panel.smooth_E2.box"), "32 0 16 16");
     EXPECT_FALSE(readImageAttribute(exr, "glossy:error.cook_torrance_E2.relativeRmse").empty()) << name;
     // The BRDF-space errors are glossy error's, for every fit panel.
-    if (name == std::string(kSupplement[0])) {
+    if (name == supplementMaterials().front()) {
       const RunResult e = runGlossy({"error", "--material", (materialsDir() / (std::string(name) + ".toml")).string(), "--measured",
                                      (sharedDir() / "merl" / (std::string(name) + ".binary")).string(), "--json"});
       ASSERT_EQ(e.status, 0) << e.err;
