@@ -321,6 +321,11 @@ fresnel = "vh"
   const RunResult r = runGlossy(tiny({"sheet", "--material", (tmp / "vh.toml").string(), "-o", (tmp / "vh.exr").string()}));
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(readImageAttribute(tmp / "vh.exr", "glossy:smoothFresnel"), "vh");
+  // glossy render records the fit's choice the same way.
+  const RunResult image = runGlossy({"render", "--material", (tmp / "vh.toml").string(), "--fit", "smooth:E2", "--width", "8",
+                                     "--height", "8", "--spp", "1", "-o", (tmp / "render.exr").string()});
+  ASSERT_EQ(image.status, 0) << image.err;
+  EXPECT_EQ(readImageAttribute(tmp / "render.exr", "glossy:smoothFresnel"), "vh");
 }
 
 TEST(CliSheet, TimeBudgetRendersProgressively) {

@@ -119,8 +119,9 @@ py::array_t<float> renderArray(const py::kwargs& a) {
   if (!brdf.is_none()) {
     if (!py::isinstance<PyBrdf>(brdf)) throw InputError("brdf: expected a glossy.Brdf");
     const PyBrdf& b = brdf.cast<const PyBrdf&>();
-    job.brdf = BrdfChoice{b.brdf, b.description, b.model};
-    if (b.model == "smooth") job.brdf->smoothFresnel = b.params.choice("fresnel", Smooth::kParams);
+    Fit fitted;  // its choices go into the metadata, as a fit's from a file do
+    fitted.id.model = b.model, fitted.params = b.params;
+    job.brdf = BrdfChoice{b.brdf, b.description, b.model, fitted};
   }
   RenderSettings& s = job.settings;
   std::tie(s.width, s.height) = sizeOf(get("size"), 512, 1, 1 << 15);
