@@ -66,14 +66,11 @@ struct MeasuredCase {
 };
 void PrintTo(const MeasuredCase& c, std::ostream* os) { *os << c.testName(); }
 
-const char* const kSharedTables[] = {"alum-bronze", "blue-acrylic", "blue-rubber", "chrome", "gold-metallic-paint2",
-                                     "gold-paint"};
-
 std::vector<MeasuredCase> measuredFamily() {
   std::vector<MeasuredCase> all;
   for (const auto& [key, t] : syntheticTables())
     for (double theta : kViewAngles) all.push_back({key, theta});
-  for (const char* name : kSharedTables)
+  for (const std::string& name : supplementMaterials())  // shared/merl holds their tables
     for (double theta : kViewAngles) all.push_back({std::string("shared:") + name, theta});
   return all;
 }

@@ -17,8 +17,6 @@ namespace glossy::test {
 
 namespace {
 
-const char* const kSupplement[] = {"alum-bronze", "blue-acrylic", "blue-rubber", "chrome", "gold-metallic-paint2", "gold-paint"};
-
 std::filesystem::path embedded(const std::string& name) { return materialsDir() / (name + ".nbrdf"); }
 
 std::string numbers(const std::vector<double>& v) {
@@ -171,7 +169,7 @@ TEST(NeuralBrdf, EmbeddedNetworksTabulateToSharedMerlsTables) {
   // The stored (unscaled) float of a value; value() multiplied it by the scale in double, which dividing
   // undoes to far better than float rounding.
   const auto stored = [](double value, int c) { return std::bit_cast<int32_t>(float(value / MerlTable::kScale[c])); };
-  for (const char* name : kSupplement) {
+  for (const std::string& name : supplementMaterials()) {
     const MerlTable table = MerlTable::load(sharedDir() / "merl" / (std::string(name) + ".binary"));
     const MerlTable tabulated = NeuralBrdf::load(embedded(name)).tabulate();
     size_t valid = 0, unequal = 0, apart = 0;

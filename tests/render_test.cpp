@@ -229,8 +229,8 @@ TEST(Render, SameSeedSameImageWhateverTheThreadCount) {
 }
 
 TEST(Render, NoNonFiniteValueForAnyFitOfTheSixSupplementMaterials) {
-  for (const char* name : {"alum-bronze", "blue-acrylic", "blue-rubber", "chrome", "gold-metallic-paint2", "gold-paint"}) {
-    const MaterialFile m = loadMaterialFile(materialsDir() / (std::string(name) + ".toml"));
+  for (const std::string& name : supplementMaterials()) {
+    const MaterialFile m = loadMaterialFile(materialsDir() / (name + ".toml"));
     for (const Fit& fit : m.fits) {
       Fixture fx;
       fx.environment = Environment::makeDefault();

@@ -15,8 +15,6 @@ namespace glossy::test {
 
 namespace {
 
-const char* const kSupplement[] = {"alum-bronze", "blue-acrylic", "blue-rubber", "chrome", "gold-metallic-paint2", "gold-paint"};
-
 std::vector<std::string> tiny(std::vector<std::string> args) {
   for (const char* a : {"--width", "16", "--height", "16", "--spp", "2"}) args.push_back(a);
   return args;
@@ -33,7 +31,7 @@ std::vector<std::string> channelsOf(const std::filesystem::path& exr) {
 TEST(CliSheet, EverySupplementMaterialGivesTheLayeredExrAndThePngWithNoNonFiniteValue) {
   GLOSSY_REQUIRE_SHARED("merl");
   TempDir tmp;
-  for (const char* name : kSupplement) {
+  for (const std::string& name : supplementMaterials()) {
     const std::filesystem::path exr = tmp / (std::string(name) + ".exr");
     const RunResult r = runGlossy(tiny({"sheet", "--material", (materialsDir() / (std::string(name) + ".toml")).string(),
                                         "--measured", (sharedDir() / "merl" / (std::string(name) + ".binary")).string(), "-o",
@@ -65,7 +63,7 @@ TEST(CliSheet, EverySupplementMaterialGivesTheLayeredExrAndThePngWithNoNonFinite
     EXPECT_EQ(readImageAttribute(exr, "glossy:panel.smooth_E2.box"), "32 0 16 16");
     EXPECT_FALSE(readImageAttribute(exr, "glossy:error.cook_torrance_E2.relativeRmse").empty()) << name;
     // The BRDF-space errors are glossy error's, for every fit panel.
-    if (name == std::string(kSupplement[0])) {
+    if (name == supplementMaterials().front()) {
       const RunResult e = runGlossy({"error", "--material", (materialsDir() / (std::string(name) + ".toml")).string(), "--measured",
                                      (sharedDir() / "merl" / (std::string(name) + ".binary")).string(), "--json"});
       ASSERT_EQ(e.status, 0) << e.err;
@@ -323,6 +321,11 @@ fresnel = "vh"
   const RunResult r = runGlossy(tiny({"sheet", "--material", (tmp / "vh.toml").string(), "-o", (tmp / "vh.exr").string()}));
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(readImageAttribute(tmp / "vh.exr", "glossy:smoothFresnel"), "vh");
+  // glossy render records the fit's choice the same way.
+  const RunResult image = runGlossy({"render", "--material", (tmp / "vh.toml").string(), "--fit", "smooth:E2", "--width", "8",
+                                     "--height", "8", "--spp", "1", "-o", (tmp / "render.exr").string()});
+  ASSERT_EQ(image.status, 0) << image.err;
+  EXPECT_EQ(readImageAttribute(tmp / "render.exr", "glossy:smoothFresnel"), "vh");
 }
 
 TEST(CliSheet, TimeBudgetRendersProgressively) {
@@ -406,6 +409,31 @@ TEST(CliSheets, RendersEachMaterialOnceResumesAndShards) {
   EXPECT_NE(r.err.find("[3/3]"), std::string::npos) << "overall progress";
 }
 
+// --panels chooses the panels and their order: two fits and no measured panel give those two layers only,
+// labelled from the registry, in the EXR, its metadata and a PNG two panels wide.
+TEST(CliSheet, PanelsChooseThePanelsAndTheirOrder) {
+  TempDir tmp;
+  const RunResult r = runGlossy(tiny({"sheet", "--material", (materialsDir() / "chrome.toml").string(), "--panels",
+                                      "microfacet:E2,cook-torrance:E1", "-o", (tmp / "two.exr").string()}));
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::vector<std::string> channels = channelsOf(tmp / "two.exr");
+  std::sort(channels.begin(), channels.end());
+  EXPECT_EQ(channels, (std::vector<std::string>{"B", "G", "R", "cook_torrance_E1.B", "cook_torrance_E1.G", "cook_torrance_E1.R",
+                                                "microfacet_E2.B", "microfacet_E2.G", "microfacet_E2.R"}));
+  const auto attr = [&](const std::string& name) { return readImageAttribute(tmp / "two.exr", name); };
+  EXPECT_EQ(attr("glossy:panels"), "microfacet_E2,cook_torrance_E1");
+  EXPECT_EQ(attr("glossy:panel.microfacet_E2.label"), "Microfacet E2");
+  EXPECT_EQ(attr("glossy:panel.cook_torrance_E1.label"), "CT E1");
+  EXPECT_EQ(attr("glossy:panel.cook_torrance_E1.box"), "16 0 16 16");
+  EXPECT_EQ(attr("glossy:panel.cook_torrance_E1.colour"), "#0072b2");
+  EXPECT_NE(attr("glossy:settings").find("; panels=microfacet:E2,cook-torrance:E1;"), std::string::npos) << attr("glossy:settings");
+  const auto png = OIIO::ImageInput::open((tmp / "two.png").string());
+  ASSERT_TRUE(png);
+  EXPECT_EQ(png->spec().width, 32);
+  EXPECT_NE(r.out.find("CT E1"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("Smooth E2"), std::string::npos) << r.out;
+}
+
 TEST(CliSheet, BadInputExitsTwoWithOneLine) {
   TempDir tmp;
   expectOneLineError(runGlossy({"sheet", "--material", (tmp / "absent.toml").string(), "-o", (tmp / "x.exr").string()}),
@@ -420,6 +448,21 @@ TEST(CliSheet, BadInputExitsTwoWithOneLine) {
       expectOneLineError(runGlossy({"sheet", "--material", (materialsDir() / "chrome.toml").string(), option, bad, "-o",
                                     (tmp / "x.exr").string()}),
                          option);
+  // Bad --panels stop both commands before any work, naming the option and the value.
+  for (const char* command : {"sheet", "sheets"})
+    for (const auto& [bad, named] : std::vector<std::pair<std::string, std::string>>{
+             {"", "--panels"}, {"bogus:E2", "bogus"}, {"microfacet:E3", "E3"}, {"microfacet", "microfacet"},
+             {"measured,measured", "'measured' is named twice"}, {"smooth:E2,microfacet:E1,smooth:E2", "'smooth:E2' is named twice"},
+             {"microfacet:E2,,smooth:E2", "empty panel"}, {"microfacet:E2,", "empty panel"}}) {
+      const bool one = std::string(command) == "sheet";
+      std::vector<std::string> args = {command, (materialsDir() / "chrome.toml").string(), "--panels", bad, "-o",
+                                       (tmp / (one ? "x.exr" : "out")).string()};
+      if (one) args.insert(args.begin() + 1, "--material");
+      const RunResult r = runGlossy(args);
+      expectOneLineError(r, "--panels");
+      EXPECT_NE(r.err.find(named), std::string::npos) << command << " --panels '" << bad << "': " << r.err;
+    }
+  EXPECT_FALSE(std::filesystem::exists(tmp / "out"));
   EXPECT_FALSE(std::filesystem::exists(tmp / "x.exr"));
 }
 

@@ -17,10 +17,8 @@ namespace {
 // Ashikhmin-Shirley E1: caustics through a near-mirror), and halves of a sixteenth miss the rare bright
 // paths the reference catches often enough to fail the block test, unbiased as they are.
 constexpr int kSize = 64, kReferenceSpp = 2048, kHalfSpp = 512;
-const std::vector<std::string> kMaterials = {"alum-bronze", "blue-acrylic", "blue-rubber", "chrome", "gold-metallic-paint2",
-                                             "gold-paint"};
 
-double alpha() { return sidakAlpha(0.01, int(kMaterials.size() * sheetPanels().size())); }
+double alpha() { return sidakAlpha(0.01, int(supplementMaterials().size() * sheetPanels().size())); }
 
 // The reference's setting: the preview scene, its camera, the built-in sky, the default depth.
 struct Stage {
@@ -59,7 +57,7 @@ class SheetRegression : public ::testing::TestWithParam<std::string> {};
 }  // namespace
 
 TEST(SheetReference, IsTheSettingTheTestsAssume) {
-  for (const std::string& name : kMaterials) {
+  for (const std::string& name : supplementMaterials()) {
     ASSERT_TRUE(std::filesystem::exists(referencePath(name))) << "run scripts/make-reference-sheets";
     EXPECT_EQ(readImageAttribute(referencePath(name), "glossy:spp"), std::to_string(kReferenceSpp)) << name;
     EXPECT_EQ(readImageAttribute(referencePath(name), "glossy:panelSize"), "64x64") << name;
@@ -93,7 +91,7 @@ TEST_P(SheetRegression, MeasuredPanelMatchesTheReference) {
   EXPECT_TRUE(c.passed) << name << " Measured: " << c.message;
 }
 
-INSTANTIATE_TEST_SUITE_P(Supplement, SheetRegression, ::testing::ValuesIn(kMaterials),
+INSTANTIATE_TEST_SUITE_P(Supplement, SheetRegression, ::testing::ValuesIn(supplementMaterials()),
                          [](const auto& info) {
                            std::string s = info.param;
                            for (char& c : s)

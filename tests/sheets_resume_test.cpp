@@ -78,6 +78,24 @@ TEST(CliSheetsResume, ASheetAtOtherSettingsOrOfAnEditedMaterialIsRenderedAgain) 
   EXPECT_TRUE(mentions(r, "chrome: complete, skipped")) << r.err;
 }
 
+// Sheets of other panels are not trusted, even when they have as many (the PNG's size matches) and the
+// layers this run asks for.
+TEST(CliSheetsResume, ASheetOfOtherPanelsIsRenderedAgain) {
+  Batch b;
+  ASSERT_EQ(b.run({"--panels", "measured,microfacet:E2,cook-torrance:E1"}).status, 0);
+  RunResult r = b.run({"--panels", "microfacet:E2,measured,cook-torrance:E1"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(mentions(r, "chrome: made with other settings")) << r.err;
+  EXPECT_EQ(readImageAttribute(b.out("chrome.exr"), "glossy:panels"), "microfacet_E2,measured,cook_torrance_E1");
+  r = b.run({"--panels", "microfacet:E2,measured,cook-torrance:E1"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(mentions(r, "chrome: complete, skipped")) << r.err;
+  r = b.run();  // the default grid: seven panels
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(mentions(r, "2 sheets rendered")) << r.err;
+  EXPECT_NO_THROW(readImageLayer(b.out("chrome.exr"), "smooth_E2"));
+}
+
 TEST(CliSheetsResume, AFolderInTheWayOrTwoFilesOfOneNameStopBeforeRendering) {
   Batch b;
   std::filesystem::create_directories(b.out("chrome.exr"));

@@ -5,7 +5,7 @@
 #include "materials/nbrdf/neural_brdf.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/command.h"
-#include "renderer/sheet/sheet.h"
+#include "renderer/sheet/comparison_grid.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -53,12 +53,12 @@ RenderedImage renderImage(const RenderJob& job) {
       {"glossy:brdfSampling", job.brdfSampling},
       {"glossy:scene", scenePath},
       {"glossy:env", environment.description()},
-      {"glossy:smoothFresnel", binding.smoothFresnel},
       {"glossy:conventions", modelConventions()},
       {"glossy:droppedSamples", int(std::min<uint64_t>(out.stats.droppedSamples, uint64_t(INT32_MAX)))},
       {"glossy:renderSeconds", float(out.stats.seconds)},
       {"glossy:version", std::string(GLOSSY_VERSION)},
   };
+  for (const auto& [key, value] : choiceAttributes(binding.fits)) out.metadata.push_back({key, value});
   if (measuredInvalidBins >= 0) {
     out.metadata.push_back({"glossy:measuredInvalidBins", measuredInvalidBins});
     out.metadata.push_back({"glossy:measured", measuredLabelText});

@@ -1,4 +1,4 @@
-// glossy sheet / glossy sheets: the supplement's comparison grid for one material, or for many
+// glossy sheet / glossy sheets: a comparison grid (by default the supplement's) for one material, or for many
 // (shared/spec/interfaces.md; renderer/sheet/sheet.h has the layout and the error figures).
 #include "materials/core/input_error.h"
 #include "materials/core/notes.h"
@@ -29,6 +29,8 @@ namespace {
 struct SheetOptions : SheetJob {
   std::string material, measured, output = "out/sheet.exr";
   CLI::Option* spp = nullptr;
+  std::string panels;
+  CLI::Option* panelsOption = nullptr;
   // glossy sheets
   std::vector<std::string> inputs;
   std::string outDir = "out/sheets", shard;
@@ -70,13 +72,17 @@ void addRenderOptions(CLI::App* app, SheetOptions& o) {
   app->add_option("--exposure", o.exposure, "Exposure of the PNG preview in stops (the EXR stays linear)")
       ->check(finiteIn(-64.0, 64.0))
       ->capture_default_str();
+  o.panelsOption = app->add_option("--panels", o.panels,
+                                   "The panels, a comma list of measured and MODEL:METRIC fits of any model glossy knows, "
+                                   "in order; default: " + panelList(sheetPanels()));
   app->add_flag("--half", o.half, "Write half-float EXR (default: float); values above 65504 are clipped to it, and counted on stderr");
 }
 
 // --time renders until its budget is spent, --target-error until it is met or kTargetErrorSppCap; --spp caps
-// either when given. Their passes each print a line.
+// either when given. Their passes each print a line. --panels is read here, before any work.
 SheetOptions withPassLimits(const SheetOptions& o) {
   SheetOptions out = o;
+  if (o.panelsOption->count() > 0) out.settings.panels = parsePanels(o.panels, "--panels");
   applyPassLimits(out.settings, o.spp->count() > 0);
   out.settings.passLines = true;
   return out;

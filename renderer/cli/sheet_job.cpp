@@ -50,7 +50,7 @@ std::string sheetSettings(const MaterialFile& m, const Stage& stage, const Sheet
          "; spp=" + std::to_string(s.spp) + "; time=" + formatted("%.17g", s.secondsPerPanel) +
          "; targetError=" + formatted("%.17g", s.targetError) + "; size=" + std::to_string(s.width) + "x" +
          std::to_string(s.height) + "; seed=" + std::to_string(s.seed) + "; maxDepth=" + std::to_string(s.maxDepth) +
-         "; lightSamples=" + std::to_string(s.lightSamples) +
+         "; lightSamples=" + std::to_string(s.lightSamples) + "; panels=" + panelList(s.panels) +
          "; half=" + (o.half ? "1" : "0") + "; exposure=" + formatted("%.17g", o.exposure) +
          "; measured=" + (measured ? measured->string() : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
          contentDigest(m.path) + "; version=" + GLOSSY_VERSION + "; format=" + std::to_string(kSheetFormat);
@@ -60,17 +60,14 @@ namespace {
 
 std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& stage, const SheetJob& o, const Sheet& sheet,
                                           double seconds, const std::string& explicitMeasured) {
-  std::string smoothFresnel;  // as the file's smooth fits say, like render's for its binding
-  for (const PanelRender& p : sheet.panels) {
-    const Fit* fit = p.empty || p.panel.fit.empty() ? nullptr : m.find(FitId::parse(p.panel.fit, m.path.string()));
-    const std::string f = fit ? smoothFresnelOf(*fit) : "";
-    if (!f.empty() && smoothFresnel.find(f) == std::string::npos) smoothFresnel.append(smoothFresnel.empty() ? "" : ", ").append(f);
-  }
-  return {
+  std::vector<Fit> fits;  // their choices are recorded as render's are for its binding
+  for (const PanelRender& p : sheet.panels)
+    if (const Fit* fit = p.empty || p.panel.fit.empty() ? nullptr : m.find(FitId::parse(p.panel.fit, m.path.string()))) fits.push_back(*fit);
+  std::vector<ImageAttribute> metadata = {
       {"glossy:material", m.path.string()},
       {"glossy:materialName", m.name},  // what the report names the material by, whatever the file is called
       {"glossy:fit", std::string("sheet")},
-      {"glossy:measured", sheet.measured()->note},
+      {"glossy:measured", sheet.measured() ? sheet.measured()->note : std::string("none: no measured panel")},
       {"glossy:spp", std::to_string(sheet.spp)},
       {"glossy:secondsPerPanel", float(o.settings.secondsPerPanel)},
       {"glossy:targetError", float(o.settings.targetError)},
@@ -81,7 +78,6 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       {"glossy:lightSamples", o.settings.lightSamples},
       {"glossy:scene", stage.description.source.string()},
       {"glossy:env", stage.environment.description()},
-      {"glossy:smoothFresnel", smoothFresnel.empty() ? std::string("projected") : smoothFresnel},
       {"glossy:conventions", modelConventions()},
       {"glossy:pngExposure", float(o.exposure)},
       {"glossy:droppedSamples", int(std::min<uint64_t>(sheet.droppedSamples, INT32_MAX))},
@@ -89,6 +85,8 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       {"glossy:version", std::string(GLOSSY_VERSION)},
       {kSettingsAttribute, sheetSettings(m, stage, o, explicitMeasured)},
   };
+  for (const auto& [key, value] : choiceAttributes(fits)) metadata.push_back({key, value});
+  return metadata;
 }
 
 }  // namespace

@@ -46,7 +46,7 @@ std::string whyIncomplete(const std::filesystem::path& exr, const std::string& s
     const std::string made = readImageAttribute(exr, kSettingsAttribute);
     if (made != settings) return made.empty() ? "EXR without glossy:settings" : "made with other settings";
     // Reading every layer's pixels also catches a file cut short after its header.
-    for (const SheetPanel& p : sheetPanels()) readImageLayer(exr, p.layer);
+    for (const SheetPanel& p : sheet.panels) readImageLayer(exr, p.layer);
   } catch (const std::exception& e) {
     return std::string("unreadable EXR (") + e.what() + ")";
   }

@@ -1,5 +1,5 @@
-// What glossy plot draws: a material's BRDFs in the sheet's order and colours (renderer/sheet/sheet.h,
-// sheetPanels(): Measured, then the six fits of the supplement's grid, then any other fit the file holds),
+// What glossy plot draws: a material's BRDFs in the sheet's order and colours (renderer/sheet/comparison_grid.h:
+// Measured, then the six fits of the supplement's grid, then any other fit the file holds),
 // each present or absent with the reason, and the one channel plotted (R, G, B or luminance). Every figure
 // evaluates through value(), so its curves, its CSV and `glossy eval` see the same numbers.
 #pragma once
@@ -8,7 +8,7 @@
 #include "materials/models/brdf.h"
 #include "materials/params/material_file.h"
 #include "renderer/plot/chart.h"
-#include "renderer/sheet/sheet.h"
+#include "renderer/sheet/comparison_grid.h"
 
 #include <memory>
 #include <optional>

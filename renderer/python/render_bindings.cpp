@@ -119,8 +119,9 @@ py::array_t<float> renderArray(const py::kwargs& a) {
   if (!brdf.is_none()) {
     if (!py::isinstance<PyBrdf>(brdf)) throw InputError("brdf: expected a glossy.Brdf");
     const PyBrdf& b = brdf.cast<const PyBrdf&>();
-    job.brdf = BrdfChoice{b.brdf, b.description, b.model};
-    if (b.model == "smooth") job.brdf->smoothFresnel = b.params.choice("fresnel", Smooth::kParams);
+    Fit fitted;  // its choices go into the metadata, as a fit's from a file do
+    fitted.id.model = b.model, fitted.params = b.params;
+    job.brdf = BrdfChoice{b.brdf, b.description, b.model, fitted};
   }
   RenderSettings& s = job.settings;
   std::tie(s.width, s.height) = sizeOf(get("size"), 512, 1, 1 << 15);
@@ -195,7 +196,7 @@ py::dict panelFigures(const Sheet& sheet, const PanelRender& p) {
 std::shared_ptr<PySheet> renderSheetOf(const py::kwargs& a) {
   checkKeywords("sheet", a, {"material", "measured", "merl_dir", "scene", "camera", "env", "env_constant", "env_rotate", "spp",
                              "size", "time", "target_error", "seed", "threads", "max_depth", "light_samples", "exposure", "half",
-                             "progress", "output"});
+                             "panels", "progress", "output"});
   auto get = [&](const char* key) { return given(a, key).value_or(py::none()); };
   auto sheet = std::make_shared<PySheet>();
   cli::SheetJob& job = sheet->job;
@@ -221,6 +222,8 @@ std::shared_ptr<PySheet> renderSheetOf(const py::kwargs& a) {
   if (auto v = integerArg(a, "light_samples", 1, kMaxLightSamples)) s.lightSamples = *v;
   if (auto v = realArg(a, "exposure", -64.0, 64.0)) job.exposure = *v;
   job.half = flagArg(a, "half");
+  if (const py::object panels = get("panels"); !panels.is_none())
+    s.panels = parsePanels(castOr<std::string>(panels, "panels: must be a string, a comma list of measured and MODEL:METRIC"), "panels");
   s.progress = false;
   const std::string output = optionalPath(get("output"));
   if (!output.empty()) cli::checkOutputFile(output, "output", {".exr"}, cli::Folder::Create);
@@ -260,8 +263,8 @@ raises KeyboardInterrupt; an exception raised by progress stops it too. output: 
 )doc");
 
   py::class_<PySheet, std::shared_ptr<PySheet>>(m, "Sheet", R"doc(
-A material's comparison sheet (glossy.sheet()): the panels Measured | Microfacet E2 | Smooth E2 | AS E1 |
-AS E2 | CT E1 | CT E2 side by side, and each model's error figures against the measured panel.
+A material's comparison sheet (glossy.sheet()): its panels side by side (by default Measured | Microfacet E2 |
+Smooth E2 | AS E1 | AS E2 | CT E1 | CT E2), and each model's error figures against the measured panel.
 )doc")
       .def_property_readonly("image", [](const py::object& self) {
              const Sheet& s = self.cast<const PySheet&>().made.sheet;
@@ -324,15 +327,34 @@ with its interval (flip, flip_ci). A figure the sheet cannot give is None.
   m.def("sheet", [](const py::kwargs& a) { return guarded([&] { return renderSheetOf(a); }); }, R"doc(
 sheet(*, material, measured=None, merl_dir=None, scene=None, camera=None, env=None, env_constant=None,
       env_rotate=0.0, spp=None, size=(256, 256), time=None, target_error=None, seed=0, threads=0,
-      max_depth=8, light_samples=4, exposure=0.0, half=False, progress=None, output=None) -> glossy.Sheet
+      max_depth=8, light_samples=4, exposure=0.0, half=False, panels=None, progress=None,
+      output=None) -> glossy.Sheet
 
 Renders a material's comparison sheet as `glossy sheet` does: every panel from the same samples, each
 model's error figures with 95 % intervals. spp (default 64) is split among 4 independent replicates;
 time (seconds per panel) or target_error (the widest interval's half-width) render in passes until met;
 target_error alone stops at 4096 spp (spp sets another cap), with a GlossyWarning when it stops short.
 measured: the data for the measured panel (default: the one the material names, then the network
-embedded beside it). progress(done, total) and Ctrl-C as in render(); total is 0 while unknown (time,
+embedded beside it). panels: "measured,MODEL:METRIC,..." as `glossy sheet --panels` (default: the
+supplement's grid, glossy.comparison_grid()). progress(done, total) and Ctrl-C as in render(); total is 0 while unknown (time,
 target_error). output: also write the EXR and PNG (or call Sheet.save later).
+)doc");
+
+  m.def("comparison_grid", [] {
+          py::list rows;
+          const auto row = [&](const SheetPanel& p, bool inGrid) {
+            py::dict d;
+            d["fit"] = p.fit.empty() ? std::string("measured") : p.fit;
+            d["layer"] = p.layer, d["label"] = p.label, d["colour"] = p.colour, d["default"] = inGrid;
+            rows.append(d);
+          };
+          row(SheetPanel::measured(), true);
+          for (const GridFit& g : gridFits()) row(SheetPanel::ofFit(FitId::parse(g.fit, "the sheet grid")), g.inGrid);
+          return rows;
+        }, R"doc(
+The comparison grid's table, as sheets, plots and the report use it: a dict per panel with its fit
+('measured' or MODEL:METRIC), EXR layer, label, colour ('#rrggbb') and whether the default grid shows it.
+A fit of a model the table leaves out is still a panel (sheet(panels=...)), in grey.
 )doc");
 
   m.def("read_exr", [](const py::object& path, const std::string& layer) {

@@ -7,7 +7,7 @@
 #include "renderer/image/image_input.h"
 #include "renderer/report/html_text.h"
 #include "renderer/report/input_folder.h"
-#include "renderer/sheet/sheet.h"
+#include "renderer/sheet/comparison_grid.h"
 
 #include <OpenImageIO/imageio.h>
 

@@ -1,7 +1,10 @@
 #include "renderer/scene/material_binding.h"
 
 #include "materials/core/input_error.h"
+#include "materials/models/registry.h"
 #include "renderer/util/data_dir.h"
+
+#include <cctype>
 
 namespace glossy {
 
@@ -22,18 +25,30 @@ BrdfChoice brdfFromMaterialFile(const std::filesystem::path& file, const std::st
   const FitId id = FitId::parse(fitText, file.string() + ": fit");
   const Fit* fit = m.find(id);
   if (!fit) throw InputError(file.string() + ": has no " + id.str() + " fit");
-  BrdfChoice c{makeBrdf(*fit), file.string(), id.str()};
-  if (id.model == Smooth::kName) c.smoothFresnel = smoothFresnelOf(*fit);
-  return c;
+  return {makeBrdf(*fit), file.string(), id.str(), *fit};
 }
 
-std::string smoothFresnelOf(const Fit& fit) {
-  return fit.id.model == Smooth::kName ? fit.params.choice("fresnel", Smooth::kParams) : "";
+std::vector<std::pair<std::string, std::string>> choiceAttributes(const std::vector<Fit>& fits) {
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const ModelInfo& model : analyticModels())
+    for (const ParamSpec& spec : model.params) {
+      if (spec.kind != ParamKind::Choice) continue;
+      std::string key = "glossy:";
+      for (size_t i = 0; i < model.name.size(); ++i)  // cook-torrance → cookTorrance
+        if (model.name[i] != '-') key += i > 0 && model.name[i - 1] == '-' ? char(std::toupper(model.name[i])) : model.name[i];
+      key += char(std::toupper(spec.key[0])) + std::string(spec.key.substr(1));
+      std::string values;
+      for (const Fit& f : fits)
+        if (const std::string v = f.id.model == model.name ? f.params.choice(spec.key, model.params) : ""; !v.empty() && values.find(v) == std::string::npos)
+          values.append(values.empty() ? "" : ", ").append(v);
+      out.push_back({key, values.empty() ? std::string(spec.choices.front()) : values});
+    }
+  return out;
 }
 
 MaterialBinding bindMaterials(const SceneDescription& scene, const std::optional<BrdfChoice>& override) {
   MaterialBinding b;
-  if (override) b.smoothFresnel = override->smoothFresnel;
+  if (override && override->fitted) b.fits.push_back(*override->fitted);
   for (const SceneMaterial& m : scene.materials) {
     if (m.isEmissive()) {
       b.brdfs.push_back(Lambertian{Rgb(0.0)});
@@ -50,7 +65,7 @@ MaterialBinding bindMaterials(const SceneDescription& scene, const std::optional
       b.brdfs.push_back(c.brdf);
       b.bindings.push_back(c.material + " " + c.fit);
       b.commonFit = b.bindings.size() == 1 || b.commonFit == c.fit ? c.fit : "";
-      if (c.fit.rfind("smooth:", 0) == 0) b.smoothFresnel = c.smoothFresnel;
+      b.fits.push_back(*c.fitted);
     } else {
       b.brdfs.push_back(Lambertian{m.baseColor});
     }

@@ -16,19 +16,21 @@ struct BrdfChoice {
   Brdf brdf;
   std::string material;  // file it came from, for metadata
   std::string fit;       // MODEL:METRIC or "measured"
-  std::string smoothFresnel = "projected";
+  std::optional<Fit> fitted;  // the parameters it was made from, if any: their choices go into the metadata
 };
 
 // Loads `fitText` (MODEL:METRIC) of a parameter file; InputError naming the file if absent or bad.
 BrdfChoice brdfFromMaterialFile(const std::filesystem::path& file, const std::string& fitText);
-// The Fresnel angle a smooth fit renders with, "projected" or "vh", as metadata records it; "" for other models.
-std::string smoothFresnelOf(const Fit& fit);
+// The choices the fits make (ParamKind::Choice parameters, such as smooth's fresnel), as image metadata
+// records them: for each model that declares one, "glossy:<model><Key>" (glossy:smoothFresnel) → the values
+// the fits of that model take, ", "-joined, or the choice's default when none of them is of that model.
+std::vector<std::pair<std::string, std::string>> choiceAttributes(const std::vector<Fit>& fits);
 
 struct MaterialBinding {
   std::vector<Brdf> brdfs;            // per SceneDescription::materials entry
   std::vector<std::string> bindings;  // "file fit" of each extras.glossy binding used
   std::string commonFit;              // the fit every extras.glossy binding names, if they agree; else ""
-  std::string smoothFresnel = "projected";
+  std::vector<Fit> fits;              // the fits rendered: the override's, else the bindings'
 };
 
 // Emissive materials keep a black Lambertian (they reflect nothing). A binding's material path is looked

@@ -2,7 +2,6 @@
 
 #include "materials/core/text.h"
 #include "materials/fitting/metric.h"
-#include "materials/models/registry.h"
 #include "renderer/camera/camera_rays.h"
 #include "renderer/image/colour_maps.h"
 #include "renderer/image/flip.h"
@@ -117,35 +116,6 @@ std::string paramsText(const Fit& fit) {
 }
 
 }  // namespace
-
-SheetPanel SheetPanel::measured() { return {"measured", "Measured", "", "#000000"}; }
-
-SheetPanel SheetPanel::ofFit(const FitId& fit) {
-  const ModelInfo* model = findModel(fit.model);
-  std::string layer = fit.model + "_" + fit.metric + (fit.by.empty() ? "" : "_" + fit.by);
-  std::replace(layer.begin(), layer.end(), '-', '_');
-  // The grid's six first, then the two fits a file may have beyond it.
-  static const std::pair<const char*, const char*> colours[] = {
-      {"microfacet:E2", "#e69f00"},        {"smooth:E2", "#56b4e9"},        {"ashikhmin-shirley:E1", "#009e73"},
-      {"ashikhmin-shirley:E2", "#cc79a7"}, {"cook-torrance:E1", "#0072b2"}, {"cook-torrance:E2", "#d55e00"},
-      {"microfacet:E1", "#f0e442"},        {"smooth:E1", "#999999"}};
-  std::string colour = "#999999";
-  for (const auto& [name, c] : colours)
-    if (FitId{fit.model, fit.metric}.str() == name) colour = c;
-  // The paper's label for a published fit; glossy's own fit says so wherever it is shown.
-  return {layer, std::string(model ? model->shortLabel : fit.model) + " " + fit.metric + (fit.isGlossys() ? " (glossy fit)" : ""),
-          fit.str(), colour};
-}
-
-std::span<const SheetPanel> sheetPanels() {
-  static const std::vector<SheetPanel> panels = [] {
-    std::vector<SheetPanel> grid = {SheetPanel::measured()};
-    for (const char* fit : {"microfacet:E2", "smooth:E2", "ashikhmin-shirley:E1", "ashikhmin-shirley:E2", "cook-torrance:E1", "cook-torrance:E2"})
-      grid.push_back(SheetPanel::ofFit(FitId::parse(fit, "the sheet grid")));
-    return grid;
-  }();
-  return panels;
-}
 
 const PanelRender* Sheet::measured() const {
   for (const PanelRender& p : panels)

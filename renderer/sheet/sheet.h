@@ -1,5 +1,5 @@
-// A material sheet: the supplement's comparison grid for one material —
-//   Measured | Microfacet E2 | Smooth E2 | AS E1 | AS E2 | CT E1 | CT E2
+// A material sheet: a comparison grid for one material (comparison_grid.h: by default the supplement's,
+//   Measured | Microfacet E2 | Smooth E2 | AS E1 | AS E2 | CT E1 | CT E2)
 // — every panel rendered with the same scene, camera, environment, seed and samples, and how close each
 // analytic panel comes to the measured one over the object's pixels: the relative RMSE with the render
 // noise taken out and the luminance ratio, each with a 95 % interval, and the closest model when the
@@ -16,29 +16,16 @@
 #include "materials/params/material_file.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/sheet/comparison.h"
+#include "renderer/sheet/comparison_grid.h"
 #include "renderer/sheet/error_maps.h"
 
 #include <filesystem>
 #include <memory>
-#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace glossy {
-
-struct SheetPanel {
-  std::string layer;  // EXR layer: "measured", "microfacet_E2", ...
-  std::string label;  // for people: "Measured", "Microfacet E2", ...
-  std::string fit;    // MODEL:METRIC; empty for the measured panel
-  std::string colour; // "#rrggbb": the panel's colour in plots and the report (Okabe-Ito, told apart by the colour-blind)
-
-  static SheetPanel measured();
-  // Layer "cook_torrance_E2", label "CT E2": the model's short label (registry.h) and the metric.
-  static SheetPanel ofFit(const FitId& fit);
-};
-// The supplement's comparison grid, the one list of it: Measured, then its six fits in its order.
-std::span<const SheetPanel> sheetPanels();
 
 constexpr int kReplicates = 4;
 

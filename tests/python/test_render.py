@@ -175,6 +175,29 @@ def test_sheet_progress_and_bad_input(tmp_path):
         glossy.sheet(material=material_path("alum-bronze"), size=4)
 
 
+def test_sheet_panels_are_the_cli_panels_and_the_grid_is_the_sheets(tmp_path):
+    args = dict(material=material_path("chrome"), size=16, spp=4, seed=2, threads=2)
+    sheet = glossy.sheet(panels="microfacet:E2,cook-torrance:E1", **args)
+    assert list(sheet.panels) == ["microfacet_E2", "cook_torrance_E1"]
+    assert [f["label"] for f in sheet.figures.values()] == ["Microfacet E2", "CT E1"]
+    out = tmp_path / "cli.exr"
+    run_cli("sheet", "--material", material_path("chrome"), "--width", 16, "--height", 16, "--spp", 4, "--seed", 2,
+            "--threads", 2, "--panels", "microfacet:E2,cook-torrance:E1", "-o", out)
+    np.testing.assert_array_equal(sheet.image, glossy.read_exr(out))
+    for bad in ["bogus:E2", "smooth:E2,smooth:E2", ""]:
+        with pytest.raises(glossy.InputError) as python_error:
+            glossy.sheet(panels=bad, **args)
+        assert str(python_error.value).replace("panels", "--panels", 1) == cli_error(
+            "sheet", "--material", material_path("chrome"), "--panels", bad, "-o", tmp_path / "x.exr")
+    # The table the default sheet is made of: its layers, labels and colours, measured first.
+    grid = glossy.comparison_grid()
+    default = [row for row in grid if row["default"]]
+    assert [row["layer"] for row in default] == list(glossy.sheet(**args).panels)
+    assert [row["colour"] for row in default][:2] == ["#000000", "#e69f00"]
+    assert {"fit", "layer", "label", "colour", "default"} == set(grid[0])
+    assert any(row["fit"] == "smooth:E1" and not row["default"] for row in grid)
+
+
 def test_read_exr_refuses_a_fifo_at_once(tmp_path):
     fifo = tmp_path / "pipe.exr"
     os.mkfifo(fifo)

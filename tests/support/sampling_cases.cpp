@@ -31,8 +31,10 @@ std::vector<FitRecord> libraryRecords() {
 
 LibraryFit toLibraryFit(const FitRecord& r) { return {r.material + " " + r.fit.id.str(), makeBrdf(r.fit)}; }
 
-const std::set<std::string> kSupplementMaterials = {"alum-bronze", "blue-acrylic", "blue-rubber",
-                                                    "chrome", "gold-metallic-paint2", "gold-paint"};
+bool isSupplement(const std::string& material) {
+  const std::vector<std::string>& names = supplementMaterials();
+  return std::find(names.begin(), names.end(), material) != names.end();
+}
 
 // x in [0, xMax] below which a fraction q of the profile (1 + B x)^(−C) lies (closed form of its integral).
 double abcQuantile(double b, double c, double xMax, double q) {
@@ -53,14 +55,14 @@ std::vector<LibraryFit> libraryFits() {
 std::vector<LibraryFit> supplementFits() {
   std::vector<LibraryFit> out;
   for (const FitRecord& r : libraryRecords())
-    if (kSupplementMaterials.count(r.material)) out.push_back(toLibraryFit(r));
+    if (isSupplement(r.material)) out.push_back(toLibraryFit(r));
   return out;
 }
 
 std::vector<LibraryFit> extremeFits() {
   std::vector<FitRecord> candidates;
   for (FitRecord& r : libraryRecords())
-    if (!kSupplementMaterials.count(r.material)) candidates.push_back(std::move(r));
+    if (!isSupplement(r.material)) candidates.push_back(std::move(r));
 
   std::vector<FitRecord> chosen;
   std::set<std::string> seen;

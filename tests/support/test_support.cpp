@@ -1,7 +1,9 @@
 #include "tests/support/test_support.h"
 
 #include "materials/core/input_error.h"
+#include "materials/params/importer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -20,6 +22,18 @@ std::filesystem::path sharedDir() {
 std::filesystem::path sourceDir() { return GLOSSY_SOURCE_DIR; }
 std::filesystem::path libraryDir() { return sourceDir() / "materials/library"; }
 std::filesystem::path materialsDir() { return libraryDir() / "merl"; }
+
+const std::vector<std::string>& supplementMaterials() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const auto& e : std::filesystem::directory_iterator(materialsDir()))
+      if (e.path().extension() == ".toml" && loadMaterialFile(e.path()).source == kSupplementSource) out.push_back(e.path().stem().string());
+    std::sort(out.begin(), out.end());
+    if (out.size() != 6) throw std::runtime_error(materialsDir().string() + ": " + std::to_string(out.size()) + " supplement materials, not 6");
+    return out;
+  }();
+  return names;
+}
 
 std::string shellQuote(const std::string& s) {
   std::string q = "'";

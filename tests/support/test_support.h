@@ -25,6 +25,9 @@ std::filesystem::path sourceDir();
 // 100 MERL materials' parameter files and networks are.
 std::filesystem::path libraryDir();
 std::filesystem::path materialsDir();
+// The six materials of Löw et al. 2012's supplement, sorted: the library's MERL files whose source is the
+// supplement (materials/params/importer.h), which shared/merl holds the tables of.
+const std::vector<std::string>& supplementMaterials();
 
 // Skips the calling test, with a message naming the folder, when shared/<sub> is absent.
 #define GLOSSY_REQUIRE_SHARED(sub)                                                                       \

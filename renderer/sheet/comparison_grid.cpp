@@ -1,0 +1,70 @@
+#include "renderer/sheet/comparison_grid.h"
+
+#include "materials/core/input_error.h"
+#include "materials/core/text.h"
+#include "materials/models/registry.h"
+
+#include <algorithm>
+
+namespace glossy {
+
+namespace {
+
+// The supplement's six first, in its order, then the fits `glossy fit` may add beside them.
+constexpr GridFit kGridFits[] = {
+    {"microfacet:E2", "#e69f00", true},         {"smooth:E2", "#56b4e9", true},       {"ashikhmin-shirley:E1", "#009e73", true},
+    {"ashikhmin-shirley:E2", "#cc79a7", true},  {"cook-torrance:E1", "#0072b2", true}, {"cook-torrance:E2", "#d55e00", true},
+    {"microfacet:E1", "#f0e442", false},        {"smooth:E1", "#999999", false}};
+
+// A fit the table does not list.
+constexpr std::string_view kOtherColour = "#999999";
+
+}  // namespace
+
+std::span<const GridFit> gridFits() { return kGridFits; }
+
+SheetPanel SheetPanel::measured() { return {"measured", "Measured", "", "#000000"}; }
+
+SheetPanel SheetPanel::ofFit(const FitId& fit) {
+  const ModelInfo* model = findModel(fit.model);
+  std::string layer = fit.model + "_" + fit.metric + (fit.by.empty() ? "" : "_" + fit.by);
+  std::replace(layer.begin(), layer.end(), '-', '_');
+  const std::string published = FitId{fit.model, fit.metric}.str();
+  const auto row = std::find_if(std::begin(kGridFits), std::end(kGridFits), [&](const GridFit& g) { return g.fit == published; });
+  // The paper's label for a published fit; glossy's own fit says so wherever it is shown.
+  return {layer, std::string(model ? model->shortLabel : fit.model) + " " + fit.metric + (fit.isGlossys() ? " (glossy fit)" : ""),
+          fit.str(), std::string(row == std::end(kGridFits) ? kOtherColour : row->colour)};
+}
+
+std::span<const SheetPanel> sheetPanels() {
+  static const std::vector<SheetPanel> panels = [] {
+    std::vector<SheetPanel> grid = {SheetPanel::measured()};
+    for (const GridFit& g : kGridFits)
+      if (g.inGrid) grid.push_back(SheetPanel::ofFit(FitId::parse(g.fit, "the sheet grid")));
+    return grid;
+  }();
+  return panels;
+}
+
+std::vector<SheetPanel> parsePanels(std::string_view list, const std::string& option) {
+  std::vector<SheetPanel> panels;
+  for (size_t start = 0; start <= list.size();) {
+    const size_t end = std::min(list.find(',', start), list.size());
+    const std::string_view item = list.substr(start, end - start);
+    start = end + 1;
+    if (item.empty()) throw InputError(option + ": '" + shortened(list) + "' has an empty panel (a comma list of measured and MODEL:METRIC)");
+    SheetPanel panel = item == "measured" ? SheetPanel::measured() : SheetPanel::ofFit(FitId::parse(item, option));
+    if (std::any_of(panels.begin(), panels.end(), [&](const SheetPanel& p) { return p.layer == panel.layer; }))
+      throw InputError(option + ": '" + shortened(item) + "' is named twice");
+    panels.push_back(std::move(panel));
+  }
+  return panels;
+}
+
+std::string panelList(std::span<const SheetPanel> panels) {
+  std::string list;
+  for (const SheetPanel& p : panels) list.append(list.empty() ? "" : ",").append(p.fit.empty() ? "measured" : p.fit);
+  return list;
+}
+
+}  // namespace glossy
