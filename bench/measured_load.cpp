@@ -8,7 +8,7 @@
 #include "materials/core/notes.h"
 #include "materials/fitting/metric.h"
 #include "materials/models/measured.h"
-#include "renderer/cli/brdf_options.h"
+#include "renderer/app/brdf_options.h"
 
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
     std::shared_ptr<const MerlTable> table;
     std::optional<Measured> measured;
     std::optional<MetricData> e1, e2;
-    const Cost load = cost([&] { table = cli::loadMeasured(file); });
+    const Cost load = cost([&] { table = app::loadMeasured(file); });
     discardNotes();  // the unmeasured bins' note
     const Cost sampler = cost([&] { measured.emplace(table); });
     const Cost metric = cost([&] { e1.emplace(*table, Metric::E1), e2.emplace(*table, Metric::E2); });

@@ -1,7 +1,7 @@
 // Numbers on the command line: every floating-point option of every subcommand refuses NaN, ±Inf and
 // values out of its range as bad input (exit 2, one short line naming the option), before any work;
 // --threads and image sizes have limits that are checked up front; --shard takes exactly i/N.
-#include "renderer/cli/image_memory.h"
+#include "renderer/app/image_memory.h"
 #include "tests/support/test_support.h"
 
 #include <unistd.h>
@@ -51,7 +51,7 @@ std::vector<Case> cases(const TempDir& tmp) {
   all.push_back({sheets, "--target-error", {"-inf", "11"}});
   all.push_back({sheets, "--exposure", {"1e400", "-65"}});
   all.push_back({sample, "-n", with(nonFinite, {"-1", "1e300", "2000000000"})});
-  all.push_back({fit, "--threads", with(nonFinite, {"0", "-1", "1e8"})});
+  all.push_back({fit, "--threads", with(nonFinite, {"4097", "-1", "1e8"})});
   all.push_back({fit, "--starts", with(nonFinite, {"0", "1e308"})});
   all.push_back({fit, "--max-iterations", with(nonFinite, {"0", "1e308"})});
   return all;
@@ -101,7 +101,7 @@ TEST(CliNumbers, ImagesLargerThanMemoryAreRefusedUpFront) {
   TempDir tmp;
   const double memory = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
   // Seven 16384² panels need about 600 GB.
-  if (memory >= 16384.0 * 16384.0 * 7 * cli::kSheetBytesPerPanelPixel) GTEST_SKIP() << "this machine has the memory for the largest sheet";
+  if (memory >= 16384.0 * 16384.0 * 7 * app::kSheetBytesPerPanelPixel) GTEST_SKIP() << "this machine has the memory for the largest sheet";
   for (const char* command : {"sheet", "sheets"}) {
     std::vector<std::string> args = {command, "--width", "16384", "--height", "16384", "--spp", "1"};
     if (std::string(command) == "sheet") args.insert(args.end(), {"--material", (materialsDir() / "chrome.toml").string()});

@@ -125,7 +125,9 @@ TEST(CliFit, AddsItsFitBesideThePublishedOneAndNeverReplacesItUnasked) {
 TEST(CliFit, WithoutAnOutputFileWritesTheNewMaterialToStdout) {
   TempDir dir;
   const auto table = writeTable(dir, "plain", Lambertian{Rgb(0.3, 0.2, 0.1)});
-  const RunResult r = runGlossy({"fit", "--measured", table.string(), "--model", "ashikhmin-shirley", "--metric", "E2", "--starts", "1"});
+  // --threads 0: all cores, as every --threads and glossy.fit take it.
+  const RunResult r = runGlossy({"fit", "--measured", table.string(), "--model", "ashikhmin-shirley", "--metric", "E2", "--starts", "1",
+                                 "--threads", "0"});
   ASSERT_EQ(r.status, 0) << r.err;
   const MaterialFile m = parseMaterialToml(r.out, "stdout");
   EXPECT_EQ(m.name, "plain");

@@ -1,4 +1,4 @@
-// Where a command writes is checked before it starts any work (renderer/cli/destination.h): each bad
+// Where a command writes is checked before it starts any work (renderer/app/destination.h): each bad
 // destination exits 2 with one line naming the option or the path. The renders and fits asked for here
 // would take minutes, so a check that came after the work would fail these tests by their time limit
 // and by the outputs they would leave.

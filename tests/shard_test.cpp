@@ -1,6 +1,6 @@
-// Which part of a batch a process does (renderer/cli/shard.h): --shard, the array schedulers' variables,
+// Which part of a batch a process does (renderer/app/shard.h): --shard, the array schedulers' variables,
 // their malformed forms, and the split by cost.
-#include "renderer/cli/shard.h"
+#include "renderer/app/shard.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 
 using namespace glossy;
 using namespace glossy::test;
-using namespace glossy::cli;
+using namespace glossy::app;
 
 namespace {
 

@@ -114,3 +114,35 @@ TEST(CoherentPanels, BackdropIsSharedBitForBitWherePathsMissTheObject) {
 }
 
 }  // namespace glossy::test
+
+namespace glossy::test {
+
+// SheetSettings is a RenderSettings: what a render is told (the reference tracer, cosine sampling, the
+// roulette's depth) reaches every panel of a sheet rather than being dropped on the way.
+TEST(CoherentPanels, ASheetRendersWithItsRenderSettings) {
+  const MaterialFile chrome = loadMaterialFile(materialsDir() / "chrome.toml");
+  const auto sheetWith = [&](auto&& set) {
+    SheetSettings s;
+    s.width = s.height = 24;
+    s.spp = 4;
+    s.threads = 2;
+    s.progress = false;
+    set(s);
+    return renderSheet(stage().sheet, chrome, nullptr, "", s);
+  };
+  const Sheet plain = sheetWith([](SheetSettings&) {});
+  const Sheet reference = sheetWith([](SheetSettings& s) { s.reference = true; });
+  const Sheet cosine = sheetWith([](SheetSettings& s) { s.cosineBrdfSampling = true; });
+  const Sheet roulette = sheetWith([](SheetSettings& s) { s.rouletteDepth = 1; });
+  ASSERT_EQ(plain.panels.size(), cosine.panels.size());
+  bool cosineDiffers = false, rouletteDiffers = false;
+  for (size_t k = 0; k < plain.panels.size(); ++k) {
+    EXPECT_EQ(reference.panels[k].image.pixels, plain.panels[k].image.pixels) << k;  // the same image, one path at a time
+    cosineDiffers |= cosine.panels[k].image.pixels != plain.panels[k].image.pixels;
+    rouletteDiffers |= roulette.panels[k].image.pixels != plain.panels[k].image.pixels;
+  }
+  EXPECT_TRUE(cosineDiffers);
+  EXPECT_TRUE(rouletteDiffers);
+}
+
+}  // namespace glossy::test

@@ -1,4 +1,4 @@
-// glossy sheets' resuming (renderer/cli/sheet_resume.h): a sheet on disk is kept only if its EXR opens,
+// glossy sheets' resuming (renderer/app/sheet_resume.h): a sheet on disk is kept only if its EXR opens,
 // has every layer and carries this run's settings; broken or foreign sheets are rendered again, things in
 // the way and clashing names stop the run before any rendering, and one run at a time writes each sheet.
 #include "renderer/image/exr_image.h"

@@ -2,6 +2,10 @@
 #pragma once
 
 #include "materials/core/text.h"
+#include "renderer/app/brdf_options.h"
+#include "renderer/app/option_specs.h"
+#include "renderer/app/scene_options.h"
+#include "renderer/integrator/path_tracer.h"
 
 #include <CLI/CLI.hpp>
 
@@ -13,6 +17,9 @@
 #include <vector>
 
 namespace glossy::cli {
+
+// The front end runs the app layer's jobs (renderer/app/).
+using namespace glossy::app;
 
 struct Command {
   CLI::App* app;
@@ -32,33 +39,26 @@ Command addSampleCommand(CLI::App& parent);
 Command addSheetCommand(CLI::App& parent);
 Command addSheetsCommand(CLI::App& parent);
 
-// A finite number in [lo, hi] (or (lo, hi] when loOpen). CLI::PositiveNumber lets "inf" through, and an
-// infinite budget never ends; CLI11's own ranges print a double's limits with std::to_string (309 digits).
-inline CLI::Validator finiteIn(double lo, double hi, bool loOpen = false) {
-  const std::string range = formatted("%s%g, %g]", loOpen ? "(" : "[", lo, hi);
-  return CLI::Validator(
-      [lo, hi, loOpen, range](std::string& text) {
-        const std::optional<double> v = parseNumber(text);
-        const bool ok = v && std::isfinite(*v) && (loOpen ? *v > lo : *v >= lo) && *v <= hi;
-        return ok ? std::string() : "must be a finite number in " + range + ", not '" + shortened(text) + "'";
-      },
-      "NUMBER in " + range);
-}
-// A whole number in [lo, hi], with the same short message.
-inline CLI::Validator integerIn(long long lo, long long hi) {
-  const std::string range = formatted("[%lld, %lld]", lo, hi);
-  return CLI::Validator(
-      [lo, hi, range](std::string& text) {
-        const std::optional<double> v = parseNumber(text);
-        const bool ok = v && std::isfinite(*v) && *v == std::floor(*v) && *v >= double(lo) && *v <= double(hi);
-        return ok ? std::string() : "must be a whole number in " + range + ", not '" + shortened(text) + "'";
-      },
-      "INT in " + range);
+// An option of the table (renderer/app/option_specs.h) bound to `field`: its range, help and default.
+// CLI::PositiveNumber lets "inf" through, and an infinite budget never ends; CLI11's own ranges print a
+// double's limits with std::to_string (309 digits): the spec's check says it in one short line.
+template <class T>
+CLI::Option* addOption(CLI::App* app, const app::OptionSpec& spec, T& field) {
+  return app->add_option(spec.flag(), field, spec.help)
+      ->check(CLI::Validator(
+          [&spec](std::string& text) {
+            const std::optional<double> v = parseNumber(text);
+            return v && spec.accepts(*v) ? std::string() : spec.refusal(text);
+          },
+          (spec.whole ? "INT in " : "NUMBER in ") + spec.range()))
+      ->capture_default_str();
 }
 
-// Threads a command may be asked for: far beyond any machine's cores, well short of what exhausts memory
-// creating them (`--threads 1e8`).
-inline constexpr int kMaxThreads = 4096;
+// The options naming the scene (app/scene_options.h), the path tracer's (--seed, --threads, --max-depth,
+// --light-samples) and one BRDF (app/brdf_options.h).
+void addSceneOptions(CLI::App* app, app::SceneOptions& o);
+void addTracerOptions(CLI::App* app, RenderSettings& s);
+void addBrdfOptions(CLI::App* app, app::BrdfOptions& o);
 
 // The committed material library, a folder per database: ./materials/library when run from a checkout, else
 // the source tree's (or the Python package's).

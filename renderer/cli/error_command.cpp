@@ -3,7 +3,7 @@
 #include "materials/core/text.h"
 #include "materials/fitting/metric.h"
 #include "materials/params/material_file.h"
-#include "renderer/cli/brdf_options.h"
+#include "renderer/app/brdf_options.h"
 #include "renderer/cli/command.h"
 #include "renderer/cli/output.h"
 

@@ -3,7 +3,7 @@
 #include "materials/core/text.h"
 #include "materials/core/unit_direction.h"
 #include "materials/models/brdf.h"
-#include "renderer/cli/brdf_options.h"
+#include "renderer/app/brdf_options.h"
 #include "renderer/cli/command.h"
 #include "renderer/cli/output.h"
 
@@ -63,7 +63,7 @@ Command addEvalCommand(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand("eval",
       "Evaluate a BRDF. Reads lines Lx,Ly,Lz,Vx,Vy,Vz (local frame, N = +z, L toward the light, V toward the "
       "viewer) on stdin; writes R,G,B (with --pdf: R,G,B,pdf) per line on stdout in full double precision.");
-  o->brdf.addTo(app);
+  addBrdfOptions(app, o->brdf);
   app->add_flag("--pdf", o->pdf, "Also print the solid-angle pdf of the BRDF's sampler for L given V");
   return {app, [o] { return runEval(*o); }};
 }

@@ -2,16 +2,16 @@
 // material's parameter file; with --measured-dir, every model and metric for every table, resumably.
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
-#include "materials/core/output_lock.h"
 #include "materials/core/notes.h"
+#include "materials/core/output_lock.h"
 #include "materials/core/text.h"
 #include "materials/fitting/fitter.h"
-#include "renderer/cli/brdf_options.h"
+#include "renderer/app/brdf_options.h"
+#include "renderer/app/destination.h"
+#include "renderer/app/fit_output.h"
+#include "renderer/app/shard.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/destination.h"
-#include "renderer/cli/fit_output.h"
 #include "renderer/cli/output.h"
-#include "renderer/cli/shard.h"
 
 #include <algorithm>
 #include <chrono>
@@ -199,9 +199,9 @@ Command addFitCommand(CLI::App& parent) {
                   "batch: i/N: only shard i (0-based) of N, the tables split by expected cost; default: the job array's "
                   "task (Slurm, Kubernetes indexed Job, AWS Batch; docs/cluster.md)");
   app->add_flag("--replace", o->replace, "also remove the published fit of the model and metric fitted (never done without it)");
-  app->add_option("--starts", o->settings.refinedStarts, "lobe widths refined from the coarse scan")->check(CLI::Range(1, 64));
-  app->add_option("--max-iterations", o->settings.maxIterations, "Levenberg-Marquardt iterations per start")->check(CLI::Range(1, 10000));
-  app->add_option("--threads", o->settings.threads, "threads (default: all cores); the result does not depend on it")->check(CLI::Range(1, 256));
+  addOption(app, options::kStarts, o->settings.refinedStarts);
+  addOption(app, options::kMaxIterations, o->settings.maxIterations);
+  addOption(app, options::kThreads, o->settings.threads);
   auto measured = app->get_option("--measured");
   auto dir = app->get_option("--measured-dir");
   measured->excludes(dir);

@@ -2,8 +2,8 @@
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/params/importer.h"
+#include "renderer/app/destination.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/destination.h"
 
 #include <iostream>
 #include <memory>

@@ -1,13 +1,13 @@
 // glossy plot: a material's BRDFs as figures — θ_h slices, image slices with the log-ratio to measured data,
 // directional albedo, in-plane polar lobes — each as SVG, PNG and the CSV of its numbers, indexed by
 // plots.json (renderer/plot/, docs/plots.md).
-#include "materials/core/output_lock.h"
 #include "materials/core/input_error.h"
 #include "materials/core/notes.h"
+#include "materials/core/output_lock.h"
 #include "materials/params/material_file.h"
-#include "renderer/cli/brdf_options.h"
+#include "renderer/app/brdf_options.h"
+#include "renderer/app/destination.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/destination.h"
 #include "renderer/plot/figures.h"
 #include "renderer/plot/plot_output.h"
 #include "renderer/plot/svg_to_png.h"

@@ -1,10 +1,10 @@
 // glossy render: one image of a glTF scene under an environment, as shared/spec/interfaces.md states.
 #include "materials/core/notes.h"
 #include "materials/core/output_lock.h"
+#include "renderer/app/destination.h"
+#include "renderer/app/image_memory.h"
+#include "renderer/app/render_job.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/destination.h"
-#include "renderer/cli/image_memory.h"
-#include "renderer/cli/render_job.h"
 
 #include <iostream>
 #include <memory>
@@ -44,21 +44,16 @@ Command addRenderCommand(CLI::App& parent) {
   CLI::App* app = parent.add_subcommand("render",
       "Render a glTF scene under an environment into a linear EXR. With no options: the material-preview "
       "scene with its bound material under the built-in sky.");
-  o->job.scene.addTo(app);
+  addSceneOptions(app, o->job.scene);
   auto* material = app->add_option("--material", o->job.material, "Material file for every non-emissive mesh");
   auto* fit = app->add_option("--fit", o->job.fit, "Fit of --material: MODEL:METRIC");
   auto* measured = app->add_option("--measured", o->job.measured, "Measured data (MERL table or .nbrdf network) for every non-emissive mesh instead");
   app->add_option("--merl-dir", o->job.merlDir, "Folder with MERL tables");
-  app->add_option("--spp", o->job.settings.spp, "Samples per pixel")->check(CLI::Range(1, INT32_MAX))->capture_default_str();
-  app->add_option("--seed", o->job.settings.seed, "Random seed")->capture_default_str();
-  app->add_option("--threads", o->job.settings.threads, "Threads (0 = all cores)")->check(integerIn(0, kMaxThreads));
-  app->add_option("--width", o->job.settings.width, "Image width")->check(CLI::Range(1, 1 << 15))->capture_default_str();
-  app->add_option("--height", o->job.settings.height, "Image height")->check(CLI::Range(1, 1 << 15))->capture_default_str();
-  app->add_option("--max-depth", o->job.settings.maxDepth, "Path segments at most (1 = emitters only, 3 = one indirect bounce)")
-      ->check(CLI::Range(1, 1000))->capture_default_str();
-  app->add_option("--light-samples", o->job.settings.lightSamples,
-                  "Light samples at a path's first vertex (more: less noise from the lights at less than a path's cost)")
-      ->check(CLI::Range(1, kMaxLightSamples))->capture_default_str();
+  RenderSettings& s = o->job.settings;
+  addOption(app, options::kSpp, s.spp);
+  addOption(app, options::kWidth, s.width);
+  addOption(app, options::kHeight, s.height);
+  addTracerOptions(app, s);
   app->add_flag("--half", o->half, "Write half-float EXR (default: float); values above 65504 are clipped to it, and counted on stderr");
   app->add_option("--brdf-sampling", o->job.brdfSampling,
                   "lobe: each model samples its own lobe (default); cosine: the cosine lobe, to see what lobe sampling is worth")

@@ -1,8 +1,8 @@
 // glossy report: a static, offline HTML site over a folder of sheets and their plots
 // (renderer/report/report_site.h; docs/report.md).
 #include "materials/core/output_lock.h"
+#include "renderer/app/destination.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/destination.h"
 #include "renderer/plot/plot_output.h"
 #include "renderer/report/report_site.h"
 

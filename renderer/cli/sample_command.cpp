@@ -3,7 +3,7 @@
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "materials/core/unit_direction.h"
-#include "renderer/cli/brdf_options.h"
+#include "renderer/app/brdf_options.h"
 #include "renderer/cli/command.h"
 #include "renderer/cli/output.h"
 
@@ -63,9 +63,9 @@ Command addSampleCommand(CLI::App& parent) {
       "Draw directions from a BRDF's sampler for the outgoing direction --wo (local frame, N = +z). Writes N lines "
       "Lx,Ly,Lz,pdf,wR,wG,wB with w = ρ cos θ_L / pdf; an invalid sample (below the horizon, rejected) is the line "
       "0,0,0,0,0,0,0.");
-  o->brdf.addTo(app);
+  addBrdfOptions(app, o->brdf);
   app->add_option("--wo", o->wo, "Outgoing direction toward the viewer, x,y,z (normalised here)")->required();
-  app->add_option("-n", o->count, "Number of samples")->required()->check(integerIn(0, 1000000000));
+  addOption(app, options::kSamples, o->count)->required();
   app->add_option("--seed", o->seed, "Seed of the uniform random numbers")->capture_default_str();
   return {app, [o] { return runSample(*o); }};
 }

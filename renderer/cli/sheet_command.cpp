@@ -5,12 +5,12 @@
 #include "materials/core/output_lock.h"
 #include "materials/core/text.h"
 #include "materials/params/material_file.h"
+#include "renderer/app/destination.h"
+#include "renderer/app/image_memory.h"
+#include "renderer/app/shard.h"
+#include "renderer/app/sheet_job.h"
+#include "renderer/app/sheet_resume.h"
 #include "renderer/cli/command.h"
-#include "renderer/cli/destination.h"
-#include "renderer/cli/image_memory.h"
-#include "renderer/cli/shard.h"
-#include "renderer/cli/sheet_job.h"
-#include "renderer/cli/sheet_resume.h"
 
 #include <algorithm>
 #include <chrono>
@@ -49,29 +49,15 @@ void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, co
 
 void addRenderOptions(CLI::App* app, SheetOptions& o) {
   app->add_option("--merl-dir", o.merlDir, "Folder with MERL tables (else $GLOSSY_MERL_DIR)");
-  o.scene.addTo(app);
-  o.spp = app->add_option("--spp", o.settings.spp,
-                  "Samples per pixel of every panel, in 4 independent replicates (rounded up to a multiple of 4); with "
-                  "--target-error or --time: at most this many (--target-error alone: at most " + std::to_string(kTargetErrorSppCap) + ")")
-      ->check(CLI::Range(1, 1 << 24))
-      ->capture_default_str();
-  app->add_option("--time", o.settings.secondsPerPanel,
-                  "Wall-clock seconds per panel instead of --spp: the panels render in passes until their budget is spent")
-      ->check(finiteIn(0.0, 1e6, true));
-  app->add_option("--target-error", o.settings.targetError,
-                  "Render in passes until every model's relative-RMSE 95 % interval has at most this half-width, or until "
-                  "--spp (default " + std::to_string(kTargetErrorSppCap) + ") or --time caps it, saying so; a line per pass on stderr")
-      ->check(finiteIn(0.0, 10.0, true));
-  app->add_option("--width", o.settings.width, "Panel width")->check(CLI::Range(8, 1 << 14))->capture_default_str();
-  app->add_option("--height", o.settings.height, "Panel height")->check(CLI::Range(8, 1 << 14))->capture_default_str();
-  app->add_option("--seed", o.settings.seed, "Random seed (the same for every panel)")->capture_default_str();
-  app->add_option("--threads", o.settings.threads, "Threads (0 = all cores)")->check(integerIn(0, kMaxThreads));
-  app->add_option("--max-depth", o.settings.maxDepth, "Path segments at most")->check(CLI::Range(1, 1000))->capture_default_str();
-  app->add_option("--light-samples", o.settings.lightSamples, "Light samples at a path's first vertex")
-      ->check(CLI::Range(1, kMaxLightSamples))->capture_default_str();
-  app->add_option("--exposure", o.exposure, "Exposure of the PNG preview in stops (the EXR stays linear)")
-      ->check(finiteIn(-64.0, 64.0))
-      ->capture_default_str();
+  addSceneOptions(app, o.scene);
+  SheetSettings& s = o.settings;
+  o.spp = addOption(app, options::kSheetSpp, s.spp);
+  addOption(app, options::kTime, s.secondsPerPanel);
+  addOption(app, options::kTargetError, s.targetError);
+  addOption(app, options::kSheetWidth, s.width);
+  addOption(app, options::kSheetHeight, s.height);
+  addTracerOptions(app, s);
+  addOption(app, options::kExposure, o.exposure);
   o.panelsOption = app->add_option("--panels", o.panels,
                                    "The panels, a comma list of measured and MODEL:METRIC fits of any model glossy knows, "
                                    "in order; default: " + panelList(sheetPanels()));

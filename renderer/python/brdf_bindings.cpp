@@ -8,8 +8,7 @@
 #include "materials/core/text.h"
 #include "materials/core/unit_direction.h"
 #include "materials/models/registry.h"
-#include "renderer/cli/brdf_options.h"
-#include "renderer/cli/command.h"
+#include "renderer/app/brdf_options.h"
 
 #include <pybind11/stl.h>
 #include <tbb/blocked_range.h>
@@ -151,7 +150,7 @@ void throwBadDirection(const FirstBad& badL, const FirstBad& badV, const Rows& L
   throw InputError(formatted("%s[%zu]: a direction is zero or not finite", l ? "L" : "V", (l ? L.single : V.single) ? 0 : row));
 }
 
-int checkedThreads(int threads) { return checkedInt("threads", threads, 0, cli::kMaxThreads); }
+int checkedThreads(int threads) { return int(checkedOption(app::options::kThreads, threads)); }
 
 py::array_t<double> evalRows(const Brdf& brdf, const py::handle& lArg, const py::handle& vArg, const py::object& out, int threads) {
   checkedThreads(threads);
@@ -349,8 +348,8 @@ Raises InputError, with the message `glossy` prints, naming the file, line and k
   m.def("load_merl", [](const py::object& path, const py::object& merlDir) {
           return guarded([&] {
             const std::string dir = merlDir.is_none() ? std::string() : pathText(merlDir);
-            const std::filesystem::path file = cli::findMeasured(pathText(path), dir);
-            auto table = cli::loadMeasured(file);
+            const std::filesystem::path file = app::findMeasured(pathText(path), dir);
+            auto table = app::loadMeasured(file);
             PyMeasured out;
             {
               py::gil_scoped_release noGil;  // the sampling tables take a moment
@@ -360,7 +359,7 @@ Raises InputError, with the message `glossy` prints, naming the file, line and k
             out.description = "measured " + file.string();
             out.table = std::move(table);
             out.path = file.string();
-            out.label = cli::measuredLabel(file);
+            out.label = app::measuredLabel(file);
             return std::make_shared<PyMeasured>(std::move(out));
           });
         }, py::arg("path"), py::arg("merl_dir") = py::none(), R"doc(
@@ -381,7 +380,7 @@ RGB parameters take three numbers; choices take a string.
           return names;
         }, "The analytic models' names, in the comparison grid's order.");
   m.def("uniforms", [](long long n, uint64_t seed) {
-          checkedInt("n", n, 0, 1000000000);
+          checkedOption(app::options::kSamples, double(n));
           py::array_t<double> u({py::ssize_t(n), py::ssize_t(3)});
           double* p = u.mutable_data();
           {

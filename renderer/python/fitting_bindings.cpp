@@ -1,11 +1,11 @@
 // glossy.error and glossy.fit: the metrics E1 and E2 of Löw et al. 2012 and the fitter behind `glossy error`
 // and `glossy fit` (docs/fitting.md), the same numbers for the same table.
-#include "materials/core/output_lock.h"
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
+#include "materials/core/output_lock.h"
 #include "materials/fitting/fitter.h"
-#include "renderer/cli/destination.h"
-#include "renderer/cli/fit_output.h"
+#include "renderer/app/destination.h"
+#include "renderer/app/fit_output.h"
 #include "renderer/python/brdf_bindings.h"
 
 #include <pybind11/stl.h>
@@ -28,9 +28,9 @@ const PyMeasured& tableOf(const py::handle& table) {
 // What `glossy fit -o` does, through the same code: the output checked first, then the fit put in as
 // glossy's, beside a published one (removed only with replace), what it replaced said on stderr.
 void saveFit(const PyFit& f, const std::string& path, bool replace) {
-  cli::checkOutputFile(path, "path", {".toml"}, cli::Folder::Exist);
+  app::checkOutputFile(path, "path", {".toml"}, app::Folder::Exist);
   const OutputLock lock(path, "path");
-  const std::string replaced = cli::writeGlossysFit(path, f.table, f.report.fit, replace);
+  const std::string replaced = app::writeGlossysFit(path, f.table, f.report.fit, replace);
   if (!replaced.empty()) py::module_::import("sys").attr("stderr").attr("write")("glossy: " + path + ": " + replaced + "\n");
 }
 
@@ -79,9 +79,9 @@ docs/fitting.md): the figure `glossy error` prints.
             const Metric which = parseMetric(metric, "metric");
             requireFittable(model);
             FitSettings settings;
-            settings.refinedStarts = checkedInt("starts", starts, 1, 64);
-            settings.maxIterations = checkedInt("max_iterations", maxIterations, 1, 10000);
-            settings.threads = checkedInt("threads", threads, 0, 256);
+            settings.refinedStarts = int(checkedOption(app::options::kStarts, starts));
+            settings.maxIterations = int(checkedOption(app::options::kMaxIterations, maxIterations));
+            settings.threads = int(checkedOption(app::options::kThreads, threads));
             auto out = std::make_shared<PyFit>();
             out->table = data.path;
             {
@@ -89,7 +89,7 @@ docs/fitting.md): the figure `glossy error` prints.
               const MetricData grid(*data.table, which);
               out->report = fitModel(grid, model, settings);
             }
-            cli::stampGlossysFit(out->report.fit, data.path);
+            app::stampGlossysFit(out->report.fit, data.path);
             return out;
           });
         }, py::arg("table"), py::arg("model") = "cook-torrance", py::arg("metric") = "E2", py::kw_only(), py::arg("starts") = 4,

@@ -23,16 +23,11 @@ void warnNotes() {
     if (PyErr_WarnEx(gWarning, line.c_str(), 2) != 0) throw py::error_already_set();
 }
 
-int checkedInt(const char* name, long long value, long long lo, long long hi) {
-  if (value < lo || value > hi)
-    throw InputError(formatted("%s: must be a whole number in [%lld, %lld], not '%lld'", name, lo, hi, value));
-  return int(value);
-}
-
-double checkedReal(const char* name, double value, double lo, double hi, bool loOpen) {
-  if (!std::isfinite(value) || (loOpen ? value <= lo : value < lo) || value > hi)
-    throw InputError(formatted("%s: must be a finite number in %s%g, %g], not '%s'", name, loOpen ? "(" : "[", lo, hi,
-                               formatted("%g", value).c_str()));
+double checkedOption(const app::OptionSpec& spec, double value, const std::string& name) {
+  if (!spec.accepts(value))
+    throw InputError((name.empty() ? spec.keyword() : name) + ": " +
+                     spec.refusal(spec.whole && value == std::floor(value) && std::abs(value) < 1e18 ? formatted("%lld", (long long)value)
+                                                                                                   : formatted("%g", value)));
   return value;
 }
 
@@ -80,6 +75,13 @@ PYBIND11_MODULE(_core, m) {
 
   m.def("_set_data_dir", [](const std::string& dir) { glossy::setDataDir(dir); },
         "Where the default scene and the material library are (the wheel's glossy/data).");
+  m.def("_option_specs", [] {  // the table the keywords are checked by, for the tests
+    py::list specs;
+    for (const auto* o : glossy::app::optionSpecs())
+      specs.append(py::dict(py::arg("keyword") = o->keyword(), py::arg("commands") = o->commands, py::arg("whole") = o->whole, py::arg("lo") = o->lo,
+                            py::arg("hi") = o->hi, py::arg("lo_open") = o->loOpen, py::arg("range") = o->range(), py::arg("default") = o->fallback));
+    return specs;
+  });
   bindBrdfs(m);
   bindFitting(m);
   bindRendering(m);

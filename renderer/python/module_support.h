@@ -5,6 +5,7 @@
 
 #include "materials/core/notes.h"
 #include "materials/core/types.h"
+#include "renderer/app/option_specs.h"
 #include "renderer/image/exr_image.h"
 
 #include <pybind11/numpy.h>
@@ -46,9 +47,10 @@ auto guarded(F&& f) {
   }
 }
 
-// Keyword checks, with the command line's wording: "spp: must be a whole number in [1, 2147483647], not '0'".
-int checkedInt(const char* name, long long value, long long lo, long long hi);
-double checkedReal(const char* name, double value, double lo, double hi, bool loOpen = false);
+// A keyword of the option table (renderer/app/option_specs.h) checked as the command line checks the option,
+// in its words: "max_depth: must be a whole number in [1, 1000], not '0'". `name`: what the message calls it
+// when not its keyword ("size: width").
+double checkedOption(const app::OptionSpec& spec, double value, const std::string& name = "");
 
 // An image as a float32 array (height, width, 3) that owns the pixels it was given: no copy.
 py::array_t<float> imageArray(RgbImage&& image);

@@ -1,13 +1,13 @@
 // glossy.render, glossy.sheet and glossy.read_exr: the jobs behind `glossy render` and `glossy sheet`
-// (renderer/cli/render_job.h, sheet_job.h), run so that Ctrl-C and a progress callback work
+// (renderer/app/render_job.h, sheet_job.h), run so that Ctrl-C and a progress callback work
 // (background_job.h), with their images as float32 arrays that own or view the renderer's pixels.
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
-#include "renderer/cli/command.h"
-#include "renderer/cli/destination.h"
-#include "renderer/cli/image_memory.h"
-#include "renderer/cli/render_job.h"
-#include "renderer/cli/sheet_job.h"
+#include "renderer/app/destination.h"
+#include "renderer/app/image_memory.h"
+#include "renderer/app/option_specs.h"
+#include "renderer/app/render_job.h"
+#include "renderer/app/sheet_job.h"
 #include "renderer/python/background_job.h"
 #include "renderer/python/brdf_bindings.h"
 
@@ -43,27 +43,33 @@ std::optional<py::object> given(const py::kwargs& a, const char* key) {
   if (!a.contains(key) || a[key].is_none()) return std::nullopt;
   return py::reinterpret_borrow<py::object>(a[key]);
 }
-std::optional<int> integerArg(const py::kwargs& a, const char* key, long long lo, long long hi) {
-  const auto v = given(a, key);
+// An option of the table as a keyword (max_depth for --max-depth), checked as the command line checks it.
+std::optional<double> optionArg(const py::kwargs& a, const app::OptionSpec& spec) {
+  const std::string key = spec.keyword();
+  const auto v = given(a, key.c_str());
   if (!v) return std::nullopt;
-  return checkedInt(key, castOr<long long>(*v, std::string(key) + ": must be a whole number"), lo, hi);
-}
-std::optional<double> realArg(const py::kwargs& a, const char* key, double lo, double hi, bool loOpen = false) {
-  const auto v = given(a, key);
-  if (!v) return std::nullopt;
-  return checkedReal(key, castOr<double>(*v, std::string(key) + ": must be a number"), lo, hi, loOpen);
+  return checkedOption(spec, spec.whole ? double(castOr<long long>(*v, key + ": must be a whole number"))
+                                        : castOr<double>(*v, key + ": must be a number"));
 }
 bool flagArg(const py::kwargs& a, const char* key) {
   const auto v = given(a, key);
   return v && castOr<bool>(*v, std::string(key) + ": must be True or False");
 }
 
+// seed, threads, max_depth, light_samples: what render and sheet both tell the path tracer.
+void tracerKeywords(const py::kwargs& a, RenderSettings& s) {
+  if (auto v = optionArg(a, app::options::kSeed)) s.seed = uint32_t(*v);
+  if (auto v = optionArg(a, app::options::kThreads)) s.threads = int(*v);
+  if (auto v = optionArg(a, app::options::kMaxDepth)) s.maxDepth = int(*v);
+  if (auto v = optionArg(a, app::options::kLightSamples)) s.lightSamples = int(*v);
+}
+
 std::string optionalPath(const py::object& path) { return path.is_none() ? std::string() : pathText(path); }
 
 // The scene keywords as the command line's scene options (their messages name --env-constant and so on).
-cli::SceneOptions sceneOptions(const py::kwargs& a) {
+app::SceneOptions sceneOptions(const py::kwargs& a) {
   const auto text = [&](const char* key) { return given(a, key) ? pathText(*given(a, key)) : std::string(); };
-  cli::SceneOptions o;
+  app::SceneOptions o;
   o.scene = text("scene");
   o.camera = given(a, "camera") ? castOr<std::string>(*given(a, "camera"), "camera: must be a string") : std::string();
   o.env = text("env");
@@ -76,13 +82,13 @@ cli::SceneOptions sceneOptions(const py::kwargs& a) {
     if (v.empty()) o.envConstant = "[]";
   }
   if (!o.env.empty() && !o.envConstant.empty()) throw InputError("env and env_constant: give one of them");
-  o.envRotate = realArg(a, "env_rotate", -360.0, 360.0).value_or(0.0);
+  o.envRotate = optionArg(a, app::options::kEnvRotate).value_or(0.0);
   return o;
 }
 
 // size=None (the default), N, or (width, height).
-std::pair<int, int> sizeOf(const py::object& size, int defaultSize, int lo, int hi) {
-  if (size.is_none()) return {defaultSize, defaultSize};
+std::pair<int, int> sizeOf(const py::object& size, const app::OptionSpec& width, const app::OptionSpec& height) {
+  if (size.is_none()) return {int(width.fallback), int(height.fallback)};
   long long w, h;
   if (py::isinstance<py::int_>(size)) {
     w = h = castOr<long long>(size, "size: must be a whole number");
@@ -91,12 +97,7 @@ std::pair<int, int> sizeOf(const py::object& size, int defaultSize, int lo, int 
     if (wh.size() != 2) throw InputError("size: expected N or (width, height)");
     w = wh[0], h = wh[1];
   }
-  return {checkedInt("size: width", w, lo, hi), checkedInt("size: height", h, lo, hi)};
-}
-
-uint32_t seedOf(long long seed) {
-  if (seed < 0 || seed > 0xffffffffLL) throw InputError(formatted("seed: must be a whole number in [0, 4294967295], not '%lld'", seed));
-  return uint32_t(seed);
+  return {int(checkedOption(width, double(w), "size: width")), int(checkedOption(height, double(h), "size: height"))};
 }
 
 py::array_t<float> renderArray(const py::kwargs& a) {
@@ -104,7 +105,7 @@ py::array_t<float> renderArray(const py::kwargs& a) {
                               "env_rotate", "spp", "size", "seed", "threads", "max_depth", "light_samples", "brdf_sampling",
                               "reference", "progress", "output", "half"});
   auto get = [&](const char* key) { return given(a, key).value_or(py::none()); };
-  cli::RenderJob job;
+  app::RenderJob job;
   job.scene = sceneOptions(a);
   const py::object material = get("material"), fit = get("fit"), measured = get("measured"), brdf = get("brdf");
   if (!brdf.is_none() && (!material.is_none() || !measured.is_none()))
@@ -124,12 +125,9 @@ py::array_t<float> renderArray(const py::kwargs& a) {
     job.brdf = BrdfChoice{b.brdf, b.description, b.model, fitted};
   }
   RenderSettings& s = job.settings;
-  std::tie(s.width, s.height) = sizeOf(get("size"), 512, 1, 1 << 15);
-  if (auto v = integerArg(a, "spp", 1, INT32_MAX)) s.spp = *v;
-  if (auto v = given(a, "seed")) s.seed = seedOf(castOr<long long>(*v, "seed: must be a whole number"));
-  if (auto v = integerArg(a, "threads", 0, cli::kMaxThreads)) s.threads = *v;
-  if (auto v = integerArg(a, "max_depth", 1, 1000)) s.maxDepth = *v;
-  if (auto v = integerArg(a, "light_samples", 1, kMaxLightSamples)) s.lightSamples = *v;
+  std::tie(s.width, s.height) = sizeOf(get("size"), app::options::kWidth, app::options::kHeight);
+  if (auto v = optionArg(a, app::options::kSpp)) s.spp = int(*v);
+  tracerKeywords(a, s);
   if (!get("brdf_sampling").is_none()) {
     job.brdfSampling = castOr<std::string>(get("brdf_sampling"), "brdf_sampling: must be a string");
     if (job.brdfSampling != "lobe" && job.brdfSampling != "cosine")
@@ -139,12 +137,12 @@ py::array_t<float> renderArray(const py::kwargs& a) {
   s.progress = false;
   const std::string output = optionalPath(get("output"));
   const bool half = flagArg(a, "half");
-  if (!output.empty()) cli::checkOutputFile(output, "output", {".exr"}, cli::Folder::Create);
-  cli::checkImageMemory(s.width, s.height, 1, cli::kRenderBytesPerPixel);
+  if (!output.empty()) app::checkOutputFile(output, "output", {".exr"}, app::Folder::Create);
+  app::checkImageMemory(s.width, s.height, 1, app::kRenderBytesPerPixel);
 
   JobControl control;
   s.control = &control;
-  cli::RenderedImage r = runInterruptible(control, get("progress"), [&] { return cli::renderImage(job); });
+  app::RenderedImage r = runInterruptible(control, get("progress"), [&] { return app::renderImage(job); });
   if (!output.empty()) {
     if (const std::filesystem::path out = output; out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
     writeExr(output, r.image, r.metadata, half ? PixelType::Half : PixelType::Float);
@@ -153,9 +151,9 @@ py::array_t<float> renderArray(const py::kwargs& a) {
 }
 
 struct PySheet {
-  std::shared_ptr<const cli::Stage> stage;
-  cli::SheetJob job;
-  cli::MadeSheet made;
+  std::shared_ptr<const app::Stage> stage;
+  app::SheetJob job;
+  app::MadeSheet made;
 };
 
 // A float32 view of pixels PySheet holds: no copy, and read-only, for save() writes what they hold.
@@ -199,7 +197,7 @@ std::shared_ptr<PySheet> renderSheetOf(const py::kwargs& a) {
                              "panels", "progress", "output"});
   auto get = [&](const char* key) { return given(a, key).value_or(py::none()); };
   auto sheet = std::make_shared<PySheet>();
-  cli::SheetJob& job = sheet->job;
+  app::SheetJob& job = sheet->job;
   job.scene = sceneOptions(a);
   const py::object material = get("material");
   if (material.is_none()) throw InputError("material: a material file (or glossy.Material) is required");
@@ -208,36 +206,33 @@ std::shared_ptr<PySheet> renderSheetOf(const py::kwargs& a) {
   const std::string measured = optionalPath(get("measured"));
   job.merlDir = optionalPath(get("merl_dir"));
   SheetSettings& s = job.settings;
-  std::tie(s.width, s.height) = sizeOf(get("size"), 256, 8, 1 << 14);
-  if (auto v = realArg(a, "time", 0.0, 1e6, true)) s.secondsPerPanel = *v;
-  if (auto v = realArg(a, "target_error", 0.0, 10.0, true)) s.targetError = *v;
+  std::tie(s.width, s.height) = sizeOf(get("size"), app::options::kSheetWidth, app::options::kSheetHeight);
+  if (auto v = optionArg(a, app::options::kTime)) s.secondsPerPanel = *v;
+  if (auto v = optionArg(a, app::options::kTargetError)) s.targetError = *v;
   // As glossy sheet: --time renders until it is spent, --target-error until it is met or the default cap;
   // spp caps them when given.
-  const auto spp = integerArg(a, "spp", 1, 1 << 24);
-  if (spp) s.spp = *spp;
-  cli::applyPassLimits(s, spp.has_value());
-  if (auto v = given(a, "seed")) s.seed = seedOf(castOr<long long>(*v, "seed: must be a whole number"));
-  if (auto v = integerArg(a, "threads", 0, cli::kMaxThreads)) s.threads = *v;
-  if (auto v = integerArg(a, "max_depth", 1, 1000)) s.maxDepth = *v;
-  if (auto v = integerArg(a, "light_samples", 1, kMaxLightSamples)) s.lightSamples = *v;
-  if (auto v = realArg(a, "exposure", -64.0, 64.0)) job.exposure = *v;
+  const auto spp = optionArg(a, app::options::kSheetSpp);
+  if (spp) s.spp = int(*spp);
+  app::applyPassLimits(s, spp.has_value());
+  tracerKeywords(a, s);
+  if (auto v = optionArg(a, app::options::kExposure)) job.exposure = *v;
   job.half = flagArg(a, "half");
   if (const py::object panels = get("panels"); !panels.is_none())
     s.panels = parsePanels(castOr<std::string>(panels, "panels: must be a string, a comma list of measured and MODEL:METRIC"), "panels");
   s.progress = false;
   const std::string output = optionalPath(get("output"));
-  if (!output.empty()) cli::checkOutputFile(output, "output", {".exr"}, cli::Folder::Create);
-  cli::checkImageMemory(s.width, s.height, int(s.panels.size()), cli::kSheetBytesPerPanelPixel);
+  if (!output.empty()) app::checkOutputFile(output, "output", {".exr"}, app::Folder::Create);
+  app::checkImageMemory(s.width, s.height, int(s.panels.size()), app::kSheetBytesPerPanelPixel);
 
   JobControl control;
   s.control = &control;
   runInterruptible(control, get("progress"), [&] {
-    sheet->stage = std::make_shared<const cli::Stage>(job.scene, double(s.width) / double(s.height));
-    sheet->made = cli::makeMaterialSheet(*sheet->stage, materialPath, job, measured);
+    sheet->stage = std::make_shared<const app::Stage>(job.scene, double(s.width) / double(s.height));
+    sheet->made = app::makeMaterialSheet(*sheet->stage, materialPath, job, measured);
     return 0;
   });
   s.control = nullptr;
-  if (!output.empty()) cli::writeSheetFiles(sheet->made, *sheet->stage, job, output);
+  if (!output.empty()) app::writeSheetFiles(sheet->made, *sheet->stage, job, output);
   return sheet;
 }
 
@@ -316,8 +311,8 @@ with its interval (flip, flip_ci). A figure the sheet cannot give is None.
       .def("save", [](const PySheet& x, const py::object& path) {
              guarded([&] {
                const std::string p = pathText(path);
-               cli::checkOutputFile(p, "path", {".exr"}, cli::Folder::Create);
-               cli::writeSheetFiles(x.made, *x.stage, x.job, p);
+               app::checkOutputFile(p, "path", {".exr"}, app::Folder::Create);
+               app::writeSheetFiles(x.made, *x.stage, x.job, p);
              });
            }, py::arg("path"), "Writes the sheet's layered EXR and its PNG beside it, as `glossy sheet -o path` does.")
       .def("__repr__", [](const PySheet& x) {

@@ -214,10 +214,9 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
   for (int n; !scenes.empty() && (n = plan.next(done, sheet.seconds, lastPass, widest, noisy())) > 0;) {
     const auto passStart = std::chrono::steady_clock::now();
     for (int j = 0; j < sheet.replicates; ++j) {
-      RenderSettings r{.width = w, .height = h, .spp = n, .firstSample = sheet.replicates * done + j * n,
-                       .maxDepth = settings.maxDepth, .lightSamples = settings.lightSamples, .seed = settings.seed, .threads = settings.threads,
-                       .progress = settings.progress && settings.secondsPerPanel <= 0.0 && settings.targetError <= 0.0,
-                       .control = settings.control};
+      RenderSettings r = settings;
+      r.spp = n, r.firstSample = sheet.replicates * done + j * n;
+      r.progress = settings.progress && settings.secondsPerPanel <= 0.0 && settings.targetError <= 0.0;
       RenderStats stats;
       const std::vector<RgbImage> images = renderPanels(scenes, *scene.camera, r, stats);
       if (settings.control && settings.control->cancelRequested()) throw Cancelled();

@@ -33,26 +33,20 @@ constexpr int kReplicates = 4;
 // HDR-ꟻLIP), so that glossy sheets renders again a sheet made before, rather than resume past it.
 constexpr int kSheetFormat = 2;
 
-struct SheetSettings {
-  int width = 256, height = 256;  // per panel
-  int spp = 64;                   // per pixel, split evenly among the replicates (rounded up to fill them)
+// A render's settings (width and height per panel; spp split evenly among the replicates, rounded up to fill
+// them; control: the tiles of every pass, its total set when the passes are known up front, a fixed --spp;
+// cancelled, renderSheet stops between tiles and throws Cancelled), and how the passes end.
+struct SheetSettings : RenderSettings {
+  SheetSettings() { width = height = 256; }
   // > 0: render in passes until this wall-clock budget per panel (so × the panels rendered) is spent.
   double secondsPerPanel = 0.0;
   // > 0: render in passes until every analytic panel's relative-RMSE interval has at most this half-width,
   // or until spp or the time budget caps it.
   double targetError = 0.0;
-  uint32_t seed = 0;
-  int threads = 0;
-  int maxDepth = 8;
-  int lightSamples = RenderSettings{}.lightSamples;  // at a path's first vertex
-  bool progress = true;
   // With --time or --target-error: one line on stderr per pass (its samples, its widest interval), terminal
   // or not, so that a long run in a batch job's log shows how it goes.
   bool passLines = false;
   std::vector<SheetPanel> panels{sheetPanels().begin(), sheetPanels().end()};
-  // Optional (path_tracer.h): the tiles of every pass; its total is set when the passes are known up front
-  // (a fixed --spp). Cancelled: renderSheet stops between tiles and throws Cancelled.
-  JobControl* control = nullptr;
 };
 
 // renderSheet stopped because its JobControl was cancelled.

@@ -51,7 +51,7 @@ namespace {
 RunResult run(const std::string& prefix, const std::vector<std::string>& args, const std::string& input) {
   TempDir tmp;
   writeText(tmp / "stdin", input);
-  // A test run inside a job array must not shard itself by the array's variables (renderer/cli/shard.h).
+  // A test run inside a job array must not shard itself by the array's variables (renderer/app/shard.h).
   std::string cmd = prefix + "env -u SLURM_ARRAY_TASK_ID -u JOB_COMPLETION_INDEX -u AWS_BATCH_JOB_ARRAY_INDEX " + shellQuote(GLOSSY_EXE);
   for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
   cmd.append(" <").append(shellQuote((tmp / "stdin").string()));

@@ -1,11 +1,11 @@
-#include "renderer/cli/image_memory.h"
+#include "renderer/app/image_memory.h"
 
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "renderer/util/memory.h"
 
 
-namespace glossy::cli {
+namespace glossy::app {
 
 namespace {
 
@@ -22,4 +22,4 @@ void checkImageMemory(int width, int height, int panels, double bytesPerPixel) {
                    " needs about " + gigabytes(need) + ", more than the " + gigabytes(have) + " of memory here");
 }
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 // The material a table or network is of: "alum-bronze" for alum-bronze.binary.xz; InputError naming the
 // file when that is no material name (material_name.h).
@@ -32,4 +32,4 @@ std::string putGlossysFit(MaterialFile& material, Fit fit, bool replacePublished
 // before the lock was taken stays. Returns putGlossysFit's words.
 std::string writeGlossysFit(const std::filesystem::path& path, const std::filesystem::path& data, const Fit& fit, bool replacePublished);
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

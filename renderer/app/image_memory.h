@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 // Bytes per pixel the renderers hold, estimated from their buffers with room to spare: render's image,
 // its accumulation and the EXR being written; a sheet panel's mean and four replicates (60), its error maps
@@ -17,4 +17,4 @@ inline constexpr double kSheetBytesPerPanelPixel = 320.0;
 // bytesPerPixel exceeds the machine's physical memory.
 void checkImageMemory(int width, int height, int panels, double bytesPerPixel);
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 enum class Folder {
   Create,  // missing folders on the way are created when writing (render, sheet)
@@ -22,4 +22,4 @@ void checkOutputFile(const std::filesystem::path& path, std::string_view option,
 // An output folder: a non-empty path that is a writable folder, or that can be created under a writable one.
 void checkOutputFolder(const std::filesystem::path& path, std::string_view option);
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -1,10 +1,11 @@
-#include "renderer/cli/render_job.h"
+#include "renderer/app/render_job.h"
 
 #include "materials/core/notes.h"
 #include "materials/models/registry.h"
-#include "renderer/cli/brdf_options.h"
+#include "renderer/app/brdf_options.h"
+#include "renderer/app/option_specs.h"
 
-namespace glossy::cli {
+namespace glossy::app {
 
 RenderedImage renderImage(const RenderJob& job) {
   const std::string scenePath = job.scene.scenePath();
@@ -44,12 +45,10 @@ RenderedImage renderImage(const RenderJob& job) {
   out.metadata = {
       {"glossy:material", materialText.empty() ? std::string("scene base colours") : materialText},
       {"glossy:fit", override ? override->fit : binding.commonFit.empty() ? std::string("per scene binding") : binding.commonFit},
-      {"glossy:spp", settings.spp},
-      // EXR has no unsigned attribute: seeds beyond int's range are written as their decimal text.
-      settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(settings.seed)}
-                                           : ImageAttribute{"glossy:seed", std::to_string(settings.seed)},
-      {"glossy:maxDepth", settings.maxDepth},
-      {"glossy:lightSamples", settings.lightSamples},
+      {std::string(options::kSpp.attribute), settings.spp},
+      seedAttribute(settings.seed),
+      {std::string(options::kMaxDepth.attribute), settings.maxDepth},
+      {std::string(options::kLightSamples.attribute), settings.lightSamples},
       {"glossy:brdfSampling", job.brdfSampling},
       {"glossy:scene", scenePath},
       {"glossy:env", environment.description()},
@@ -66,4 +65,4 @@ RenderedImage renderImage(const RenderJob& job) {
   return out;
 }
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -3,7 +3,7 @@
 // the same image, bit for bit.
 #pragma once
 
-#include "renderer/cli/scene_options.h"
+#include "renderer/app/scene_options.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/scene/material_binding.h"
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 struct RenderJob {
   SceneOptions scene;
@@ -33,4 +33,4 @@ struct RenderedImage {
 // cancelled the image is unfinished: the caller discards it.
 RenderedImage renderImage(const RenderJob& job);
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -1,4 +1,4 @@
-#include "renderer/cli/brdf_options.h"
+#include "renderer/app/brdf_options.h"
 
 #include "materials/core/input_error.h"
 #include "materials/core/notes.h"
@@ -9,23 +9,7 @@
 #include <cstdio>
 #include <memory>
 
-namespace glossy::cli {
-
-void BrdfOptions::addTo(CLI::App* app) {
-  auto* materialOpt = app->add_option("--material", material, "Material parameter file (TOML)");
-  auto* fitOpt = app->add_option("--fit", fit, "Which fit of the material: MODEL:METRIC, e.g. microfacet:E2");
-  auto* measuredOpt = app->add_option("--measured", measured, "Measured data instead: a MERL .binary (or .binary.xz) table or a .nbrdf network");
-  app->add_option("--merl-dir", merlDir, "Folder with MERL tables for --measured (else $GLOSSY_MERL_DIR)");
-  app->add_option("--smooth-fresnel", smoothFresnel, "Override a smooth fit's Fresnel angle: projected (the fits' convention) or vh")
-      ->check(CLI::IsMember({"projected", "vh"}));
-  materialOpt->needs(fitOpt);
-  fitOpt->needs(materialOpt);
-  measuredOpt->excludes(materialOpt)->excludes(fitOpt);
-  app->callback([app, materialOpt, measuredOpt] {
-    if (measuredOpt->count() == 0 && materialOpt->count() == 0)
-      throw CLI::RequiredError(app->get_name() + ": give --material F --fit MODEL:METRIC, or --measured F.binary");
-  });
-}
+namespace glossy::app {
 
 Brdf BrdfOptions::load() const {
   if (!measured.empty()) return Measured{loadMeasured(findMeasured(measured, merlDir))};
@@ -66,4 +50,4 @@ std::filesystem::path findMeasured(const std::string& given, const std::filesyst
   return *path;
 }
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <string>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 inline constexpr const char* kSettingsAttribute = "glossy:settings";
 
@@ -28,4 +28,4 @@ std::string whyIncomplete(const std::filesystem::path& exr, const std::string& s
 // Call it only holding the sheet's lock: no live run is writing them then.
 size_t removeStaleTemporaries(const std::filesystem::path& exr);
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -1,21 +1,18 @@
-// What glossy render and glossy sheet take from the command line about the scene: the glTF file, the camera
-// and the environment.
+// What a render or a sheet is told about the scene: the glTF file, the camera and the environment
+// (glossy render and sheet: --scene, --camera, --env, --env-constant, --env-rotate).
 #pragma once
 
 #include "renderer/lights/environment.h"
 #include "renderer/scene/scene.h"
 
-#include <CLI/CLI.hpp>
-
 #include <string>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 struct SceneOptions {
   std::string scene, camera, env, envConstant;
   double envRotate = 0.0;
 
-  void addTo(CLI::App* app);
   std::string scenePath() const;  // --scene, else the source tree's scenes/preview.gltf
   // --env FILE (lat-long .exr/.hdr), --env-constant V or R,G,B, or the built-in sky; --env-rotate turns maps
   // and the sky about +Y. InputError naming the option or the file for anything malformed.
@@ -26,4 +23,4 @@ struct SceneOptions {
   Camera cameraOf(const SceneDescription& description, double aspect) const;
 };
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -1,4 +1,4 @@
-#include "renderer/cli/shard.h"
+#include "renderer/app/shard.h"
 
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
@@ -8,7 +8,7 @@
 #include <numeric>
 #include <optional>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 namespace {
 
@@ -101,4 +101,4 @@ std::vector<size_t> shardItems(std::span<const double> costs, const Shard& shard
   return mine;
 }
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -1,13 +1,13 @@
-#include "renderer/cli/fit_output.h"
+#include "renderer/app/fit_output.h"
 
 #include "materials/core/atomic_file.h"
 #include "materials/core/text.h"
 #include "materials/params/material_name.h"
-#include "renderer/cli/brdf_options.h"
+#include "renderer/app/brdf_options.h"
 
 #include <ctime>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 namespace {
 
@@ -78,4 +78,4 @@ std::string writeGlossysFit(const std::filesystem::path& path, const std::filesy
   return said;
 }
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

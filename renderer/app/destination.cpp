@@ -1,10 +1,10 @@
-#include "renderer/cli/destination.h"
+#include "renderer/app/destination.h"
 
 #include "materials/core/input_error.h"
 
 #include <unistd.h>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 namespace {
 
@@ -52,4 +52,4 @@ void checkOutputFolder(const std::filesystem::path& path, std::string_view optio
   checkWritableFolder(path, option, path, true);
 }
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -1,4 +1,4 @@
-#include "renderer/cli/sheet_resume.h"
+#include "renderer/app/sheet_resume.h"
 
 #include "materials/core/atomic_file.h"
 #include "materials/core/input_error.h"
@@ -13,7 +13,7 @@
 
 #include <cstdint>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 std::string contentDigest(const std::filesystem::path& path) {
   uint64_t h = 0xcbf29ce484222325ull;
@@ -64,4 +64,4 @@ size_t removeStaleTemporaries(const std::filesystem::path& exr) {
   return removed;
 }
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 struct Shard {
   int index = 0, count = 1;
@@ -33,4 +33,4 @@ Shard shardFrom(const std::string& option);  // the process's environment
 // rather than fall to a few shards by name.
 std::vector<size_t> shardItems(std::span<const double> costs, const Shard& shard);
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

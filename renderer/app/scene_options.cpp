@@ -1,15 +1,14 @@
-#include "renderer/cli/scene_options.h"
+#include "renderer/app/scene_options.h"
 
 #include "materials/core/input_error.h"
 #include "materials/core/notes.h"
 #include "materials/core/text.h"
 #include "renderer/camera/auto_camera.h"
-#include "renderer/cli/command.h"
 #include "renderer/util/data_dir.h"
 
 #include <cmath>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 namespace {
 
@@ -29,15 +28,6 @@ Rgb parseRgb(const std::string& text, const std::string& option) {
 }
 
 }  // namespace
-
-void SceneOptions::addTo(CLI::App* app) {
-  app->add_option("--scene", scene, "glTF scene (.gltf or .glb); default: scenes/preview.gltf");
-  app->add_option("--camera", camera, "Camera by name, or auto: frame the bound object from the preview scene's angle (default: the scene's first; auto when it has none)");
-  auto* file = app->add_option("--env", env, "Lat-long environment map (.exr, .hdr); default: the built-in sky");
-  auto* constant = app->add_option("--env-constant", envConstant, "Constant environment radiance: V or R,G,B");
-  file->excludes(constant);
-  app->add_option("--env-rotate", envRotate, "Rotate the environment about +Y, degrees")->check(finiteIn(-360.0, 360.0));
-}
 
 std::string SceneOptions::scenePath() const {
   return scene.empty() ? (dataDir() / "scenes/preview.gltf").string() : scene;
@@ -63,4 +53,4 @@ Camera SceneOptions::cameraOf(const SceneDescription& description, double aspect
   throw InputError(where + ": no camera named '" + camera + "'");
 }
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -1,22 +1,19 @@
-// The options that name one BRDF on the command line — --material F --fit MODEL:METRIC, or --measured
+// What names one BRDF — --material F --fit MODEL:METRIC, or --measured
 // F.binary (or F.nbrdf), found as every command finds measured data (findMeasured: --merl-dir,
 // $GLOSSY_MERL_DIR) — shared by the subcommands that evaluate or sample a single BRDF.
 #pragma once
 
 #include "materials/models/brdf.h"
 
-#include <CLI/CLI.hpp>
-
 #include <filesystem>
 #include <memory>
 #include <string>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 struct BrdfOptions {
   std::string material, fit, measured, smoothFresnel, merlDir;
 
-  void addTo(CLI::App* app);
   Brdf load() const;  // InputError naming the file for anything missing or malformed
 };
 
@@ -37,4 +34,4 @@ std::string measuredDatabase(const std::filesystem::path& path);
 // then the working folder (each also as .xz); InputError naming it when none exists.
 std::filesystem::path findMeasured(const std::string& given, const std::filesystem::path& merlDir);
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

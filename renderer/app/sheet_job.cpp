@@ -1,16 +1,17 @@
-#include "renderer/cli/sheet_job.h"
+#include "renderer/app/sheet_job.h"
 
 #include "materials/core/notes.h"
 #include "materials/core/text.h"
 #include "materials/models/registry.h"
-#include "renderer/cli/brdf_options.h"
-#include "renderer/cli/sheet_resume.h"
+#include "renderer/app/brdf_options.h"
+#include "renderer/app/option_specs.h"
+#include "renderer/app/sheet_resume.h"
 #include "renderer/scene/material_binding.h"
 
 #include <chrono>
 #include <cmath>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 namespace {
 
@@ -45,13 +46,16 @@ std::string sheetSettings(const MaterialFile& m, const Stage& stage, const Sheet
   const std::optional<std::filesystem::path> measured = explicitMeasured.empty()
                                                             ? resolveMeasured(m.measured, o.merlDir, m.path.parent_path())
                                                             : std::optional(std::filesystem::path(explicitMeasured));
+  using namespace options;
   const SheetSettings& s = o.settings;
+  // Each option's part as the table names it: KEY=VALUE.
+  const auto part = [](const OptionSpec& spec, const std::string& value) { return "; " + std::string(spec.resumeKey) + "=" + value; };
   return "scene=" + stage.description.source.string() + "; env=" + stage.environment.description() +
-         "; spp=" + std::to_string(s.spp) + "; time=" + formatted("%.17g", s.secondsPerPanel) +
-         "; targetError=" + formatted("%.17g", s.targetError) + "; size=" + std::to_string(s.width) + "x" +
-         std::to_string(s.height) + "; seed=" + std::to_string(s.seed) + "; maxDepth=" + std::to_string(s.maxDepth) +
-         "; lightSamples=" + std::to_string(s.lightSamples) + "; panels=" + panelList(s.panels) +
-         "; half=" + (o.half ? "1" : "0") + "; exposure=" + formatted("%.17g", o.exposure) +
+         part(kSheetSpp, std::to_string(s.spp)) + part(kTime, formatted("%.17g", s.secondsPerPanel)) +
+         part(kTargetError, formatted("%.17g", s.targetError)) + part(kSheetWidth, std::to_string(s.width) + "x" + std::to_string(s.height)) +
+         part(kSeed, std::to_string(s.seed)) + part(kMaxDepth, std::to_string(s.maxDepth)) +
+         part(kLightSamples, std::to_string(s.lightSamples)) + "; panels=" + panelList(s.panels) + "; half=" + (o.half ? "1" : "0") +
+         part(kExposure, formatted("%.17g", o.exposure)) +
          "; measured=" + (measured ? measured->string() : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
          contentDigest(m.path) + "; version=" + GLOSSY_VERSION + "; format=" + std::to_string(kSheetFormat);
 }
@@ -68,18 +72,17 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
       {"glossy:materialName", m.name},  // what the report names the material by, whatever the file is called
       {"glossy:fit", std::string("sheet")},
       {"glossy:measured", sheet.measured() ? sheet.measured()->note : std::string("none: no measured panel")},
-      {"glossy:spp", std::to_string(sheet.spp)},
-      {"glossy:secondsPerPanel", float(o.settings.secondsPerPanel)},
-      {"glossy:targetError", float(o.settings.targetError)},
+      {std::string(options::kSheetSpp.attribute), std::to_string(sheet.spp)},
+      {std::string(options::kTime.attribute), float(o.settings.secondsPerPanel)},
+      {std::string(options::kTargetError.attribute), float(o.settings.targetError)},
       {"glossy:widestInterval", float(std::min(sheet.widestHalfWidth, 1e30))},
-      o.settings.seed <= uint32_t(INT32_MAX) ? ImageAttribute{"glossy:seed", int(o.settings.seed)}
-                                             : ImageAttribute{"glossy:seed", std::to_string(o.settings.seed)},
-      {"glossy:maxDepth", o.settings.maxDepth},
-      {"glossy:lightSamples", o.settings.lightSamples},
+      seedAttribute(o.settings.seed),
+      {std::string(options::kMaxDepth.attribute), o.settings.maxDepth},
+      {std::string(options::kLightSamples.attribute), o.settings.lightSamples},
       {"glossy:scene", stage.description.source.string()},
       {"glossy:env", stage.environment.description()},
       {"glossy:conventions", modelConventions()},
-      {"glossy:pngExposure", float(o.exposure)},
+      {std::string(options::kExposure.attribute), float(o.exposure)},
       {"glossy:droppedSamples", int(std::min<uint64_t>(sheet.droppedSamples, INT32_MAX))},
       {"glossy:renderSeconds", float(seconds)},
       {"glossy:version", std::string(GLOSSY_VERSION)},
@@ -121,4 +124,4 @@ void writeSheetFiles(const MadeSheet& made, const Stage& stage, const SheetJob& 
                 job.half ? PixelType::Half : PixelType::Float);
 }
 
-}  // namespace glossy::cli
+}  // namespace glossy::app

@@ -4,14 +4,14 @@
 // same sheet.
 #pragma once
 
-#include "renderer/cli/scene_options.h"
+#include "renderer/app/scene_options.h"
 #include "renderer/sheet/sheet.h"
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 struct SheetJob {
   SceneOptions scene;
@@ -61,4 +61,4 @@ void writeSheetFiles(const MadeSheet& made, const Stage& stage, const SheetJob& 
 // Everything a sheet's pixels depend on, as one line: glossy sheets keeps a sheet only if this matches.
 std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetJob& job, const std::string& explicitMeasured);
 
-}  // namespace glossy::cli
+}  // namespace glossy::app
