@@ -27,6 +27,9 @@ std::vector<LibraryFit> supplementFits();
 // η ≥ 99.99; each rule takes fits no earlier rule took. Supplement fits are left out (tested anyway).
 std::vector<LibraryFit> extremeFits();
 
+// GGX beyond its library fits: a sharp lobe (α = 0.02) and a broad one (α = 0.5), over a Lambertian base.
+std::vector<LibraryFit> ggxChi2Fits();
+
 // View elevations: head-on, two in between, and grazing (82°).
 inline constexpr std::array<double, 4> kViewAnglesDeg = {0.0, 35.0, 65.0, 82.0};
 inline constexpr std::array<double, 4> kViewAngles = {0.0, 35.0 * kPi / 180.0, 65.0 * kPi / 180.0,
@@ -60,8 +63,8 @@ SamplingCheck checkSampler(const Brdf& brdf, const Vec3& V, const Chi2Grid& grid
 // The same on gridFor(c.fit.brdf, V).
 SamplingCheck checkSampler(const SamplingCase& c, long samples, unsigned seed, double alpha);
 
-// The χ² family of the default suite: analytic samplers (the supplement's and the extreme fits, and
-// Lambertian, at the four view angles) and measured ones (kMeasuredChi2Tests); one family-wise
+// The χ² family of the default suite: analytic samplers (the supplement's and the extreme fits, Lambertian
+// and ggxChi2Fits, at the four view angles) and measured ones (kMeasuredChi2Tests); one family-wise
 // significance of 0.01 over all of them.
 const std::vector<SamplingCase>& analyticChi2Family();
 inline constexpr int kMeasuredChi2Tests = (3 + 6) * 4;  // 3 synthetic tables + shared/merl's 6, 4 views
