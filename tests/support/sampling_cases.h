@@ -20,7 +20,8 @@ struct LibraryFit {
 
 // Every fit of every parameter file in materials/.
 std::vector<LibraryFit> libraryFits();
-// The 36 fits of the six materials of the supplement text (shared/seed/supplement.txt).
+// The 42 fits of the six materials of the supplement text (shared/seed/supplement.txt): its 36 and glossy's
+// GGX E2 fits.
 std::vector<LibraryFit> supplementFits();
 // The most extreme published fits, chosen by rule from the library: the 5 largest AS n; the 3 smallest and
 // 3 largest CT m; for Microfacet and Smooth each the 3 largest B and the 2 smallest C; every fit with
