@@ -204,7 +204,10 @@ TEST(CliImport, RegeneratesTheCommittedLibraryByteForByte) {
   for (const auto& e : std::filesystem::directory_iterator(out.path())) {
     const auto committed = materialsDir() / e.path().filename();
     ASSERT_TRUE(std::filesystem::exists(committed)) << e.path().filename() << " is not committed";
-    EXPECT_EQ(readText(e.path()), readText(committed)) << e.path().filename() << " differs: run scripts/generate-materials";
+    // glossy's own fits beside the published ones (glossy fit) are not the import's: compared without them.
+    MaterialFile published = loadMaterialFile(committed);
+    std::erase_if(published.fits, [](const Fit& f) { return f.id.isGlossys(); });
+    EXPECT_EQ(readText(e.path()), toToml(published)) << e.path().filename() << " differs: run scripts/generate-materials";
     ++files;
   }
   EXPECT_EQ(files, 100u);

@@ -85,7 +85,7 @@ TEST(CliFit, AddsItsFitBesideThePublishedOneAndNeverReplacesItUnasked) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("the published cook-torrance:E2 fit stays beside it"), std::string::npos) << r.err;
   MaterialFile m = loadMaterialFile(toml);
-  ASSERT_EQ(m.fits.size(), 7u);
+  ASSERT_EQ(m.fits.size(), published.fits.size() + 1);
   EXPECT_EQ(*m.findExact(ctE2), *published.findExact(ctE2)) << "the paper's fit untouched";
   EXPECT_EQ(m.find(ctE2), m.findExact(ctE2)) << "MODEL:METRIC still names the paper's";
   const Fit* mine = m.findExact(glossys);
@@ -99,7 +99,7 @@ TEST(CliFit, AddsItsFitBesideThePublishedOneAndNeverReplacesItUnasked) {
   r = runGlossy(fit);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("replaces glossy's earlier cook-torrance:E2:glossy fit (E2 = "), std::string::npos) << r.err;
-  EXPECT_EQ(loadMaterialFile(toml).fits.size(), 7u);
+  EXPECT_EQ(loadMaterialFile(toml).fits.size(), published.fits.size() + 1);
 
   // A sheet of the file: the paper's fit in its slot, under its label.
   const auto sheet = [&](const std::string& name) {
@@ -115,7 +115,7 @@ TEST(CliFit, AddsItsFitBesideThePublishedOneAndNeverReplacesItUnasked) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("removes the published cook-torrance:E2 fit (--replace)"), std::string::npos) << r.err;
   m = loadMaterialFile(toml);
-  EXPECT_EQ(m.fits.size(), 6u);
+  EXPECT_EQ(m.fits.size(), published.fits.size());
   EXPECT_EQ(m.findExact(ctE2), nullptr);
   ASSERT_NE(m.find(ctE2), nullptr);
   EXPECT_TRUE(m.find(ctE2)->id.isGlossys()) << "glossy's stays marked as glossy's";
@@ -202,7 +202,7 @@ TEST(CliFit, BatchAddsBesideThePublishedFitsAndResumesPastItsOwnOnly) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.err.find("1 fits, 0 already done"), std::string::npos) << r.err;
   const MaterialFile m = loadMaterialFile(dir / "lib" / "alum-bronze.toml");
-  ASSERT_EQ(m.fits.size(), 7u);
+  ASSERT_EQ(m.fits.size(), parseMaterialToml(before, "before").fits.size() + 1);
   EXPECT_EQ(*m.findExact(FitId::parse("cook-torrance:E2", "test")),
             *parseMaterialToml(before, "before").findExact(FitId::parse("cook-torrance:E2", "test")));
   ASSERT_NE(m.findExact(FitId::parse("cook-torrance:E2:glossy", "test")), nullptr);
@@ -236,7 +236,7 @@ TEST(CliError, PublishedFitsAgainstTheSharedTablesGiveFiniteErrors) {
                                  (materialsDir() / "alum-bronze.toml").string(), "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto json = nlohmann::json::parse(r.out);
-  ASSERT_EQ(json["fits"].size(), 6u);
+  ASSERT_EQ(json["fits"].size(), loadMaterialFile(materialsDir() / "alum-bronze.toml").fits.size());
   for (const auto& f : json["fits"]) {
     EXPECT_TRUE(std::isfinite(f["E1"].get<double>()) && f["E1"].get<double>() > 0.0) << f;
     EXPECT_TRUE(std::isfinite(f["E2"].get<double>()) && f["E2"].get<double>() > 0.0) << f;

@@ -186,7 +186,7 @@ TEST(MaterialFile, EveryCommittedLibraryFileLoadsWithTheSixPublishedFits) {
     const MaterialFile m = loadMaterialFile(e.path());
     EXPECT_EQ(m.name + ".toml", e.path().filename().string());
     EXPECT_EQ(m.measured, m.name + ".binary");
-    EXPECT_EQ(m.fits.size(), 6u) << m.name;
+    EXPECT_EQ(std::count_if(m.fits.begin(), m.fits.end(), [](const Fit& f) { return !f.id.isGlossys(); }), 6) << m.name;
     for (const char* id : {"microfacet:E2", "smooth:E2", "ashikhmin-shirley:E1", "ashikhmin-shirley:E2", "cook-torrance:E1", "cook-torrance:E2"})
       EXPECT_NE(m.findExact(FitId::parse(id, "test")), nullptr) << m.name << " lacks the published " << id;
     ++files;

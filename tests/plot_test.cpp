@@ -118,7 +118,8 @@ std::map<std::string, std::vector<std::string>> fitArgs(const std::filesystem::p
   std::map<std::string, std::vector<std::string>> args;
   const std::map<std::string, std::string> labels = {
       {"microfacet:E2", "Microfacet E2"}, {"smooth:E2", "Smooth E2"}, {"ashikhmin-shirley:E1", "AS E1"},
-      {"ashikhmin-shirley:E2", "AS E2"},  {"cook-torrance:E1", "CT E1"}, {"cook-torrance:E2", "CT E2"}};
+      {"ashikhmin-shirley:E2", "AS E2"},  {"cook-torrance:E1", "CT E1"}, {"cook-torrance:E2", "CT E2"},
+      {"ggx:E2:glossy", "GGX E2 (glossy fit)"}};
   for (const Fit& f : m.fits) args[labels.at(f.id.str())] = {"eval", "--material", material.string(), "--fit", f.id.str()};
   return args;
 }
@@ -154,7 +155,7 @@ TEST(PlotCli, CsvMatchesEvalWithMeasuredData) {
     }
   }
   EXPECT_EQ(kinds.count("theta_h"), 1u);
-  EXPECT_EQ(kinds.count("image_slice"), 7u);  // measured and the six fits
+  EXPECT_EQ(kinds.count("image_slice"), 8u);  // measured, the six published fits and glossy's GGX E2
   EXPECT_EQ(kinds.count("albedo"), 1u);
   EXPECT_EQ(kinds.count("polar"), 1u);
 
@@ -189,7 +190,7 @@ TEST(PlotCli, CsvMatchesEvalWithoutMeasuredData) {
     EXPECT_NE(std::string(f["caption"]).find("measured data: none"), std::string::npos) << f["caption"];
     EXPECT_EQ(readCsv(tmp / "out" / std::string(f["csv"]))[0].count("Measured"), 0u) << f["csv"];
   }
-  EXPECT_EQ(slices, 6u);
+  EXPECT_EQ(slices, 7u);  // the six published fits and glossy's GGX E2
   checkCsvsAgainstEval(tmp / "out", fitArgs(material));
 }
 

@@ -1,8 +1,8 @@
 // χ² proof of every model's sampler: sample() draws from exactly the density pdf() returns.
 //
-// The family: all 36 fits of the six supplement materials and the most extreme published fits of the
+// The family: all 42 fits of the six supplement materials (36 published, glossy's 6 GGX E2) and the most extreme published fits of the
 // library (largest n, largest B, smallest C, smallest and largest m, η = 99.999), each at four view angles
-// up to 82°, plus Lambertian. 10⁶ samples per test on a grid of cells that follows the lobe
+// up to 82°, plus Lambertian and GGX at α = 0.02 and 0.5 (ggxChi2Fits). 10⁶ samples per test on a grid of cells that follows the lobe
 // (tests/support/chi2.h); family-wise significance 0.01 with Šidák's correction, over these and the
 // measured sampler's tests (tests/measured_sampling_test.cpp). Negative controls show the
 // test has the power to reject samplers that are 1–3 % off. The same test over every fit of the library
@@ -28,12 +28,12 @@ class Chi2 : public ::testing::TestWithParam<SamplingCase> {};
 }  // namespace
 
 TEST(Chi2Family, CoversTheSupplementAndAtLeastTwentyExtremeFitsAtFourViewAngles) {
-  EXPECT_EQ(supplementFits().size(), 36u);
+  EXPECT_EQ(supplementFits().size(), 42u);
   EXPECT_GE(extremeFits().size(), 20u);
   std::string names;
   for (const LibraryFit& f : extremeFits()) names += (names.empty() ? "" : ", ") + f.name;
   RecordProperty("extremeFits", names);
-  EXPECT_EQ(family().size(), (supplementFits().size() + extremeFits().size() + 1) * kViewAngles.size());
+  EXPECT_EQ(family().size(), (supplementFits().size() + extremeFits().size() + 1 + ggxChi2Fits().size()) * kViewAngles.size());
   RecordProperty("familySize", int(family().size()) + kMeasuredChi2Tests);
   RecordProperty("perTestAlpha", std::to_string(familyAlpha()));
 }
@@ -112,6 +112,9 @@ TEST(Chi2Power, RejectsSamplersOneToThreePercentOff) {
        Smooth{Rgb(0.0), Rgb(1.0), 1e4, 1.0, 1.5, false}, 35 * deg},
       {"Smooth B=1e4 C=1.5 drawn with B·1.04", Smooth{Rgb(0.0), Rgb(1.0), 1e4, 1.5, 1.5, false},
        Smooth{Rgb(0.0), Rgb(1.0), 1e4 * 1.04, 1.5, 1.5, false}, 65 * deg},
+      {"GGX α=0.02 drawn with α·1.02", Ggx{Rgb(0.0), Rgb(1.0), 0.02, 1.5}, Ggx{Rgb(0.0), Rgb(1.0), 0.02 * 1.02, 1.5},
+       82 * deg},
+      {"GGX α=0.5 drawn with α·1.03", Ggx{Rgb(0.0), Rgb(1.0), 0.5, 1.5}, Ggx{Rgb(0.0), Rgb(1.0), 0.5 * 1.03, 1.5}, 0.0},
       {"lobe choice 0.023 off (Kd·1.1 in the mixture weight)", CookTorrance{Rgb(0.2), Rgb(1.0), 0.1, 1.5},
        CookTorrance{Rgb(0.22), Rgb(1.0), 0.1, 1.5}, 35 * deg},
   };

@@ -6,6 +6,7 @@
 
 #include "materials/models/ashikhmin_shirley.h"
 #include "materials/models/cook_torrance.h"
+#include "materials/models/ggx.h"
 #include "materials/models/lambertian.h"
 #include "materials/models/microfacet.h"
 #include "materials/models/smooth.h"
@@ -15,6 +16,6 @@ namespace glossy {
 template <class... Models>
 struct ModelList {};
 
-using BuiltinModels = ModelList<Microfacet, Smooth, AshikhminShirley, CookTorrance, Lambertian>;
+using BuiltinModels = ModelList<Microfacet, Smooth, AshikhminShirley, CookTorrance, Lambertian, Ggx>;
 
 }  // namespace glossy

@@ -97,6 +97,10 @@ std::vector<LibraryFit> extremeFits() {
   return out;
 }
 
+std::vector<LibraryFit> ggxChi2Fits() {
+  return {{"ggx alpha=0.02", Ggx{Rgb(0.1), Rgb(1.0), 0.02, 1.5}}, {"ggx alpha=0.5", Ggx{Rgb(0.1), Rgb(1.0), 0.5, 1.5}}};
+}
+
 Vec3 viewDirection(double theta) {
   const double phi = 0.6;
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
@@ -140,6 +144,8 @@ double lobeWidth(const Brdf& brdf) {
     width = 2.0 * std::sqrt(x * (2.0 - x));
   } else if (const auto* m = brdf.as<Smooth>()) {
     width = std::sqrt(abcQuantile(m->b, m->c, 4.0, q));  // d = |D_P|
+  } else if (const auto* m = brdf.as<Ggx>()) {
+    width = 2.0 * std::atan(m->alpha * std::sqrt(q / (1.0 - q)));  // D cos θ_h: P(tan²θ_h ≤ t) = t/(α² + t)
   }
   return std::clamp(width, 1e-5, 0.5);
 }
@@ -180,6 +186,8 @@ const std::vector<SamplingCase>& analyticChi2Family() {
       for (const LibraryFit& f : fits)
         for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
     for (const SamplingCase& c : atViewAngles({"lambertian", Lambertian{Rgb(0.5)}})) all.push_back(c);
+    for (const LibraryFit& f : ggxChi2Fits())
+      for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
     return all;
   }();
   return cases;

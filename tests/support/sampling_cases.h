@@ -20,12 +20,16 @@ struct LibraryFit {
 
 // Every fit of every parameter file in materials/.
 std::vector<LibraryFit> libraryFits();
-// The 36 fits of the six materials of the supplement text (shared/seed/supplement.txt).
+// The 42 fits of the six materials of the supplement text (shared/seed/supplement.txt): its 36 and glossy's
+// GGX E2 fits.
 std::vector<LibraryFit> supplementFits();
 // The most extreme published fits, chosen by rule from the library: the 5 largest AS n; the 3 smallest and
 // 3 largest CT m; for Microfacet and Smooth each the 3 largest B and the 2 smallest C; every fit with
 // η ≥ 99.99; each rule takes fits no earlier rule took. Supplement fits are left out (tested anyway).
 std::vector<LibraryFit> extremeFits();
+
+// GGX beyond its library fits: a sharp lobe (α = 0.02) and a broad one (α = 0.5), over a Lambertian base.
+std::vector<LibraryFit> ggxChi2Fits();
 
 // View elevations: head-on, two in between, and grazing (82°).
 inline constexpr std::array<double, 4> kViewAnglesDeg = {0.0, 35.0, 65.0, 82.0};
@@ -60,8 +64,8 @@ SamplingCheck checkSampler(const Brdf& brdf, const Vec3& V, const Chi2Grid& grid
 // The same on gridFor(c.fit.brdf, V).
 SamplingCheck checkSampler(const SamplingCase& c, long samples, unsigned seed, double alpha);
 
-// The χ² family of the default suite: analytic samplers (the supplement's and the extreme fits, and
-// Lambertian, at the four view angles) and measured ones (kMeasuredChi2Tests); one family-wise
+// The χ² family of the default suite: analytic samplers (the supplement's and the extreme fits, Lambertian
+// and ggxChi2Fits, at the four view angles) and measured ones (kMeasuredChi2Tests); one family-wise
 // significance of 0.01 over all of them.
 const std::vector<SamplingCase>& analyticChi2Family();
 inline constexpr int kMeasuredChi2Tests = (3 + 6) * 4;  // 3 synthetic tables + shared/merl's 6, 4 views
