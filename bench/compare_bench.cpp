@@ -21,7 +21,7 @@
 // efficiency table's constant light, Environment::constant); --measured renders every mesh with a MERL
 // table and glossy's tabulated sampler for it (Measured), as `glossy render --measured` does.
 #include "bench/ray_replay.h"
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/merl/merl_table.h"
 #include "renderer/image/exr_image.h"
 #include "renderer/integrator/path_tracer.h"

@@ -5,7 +5,7 @@
 // seconds (all threads) and wall seconds, then the median and maximum of the totals over the files.
 //   build/bench/measured_load --threads 1 materials/library/*/*.nbrdf ../shared/merl/chrome.binary.xz
 #include "materials/core/lane_math.h"
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 #include "materials/fitting/metric.h"
 #include "materials/models/measured.h"
 #include "renderer/app/brdf_options.h"

@@ -1,6 +1,6 @@
 // Outputs are written through a temporary renamed into place; a temporary that exists when the process is
 // interrupted (SIGINT, SIGTERM, SIGHUP) is removed by the handler, and the process still ends by the signal.
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>

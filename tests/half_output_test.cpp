@@ -1,7 +1,7 @@
 // Image files hold no Inf or NaN: half output clamps to the largest finite half (65504) and float output
 // to float's largest, NaN is written as 0, and the pixels so changed are counted in the metadata; the
 // renders behind `render --half` and `sheet --half` under a very bright sky show it.
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 #include "renderer/image/exr_image.h"
 #include "tests/support/test_support.h"
 

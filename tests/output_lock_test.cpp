@@ -1,7 +1,7 @@
-// One writer per destination (materials/core/output_lock.h): a second lock on a destination is refused
+// One writer per destination (renderer/util/output_lock.h): a second lock on a destination is refused
 // naming it; the lock file, and folders made for it, are gone once released; a file of the lock's name that
 // glossy did not make is left alone; and two glossy runs to one -o never both write it.
-#include "materials/core/output_lock.h"
+#include "renderer/util/output_lock.h"
 #include "renderer/image/exr_image.h"
 #include "tests/support/test_support.h"
 

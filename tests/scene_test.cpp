@@ -2,7 +2,7 @@
 // transforms, cameras, materials, malformed input), and on the committed scenes/sphere.gltf and
 // scenes/preview.gltf.
 #include "materials/core/input_error.h"
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 #include "renderer/scene/embree_scene.h"
 #include "renderer/scene/scene.h"
 #include "tests/support/gltf_doc.h"

@@ -1,7 +1,7 @@
 #include "renderer/app/brdf_options.h"
 
 #include "materials/core/input_error.h"
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 #include "materials/core/text.h"
 #include "materials/nbrdf/neural_brdf.h"
 #include "materials/params/material_file.h"

@@ -1,6 +1,6 @@
 #include "renderer/app/fit_output.h"
 
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/text.h"
 #include "materials/params/material_name.h"
 #include "renderer/app/brdf_options.h"

@@ -1,7 +1,7 @@
 #include "renderer/app/scene_options.h"
 
 #include "materials/core/input_error.h"
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 #include "materials/core/text.h"
 #include "renderer/camera/auto_camera.h"
 #include "renderer/util/data_dir.h"

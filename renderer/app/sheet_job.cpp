@@ -1,6 +1,6 @@
 #include "renderer/app/sheet_job.h"
 
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 #include "materials/core/text.h"
 #include "materials/models/registry.h"
 #include "renderer/app/brdf_options.h"

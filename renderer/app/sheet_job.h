@@ -51,7 +51,7 @@ struct MadeSheet {
 
 // Loads the material and its measured data (`explicitMeasured`, else the file's own: measuredOf), then
 // renders its sheet. InputError naming the file for bad input, before rendering. A --target-error the
-// passes stopped short of is noted (materials/core/notes.h), with the interval they reached.
+// passes stopped short of is noted (renderer/util/notes.h), with the interval they reached.
 MadeSheet makeMaterialSheet(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
                             const std::string& explicitMeasured);
 // The PNG beside `exr`, then the EXR with its metadata (the settings line resume compares last: a sheet whose

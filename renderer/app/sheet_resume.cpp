@@ -1,6 +1,6 @@
 #include "renderer/app/sheet_resume.h"
 
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/core/input_file.h"
 #include "materials/core/text.h"

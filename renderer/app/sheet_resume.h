@@ -2,7 +2,7 @@
 // of this run; anything else (a 0-byte or truncated EXR, a missing layer, a PNG that is missing, does not
 // open as a PNG or is not the size the settings give, other settings) is rendered again. The settings travel
 // in the EXR as the glossy:settings attribute. Runs sharing a folder take turns per sheet (each holds the
-// sheet's OutputLock, materials/core/output_lock.h), and the one holding a sheet clears the temporaries an
+// sheet's OutputLock, renderer/util/output_lock.h), and the one holding a sheet clears the temporaries an
 // interrupted write of it left — glossy's own only.
 #pragma once
 

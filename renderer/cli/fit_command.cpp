@@ -1,9 +1,9 @@
 // glossy fit: fit an analytic model to a measured table under E1 or E2, writing or updating the
 // material's parameter file; with --measured-dir, every model and metric for every table, resumably.
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
-#include "materials/core/notes.h"
-#include "materials/core/output_lock.h"
+#include "renderer/util/notes.h"
+#include "renderer/util/output_lock.h"
 #include "materials/core/text.h"
 #include "materials/fitting/fitter.h"
 #include "renderer/app/brdf_options.h"

@@ -1,5 +1,5 @@
 // glossy import: the paper's published parameters (supplement text, .fit lines) → one TOML per material.
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/params/importer.h"
 #include "renderer/app/destination.h"

@@ -1,8 +1,8 @@
 // glossy: compare analytic BRDF models with measured ones. Exit status (shared/spec/interfaces.md):
 // 0 success, 2 bad usage or bad input (one line on stderr naming the file and problem), 1 anything else.
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 #include "renderer/cli/command.h"
 
 #include <algorithm>
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  // Notes wait for the input to prove good (materials/core/notes.h): a bad-input error is the only line.
+  // Notes wait for the input to prove good (renderer/util/notes.h): a bad-input error is the only line.
   try {
     for (const cli::Command& c : commands)
       if (c.app->parsed()) {

@@ -3,9 +3,9 @@
 //                                             a published fit never replaced unless --replace)
 //   glossy merge sheets DIR --csv F --json F  every sheet's error figures in one table
 // Both read and check everything before writing anything, and write atomically.
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
-#include "materials/core/output_lock.h"
+#include "renderer/util/output_lock.h"
 #include "materials/core/text.h"
 #include "materials/params/material_file.h"
 #include "renderer/app/destination.h"

@@ -2,8 +2,8 @@
 // directional albedo, in-plane polar lobes — each as SVG, PNG and the CSV of its numbers, indexed by
 // plots.json (renderer/plot/, docs/plots.md).
 #include "materials/core/input_error.h"
-#include "materials/core/notes.h"
-#include "materials/core/output_lock.h"
+#include "renderer/util/notes.h"
+#include "renderer/util/output_lock.h"
 #include "materials/params/material_file.h"
 #include "renderer/app/brdf_options.h"
 #include "renderer/app/destination.h"

@@ -1,6 +1,6 @@
 // glossy render: one image of a glTF scene under an environment, as shared/spec/interfaces.md states.
-#include "materials/core/notes.h"
-#include "materials/core/output_lock.h"
+#include "renderer/util/notes.h"
+#include "renderer/util/output_lock.h"
 #include "renderer/app/destination.h"
 #include "renderer/app/image_memory.h"
 #include "renderer/app/render_job.h"

@@ -1,6 +1,6 @@
 // glossy report: a static, offline HTML site over a folder of sheets and their plots
 // (renderer/report/report_site.h; docs/report.md).
-#include "materials/core/output_lock.h"
+#include "renderer/util/output_lock.h"
 #include "renderer/app/destination.h"
 #include "renderer/cli/command.h"
 #include "renderer/plot/plot_output.h"

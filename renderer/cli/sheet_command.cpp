@@ -1,8 +1,8 @@
 // glossy sheet / glossy sheets: a comparison grid (by default the supplement's) for one material, or for many
 // (shared/spec/interfaces.md; renderer/sheet/sheet.h has the layout and the error figures).
 #include "materials/core/input_error.h"
-#include "materials/core/notes.h"
-#include "materials/core/output_lock.h"
+#include "renderer/util/notes.h"
+#include "renderer/util/output_lock.h"
 #include "materials/core/text.h"
 #include "materials/params/material_file.h"
 #include "renderer/app/destination.h"

@@ -1,9 +1,9 @@
 #include "renderer/image/exr_image.h"
 
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/core/input_file.h"
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 #include "materials/core/text.h"
 #include "renderer/image/image_input.h"
 #include "renderer/util/memory.h"

@@ -1,7 +1,7 @@
 // A folder glossy fills, and its manifest (owned_folder.h).
 #include "renderer/output/owned_folder.h"
 
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 

@@ -10,7 +10,7 @@
 // The manifest is written before the first file, listing the earlier files and the planned ones, and again
 // at the end with the planned ones only, when the earlier files no longer planned are removed. So a run cut
 // short (an error, a signal) leaves a folder whose every glossy file is listed, which the next run may
-// replace; the files themselves are written atomically (materials/core/atomic_file.h).
+// replace; the files themselves are written atomically (renderer/util/atomic_file.h).
 #pragma once
 
 #include <filesystem>

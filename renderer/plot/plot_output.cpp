@@ -1,6 +1,6 @@
 #include "renderer/plot/plot_output.h"
 
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "renderer/plot/svg_to_png.h"
 
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
 #include "renderer/plot/svg_to_png.h"
 
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/text.h"
 
 #include <spawn.h>

@@ -1,8 +1,8 @@
 // glossy.error and glossy.fit: the metrics E1 and E2 of Löw et al. 2012 and the fitter behind `glossy error`
 // and `glossy fit` (docs/fitting.md), the same numbers for the same table.
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
-#include "materials/core/output_lock.h"
+#include "renderer/util/output_lock.h"
 #include "materials/fitting/fitter.h"
 #include "renderer/app/destination.h"
 #include "renderer/app/fit_output.h"

@@ -1,7 +1,7 @@
 // The Python module `glossy` (its compiled part, glossy._core; the package is renderer/python/glossy/):
 // the models, measured data, fitting and rendering on NumPy arrays. docs/python.md shows it at work.
 #include "materials/core/input_error.h"
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 #include "materials/core/text.h"
 #include "renderer/python/module_support.h"
 #include "renderer/util/data_dir.h"

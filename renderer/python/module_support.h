@@ -3,7 +3,7 @@
 // the notes the CLI prints become Python warnings), and checks keyword arguments as the CLI checks options.
 #pragma once
 
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 #include "materials/core/types.h"
 #include "renderer/app/option_specs.h"
 #include "renderer/image/exr_image.h"

@@ -1,7 +1,7 @@
 // Plot pictures for the site (plot_picture.h).
 #include "renderer/report/plot_picture.h"
 
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "renderer/image/image_input.h"

@@ -1,7 +1,7 @@
 // Building the report site (report_site.h).
 #include "renderer/report/report_site.h"
 
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "renderer/output/owned_folder.h"

@@ -5,7 +5,7 @@
 
 #include "materials/core/input_error.h"
 #include "materials/core/input_file.h"
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 #include "materials/core/text.h"
 #include "renderer/scene/gltf_preflight.h"
 

@@ -1,4 +1,4 @@
-#include "materials/core/notes.h"
+#include "renderer/util/notes.h"
 
 #include <cstdio>
 #include <mutex>

@@ -1,4 +1,4 @@
-#include "materials/core/output_lock.h"
+#include "renderer/util/output_lock.h"
 
 #include <cerrno>
 #include <cstring>

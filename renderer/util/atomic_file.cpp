@@ -1,4 +1,4 @@
-#include "materials/core/atomic_file.h"
+#include "renderer/util/atomic_file.h"
 
 #include <array>
 #include <atomic>
