@@ -18,6 +18,7 @@ namespace glossy {
 struct AshikhminShirley {
   static constexpr std::string_view kName = "ashikhmin-shirley";
   static constexpr std::string_view kLabel = "Ashikhmin-Shirley";
+  static constexpr double kFitCost = 1.5;  // half as long again as Microfacet: docs/cluster.md
   static constexpr std::string_view kShortLabel = "AS";
   static constexpr std::string_view kConventions = "Fresnel at <V,H>";
   static constexpr ParamSpec kParams[] = {

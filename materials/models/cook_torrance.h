@@ -17,6 +17,7 @@ namespace glossy {
 struct CookTorrance {
   static constexpr std::string_view kName = "cook-torrance";
   static constexpr std::string_view kLabel = "Cook-Torrance";
+  static constexpr double kFitCost = 1.5;  // half as long again as Microfacet: docs/cluster.md
   static constexpr std::string_view kShortLabel = "CT";
   static constexpr std::string_view kConventions = "1/pi in the specular denominator (not in D), Fresnel at <V,H>";
   static constexpr ParamSpec kParams[] = {

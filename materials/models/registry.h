@@ -3,7 +3,7 @@
 // `--fit` and `--model` validation, the fitter, the sheets' panels — asks here.
 //
 // Adding a model: write its header (eval/sample/pdf + kName/kLabel/kParams/fromParams, optionally
-// kShortLabel and kConventions) and add it to BuiltinModels in builtin_models.h. A model outside the
+// kShortLabel, kConventions and kFitCost) and add it to BuiltinModels in builtin_models.h. A model outside the
 // library (a plugin, a test) is registered instead: registerModel(modelInfo<M>()).
 #pragma once
 
@@ -21,6 +21,7 @@ struct ModelInfo {
   std::string_view label;       // for people: "Cook-Torrance"
   std::string_view shortLabel;  // for a sheet panel's label: "CT"
   std::string_view conventions; // how the published formula is read, for image metadata; may be empty
+  double fitCost = 1.0;         // a fit's expected cost, in units of a Microfacet fit (kFitCost; docs/cluster.md)
   std::span<const ParamSpec> params;
   Brdf (*make)(const ParamSet&);
 };
@@ -30,6 +31,7 @@ ModelInfo modelInfo() {
   ModelInfo info{M::kName, M::kLabel, M::kLabel, {}, M::kParams, [](const ParamSet& p) -> Brdf { return M::fromParams(p); }};
   if constexpr (requires { M::kShortLabel; }) info.shortLabel = M::kShortLabel;
   if constexpr (requires { M::kConventions; }) info.conventions = M::kConventions;
+  if constexpr (requires { M::kFitCost; }) info.fitCost = M::kFitCost;
   return info;
 }
 

@@ -6,6 +6,7 @@
 #include "renderer/util/output_lock.h"
 #include "materials/core/text.h"
 #include "materials/fitting/fitter.h"
+#include "materials/models/registry.h"
 #include "renderer/app/brdf_options.h"
 #include "renderer/app/destination.h"
 #include "renderer/app/fit_output.h"
@@ -94,17 +95,12 @@ std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
   return out;
 }
 
-// What fitting a table costs, in units of a Microfacet or Smooth fit under one metric at the default settings
-// (Ashikhmin-Shirley and Cook-Torrance take half as long again: docs/cluster.md, "Expected cost"). Loading is
-// a small part of a unit for a .binary.xz and a .nbrdf alike, so every table costs the same.
+// What fitting a table costs, in units of a Microfacet fit under one metric at the default settings (each
+// model's fitCost: docs/cluster.md, "Expected cost"). Loading is a small part of a unit for a .binary.xz and a
+// .nbrdf alike, so every table costs the same.
 double fitCost(const std::vector<std::string>& models, size_t metrics) {
-  static const std::map<std::string, double, std::less<>> kModelCost = {
-      {"microfacet", 1.0}, {"smooth", 1.0}, {"ashikhmin-shirley", 1.5}, {"cook-torrance", 1.5}};
   double cost = 0.0;
-  for (const std::string& m : models) {
-    const auto it = kModelCost.find(m);
-    cost += double(metrics) * (it == kModelCost.end() ? 1.0 : it->second);
-  }
+  for (const std::string& m : models) cost += double(metrics) * requireModel(m, "--model").fitCost;
   return cost;
 }
 

@@ -14,7 +14,7 @@ namespace {
 constexpr GridFit kGridFits[] = {
     {"microfacet:E2", "#e69f00", true},         {"smooth:E2", "#56b4e9", true},       {"ashikhmin-shirley:E1", "#009e73", true},
     {"ashikhmin-shirley:E2", "#cc79a7", true},  {"cook-torrance:E1", "#0072b2", true}, {"cook-torrance:E2", "#d55e00", true},
-    {"microfacet:E1", "#f0e442", false},        {"smooth:E1", "#999999", false}};
+    {"microfacet:E1", "#f0e442", false},        {"smooth:E1", "#999999", false},      {"ggx:E2", "#882255", false}};
 
 // A fit the table does not list.
 constexpr std::string_view kOtherColour = "#999999";
