@@ -83,11 +83,7 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
         escaped.add(i);
         direction_[i] = rays[i].dir;
         from_[i] = path_[i].from;
-      } else if (const ChosenLight light = lights.at(hit_[i])) {
-        double pdf = 0.0;
-        const Rgb emitted = light.light->emitted(hit_[i], path_[i].from, pdf);
-        radiance[i] += path_[i].throughput * weightedEmission(path_[i], emitted, light.probability * pdf);
-      } else if (depth < context_.settings.maxDepth && shade(scene, rays[i], hit_[i], point_[i])) {
+      } else if (arrive(context_, rays[i], hit_[i], depth, path_[i], radiance[i], point_[i])) {
         shading.add(i);
         stopping[i] = stops && scene.isObject(hit_[i].mesh);
         if (!stopping[i]) reflecting.add(i);
@@ -97,7 +93,7 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
       distant.light->arriving(direction_, from_, escaped.lane, escaped.n, arriving_, pdf_);
       for (int k = 0; k < escaped.n; ++k) {
         const int i = escaped.lane[k];
-        radiance[i] += path_[i].throughput * weightedEmission(path_[i], arriving_[i], distant.probability * pdf_[i]);
+        addEmission(path_[i], arriving_[i], distant.probability * pdf_[i], radiance[i]);
       }
     }
     // Resumed paths share what the panels draw alike; the paths before the object are traced once anyway.
