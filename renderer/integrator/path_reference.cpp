@@ -37,8 +37,7 @@ void finishPath(const PathContext& context, Ray ray, CmjSampler& sampler, PathSt
 
 Rgb Li(const PathContext& context, Ray ray, CmjSampler& sampler) {
   Rgb radiance(0.0);
-  PathState path;
-  path.from.point = ray.origin;
+  PathState path(ray.origin);
   finishPath(context, ray, sampler, path, 1, radiance);
   return radiance;
 }

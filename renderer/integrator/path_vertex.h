@@ -9,6 +9,8 @@ namespace glossy {
 
 // A path's state between vertices.
 struct PathState {
+  PathState() = default;
+  explicit PathState(const Vec3& eye) { from.point = eye; }  // a camera path, before its first vertex
   Rgb throughput{1.0};
   double bsdfPdf = 0.0;  // solid-angle pdf of the BSDF sample that made the ray; 0 for the camera ray
   int lightSamples = 1;  // that the vertex the ray left took (MIS counts them)

@@ -34,13 +34,12 @@ void forEachGroup(const Lanes& lanes, Key key, F&& f) {
 
 }  // namespace
 
-void WaveTracer::trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* radiance, ObjectVertex* stops) {
+void WaveTracer::trace(Ray* rays, CmjSampler* samplers, int n, Rgb* radiance, ObjectVertex* stops) {
   bool alive[kWaveSize];
   for (int i = 0; i < kWaveSize; ++i) {
-    alive[i] = start[i];
+    alive[i] = i < n;
     radiance[i] = Rgb(0.0);
-    path_[i] = PathState{};
-    path_[i].from = Receiver{rays[i].origin, Vec3(0.0)};
+    path_[i] = PathState(rays[i].origin);
     if (stops) stops[i].depth = 0;
   }
   walk(1, rays, samplers, alive, radiance, stops);

@@ -16,7 +16,7 @@ struct Lanes {
 
 class SharedDraws;
 
-// Li for up to kWaveSize camera rays at once: radiance[i] for the lanes with start[i]. With stops,
+// Li for up to kWaveSize camera rays at once: radiance[i] for the lanes i < n. With stops,
 // traceToObject instead: a lane whose path reaches the object stops there, stops[i] its vertex (depth 0 for
 // the others). continueFromObject for n vertices of one depth: resume. Its lanes' state lives in the
 // tracer, made once per thread and reused, as it is too large to clear per wave. The panels' tracers of a
@@ -24,7 +24,7 @@ class SharedDraws;
 class WaveTracer {
  public:
   explicit WaveTracer(const PathContext& context, SharedDraws* shared = nullptr) : context_(context), shared_(shared) {}
-  void trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* radiance, ObjectVertex* stops = nullptr);
+  void trace(Ray* rays, CmjSampler* samplers, int n, Rgb* radiance, ObjectVertex* stops = nullptr);
   void resume(const ObjectVertex* vertices, int n, Rgb* radiance);
 
  private:
