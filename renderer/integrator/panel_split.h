@@ -4,8 +4,9 @@
 // own. A path that never meets the object is the same in every panel.
 #pragma once
 
-#include "renderer/integrator/path_vertex.h"
+#include "renderer/integrator/shared_draws.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <span>
@@ -34,39 +35,79 @@ struct PanelSums {
   std::vector<Rgb> sum;  // [panel][pixel]
   uint64_t dropped = 0;
   void add(size_t panel, int pixel, const Rgb& r) {
-    if (std::isfinite(r.r) && std::isfinite(r.g) && std::isfinite(r.b))
-      sum[panel * pixels + size_t(pixel)] += r;
-    else
-      ++dropped;
+    if (std::isfinite(r.r) && std::isfinite(r.g) && std::isfinite(r.b)) sum[panel * pixels + size_t(pixel)] += r;
+    else ++dropped;
   }
 };
 
-class WaveTracer;
-class SharedDraws;
-
-// A thread's tracer of the panels together, a wave of camera paths at a time (or each by the reference,
-// RenderSettings::reference). A path that reaches the object is parked there, by depth, until its depth has
-// a wave's worth (a wave advances its lanes one depth at a time); then every panel continues them.
-class PanelSplit {
+// A thread's tracer of the panels' camera paths, a wave at a time (or each by the reference,
+// RenderSettings::reference). With more than one panel, a path that reaches the object is parked there, by
+// depth, until its depth has a wave's worth (a wave advances its lanes one depth at a time); then every
+// panel continues them, sharing what they draw alike (shared_draws.h). One panel's paths run to their end,
+// with none of this.
+class PanelTracer {
  public:
-  PanelSplit(std::span<const PathContext> panels, bool reference);
-  ~PanelSplit();
+  PanelTracer(std::span<const PathContext> panels, bool reference)
+      : panels_(panels), split_(panels.size() > 1), shared_(panels[0].settings.maxDepth), parked_(size_t(std::max(1, panels[0].settings.maxDepth))) {
+    for (size_t p = 0; p < panels.size() && !reference; ++p)
+      waves_.push_back(std::make_unique<WaveTracer>(panels[p], split_ ? &shared_ : nullptr));
+  }
+
   // The camera rays of the tile's samples of pixel[i], i < n, added to sums where their paths end.
-  void trace(Ray* rays, CmjSampler* samplers, const int* pixel, int n, PanelSums& sums);
+  void trace(Ray* rays, CmjSampler* samplers, const int* pixel, int n, PanelSums& sums) {
+    ObjectVertex* stops = split_ ? stops_ : nullptr;
+    if (!waves_.empty())
+      waves_[0]->trace(rays, samplers, n, radiance_, stops);
+    else
+      for (int i = 0; i < n; ++i)
+        radiance_[i] = stops ? traceToObject(panels_[0], rays[i], samplers[i], stops[i]) : Li(panels_[0], rays[i], samplers[i]);
+    for (int i = 0; i < n; ++i)
+      if (stops && stops[i].depth > 0)
+        park(stops[i], pixel[i], sums);
+      else  // never met the object: the same path in every panel
+        for (size_t p = 0; p < panels_.size(); ++p) sums.add(p, pixel[i], radiance_[i]);
+  }
+
   // Continues every parked path: before the tile ends, as their samplers point at its pixels.
-  void resumeAll(PanelSums& sums);
+  void resumeAll(PanelSums& sums) {
+    for (size_t depth = 0; depth < parked_.size(); ++depth) resume(depth, sums);
+  }
+
   uint64_t objectPaths = 0;  // paths that reached the object
 
  private:
-  void park(const ObjectVertex& v, int pixel, PanelSums& sums);
-  void resume(size_t depth, PanelSums& sums);
+  void park(const ObjectVertex& v, int pixel, PanelSums& sums) {
+    ++objectPaths;
+    Parked& parked = parked_[size_t(v.depth)];
+    parked.vertices.push_back(v);
+    parked.pixels.push_back(pixel);
+    if (parked.vertices.size() == size_t(kWaveSize)) resume(size_t(v.depth), sums);
+  }
 
+  void resume(size_t depth, PanelSums& sums) {
+    Parked& parked = parked_[depth];
+    const int n = int(parked.vertices.size());
+    for (size_t p = 0; p < panels_.size(); ++p) {
+      if (!waves_.empty())
+        waves_[p]->resume(parked.vertices.data(), n, resumed_);
+      else
+        for (int i = 0; i < n; ++i) resumed_[i] = continueFromObject(panels_[p], parked.vertices[size_t(i)]);
+      for (int i = 0; i < n; ++i) sums.add(p, parked.pixels[size_t(i)], resumed_[i]);
+    }
+    parked.vertices.clear();
+    parked.pixels.clear();
+  }
+
+  struct Parked {
+    std::vector<ObjectVertex> vertices;
+    std::vector<int> pixels;  // the tile's, of their samples
+  };
   std::span<const PathContext> panels_;
-  std::unique_ptr<SharedDraws> shared_;
+  bool split_;
+  SharedDraws shared_;
   std::vector<std::unique_ptr<WaveTracer>> waves_;  // per panel; none for the reference
-  std::vector<ObjectVertex> stops_;                 // per lane
-  std::vector<std::vector<ObjectVertex>> parked_;   // [depth]
-  std::vector<std::vector<int>> parkedPixel_;       // [depth]
+  std::vector<Parked> parked_;                      // [depth]
+  ObjectVertex stops_[kWaveSize];
   Rgb radiance_[kWaveSize], resumed_[kWaveSize];    // per lane
 };
 

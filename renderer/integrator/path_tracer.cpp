@@ -3,7 +3,7 @@
 #include "renderer/integrator/path_tracer.h"
 
 #include "renderer/camera/camera_rays.h"
-#include "renderer/integrator/wave_tracer.h"
+#include "renderer/integrator/panel_split.h"
 #include "renderer/util/progress.h"
 
 #include <tbb/blocked_range2d.h>
@@ -30,34 +30,22 @@ constexpr std::array<int, kWaveSize> kLanes = [] {
   return lanes;
 }();
 
-// What the tiles of a render share.
-struct TileJob {
-  const RenderSettings& settings;
-  std::span<const PathContext> panels;
-  const CameraRays& cameraRays;
-  const CmjPattern& pattern;
-  std::vector<RgbImage>& images;
-};
-
-// A thread's renderer of tiles, its lanes' state reused from tile to tile. A render of one panel traces
-// each path to its end; a sheet's panels go through the panel split.
+// A thread's renderer of tiles, its lanes' state reused from tile to tile.
 class TileRenderer {
  public:
-  explicit TileRenderer(const TileJob& job) : job_(job), settings_(job.settings) {
-    if (job.panels.size() > 1)
-      split_ = std::make_unique<PanelSplit>(job.panels, settings_.reference);
-    else if (!settings_.reference)
-      wave_ = std::make_unique<WaveTracer>(job.panels.front());
-  }
+  TileRenderer(std::span<const PathContext> panels, const CameraRays& cameraRays, const CmjPattern& pattern,
+               std::vector<RgbImage>& images)
+      : settings_(panels[0].settings), cameraRays_(cameraRays), pattern_(pattern), images_(images),
+        tracer_(panels, settings_.reference) {}
 
   void render(int tx, int ty) {
     start(tx, ty);
-    for (int lanes; (lanes = nextWave()) > 0;) trace(lanes);
-    if (split_) split_->resumeAll(sums_);
+    for (int lanes; (lanes = nextWave()) > 0;) tracer_.trace(rays_, samplers_, lanePixel_, lanes, sums_);
+    tracer_.resumeAll(sums_);
     write();
   }
   uint64_t dropped() const { return sums_.dropped; }
-  uint64_t objectPaths() const { return split_ ? split_->objectPaths : 0; }
+  uint64_t objectPaths() const { return tracer_.objectPaths; }
 
  private:
   void start(int tx, int ty) {
@@ -69,7 +57,7 @@ class TileRenderer {
     for (int p = 0; p < count_; ++p)
       pixels_.emplace_back(settings_.seed, uint32_t(settings_.firstSample), uint32_t(x0_ + p % width_), uint32_t(y0_ + p / width_));
     sums_.pixels = size_t(count_);
-    sums_.sum.assign(job_.panels.size() * size_t(count_), Rgb(0.0));
+    sums_.sum.assign(images_.size() * size_t(count_), Rgb(0.0));
     pixel_ = settings_.spp > 0 ? 0 : count_;
     sample_ = 0;
   }
@@ -82,7 +70,7 @@ class TileRenderer {
     int lanes = 0;
     for (; lanes < kWaveSize && pixel_ < count_; ++lanes) {
       lanePixel_[lanes] = pixel_;
-      samplers_[lanes] = CmjSampler(job_.pattern, pixels_[size_t(pixel_)], uint32_t(sample_));
+      samplers_[lanes] = CmjSampler(pattern_, pixels_[size_t(pixel_)], uint32_t(sample_));
       if (++sample_ == settings_.spp) {
         sample_ = 0;
         ++pixel_;
@@ -90,32 +78,24 @@ class TileRenderer {
     }
     CmjSampler::get2D(samplers_, kLanes.data(), lanes, film_);
     for (int i = 0; i < lanes; ++i)
-      rays_[i] = job_.cameraRays(Vec2(x0_ + lanePixel_[i] % width_, y0_ + lanePixel_[i] / width_) + film_[i]);
+      rays_[i] = cameraRays_(Vec2(x0_ + lanePixel_[i] % width_, y0_ + lanePixel_[i] / width_) + film_[i]);
     return lanes;
   }
 
-  void trace(int lanes) {
-    if (split_) return split_->trace(rays_, samplers_, lanePixel_, lanes, sums_);
-    if (wave_)
-      wave_->trace(rays_, samplers_, lanes, radiance_);
-    else
-      for (int i = 0; i < lanes; ++i) radiance_[i] = Li(job_.panels.front(), rays_[i], samplers_[i]);
-    for (int i = 0; i < lanes; ++i) sums_.add(0, lanePixel_[i], radiance_[i]);
-  }
-
   void write() {
-    for (size_t p = 0; p < job_.panels.size(); ++p)
+    for (size_t p = 0; p < images_.size(); ++p)
       for (int i = 0; i < count_; ++i) {
         const Rgb mean = sums_.sum[p * size_t(count_) + size_t(i)] / double(std::max(1, settings_.spp));
-        float* px = job_.images[p].at(x0_ + i % width_, y0_ + i / width_);
+        float* px = images_[p].at(x0_ + i % width_, y0_ + i / width_);
         for (int c = 0; c < 3; ++c) px[c] = float(std::min(mean[c], double(std::numeric_limits<float>::max())));
       }
   }
 
-  const TileJob& job_;
   const RenderSettings& settings_;
-  std::unique_ptr<WaveTracer> wave_;   // one panel
-  std::unique_ptr<PanelSplit> split_;  // a sheet's panels
+  const CameraRays& cameraRays_;
+  const CmjPattern& pattern_;
+  std::vector<RgbImage>& images_;
+  PanelTracer tracer_;
   int x0_ = 0, y0_ = 0, width_ = 0, count_ = 0;  // the tile, count_ its pixels
   int pixel_ = 0, sample_ = 0;                   // the next sample to trace
   std::vector<CmjPixel> pixels_;
@@ -124,7 +104,6 @@ class TileRenderer {
   int lanePixel_[kWaveSize];  // which of the tile's pixels each lane samples
   Vec2 film_[kWaveSize];
   Ray rays_[kWaveSize];
-  Rgb radiance_[kWaveSize];
 };
 
 }  // namespace
@@ -146,8 +125,8 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
   for (const RenderScene& panel : panels) contexts.push_back({panel, settings, lights});
   const CameraRays cameraRays(camera, settings.width, settings.height);
   const CmjPattern pattern(uint32_t(std::max(1, settings.spp)), uint32_t(std::clamp(settings.lightSamples, 1, kMaxLightSamples)));
-  const TileJob job{settings, contexts, cameraRays, pattern, images};
-  tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers([&] { return std::make_unique<TileRenderer>(job); });
+  tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers(
+      [&] { return std::make_unique<TileRenderer>(contexts, cameraRays, pattern, images); });
 
   const int tilesX = (settings.width + kTile - 1) / kTile, tilesY = (settings.height + kTile - 1) / kTile;
   Progress progress("render", size_t(tilesX) * size_t(tilesY));

@@ -2,8 +2,7 @@
 // BRDFs' samples and values are batch calls, whose long chains of arithmetic and cache misses overlap
 // across lanes. Every lane takes the steps the reference takes, in its order, with the same draws, so
 // each lane's radiance is the reference's bit for bit.
-#include "renderer/integrator/shared_draws.h"
-#include "renderer/integrator/wave_tracer.h"
+#include "renderer/integrator/panel_split.h"
 
 #include <algorithm>
 

@@ -3,7 +3,7 @@
 // With stops, it is the panel split's (panel_split.h) traceToObject; resume is its continueFromObject.
 #pragma once
 
-#include "renderer/integrator/panel_split.h"
+#include "renderer/integrator/path_vertex.h"
 
 namespace glossy {
 
@@ -15,6 +15,7 @@ struct Lanes {
 };
 
 class SharedDraws;
+struct ObjectVertex;  // panel_split.h
 
 // Li for up to kWaveSize camera rays at once: radiance[i] for the lanes i < n. With stops,
 // traceToObject instead: a lane whose path reaches the object stops there, stops[i] its vertex (depth 0 for
