@@ -12,7 +12,6 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <limits>
 #include <memory>
@@ -23,12 +22,6 @@ namespace glossy {
 namespace {
 
 constexpr int kTile = 16;
-// 0, 1, …, kWaveSize − 1: every lane of a wave, for the batch draws.
-constexpr std::array<int, kWaveSize> kLanes = [] {
-  std::array<int, kWaveSize> lanes{};
-  for (int i = 0; i < kWaveSize; ++i) lanes[i] = i;
-  return lanes;
-}();
 
 // A thread's renderer of tiles, its lanes' state reused from tile to tile.
 class TileRenderer {
@@ -44,8 +37,10 @@ class TileRenderer {
     tracer_.resumeAll(sums_);
     write();
   }
-  uint64_t dropped() const { return sums_.dropped; }
-  uint64_t objectPaths() const { return tracer_.objectPaths; }
+  void addStats(RenderStats& stats) const {
+    stats.droppedSamples += sums_.dropped;
+    stats.objectPaths += tracer_.objectPaths;
+  }
 
  private:
   void start(int tx, int ty) {
@@ -58,8 +53,7 @@ class TileRenderer {
       pixels_.emplace_back(settings_.seed, uint32_t(settings_.firstSample), uint32_t(x0_ + p % width_), uint32_t(y0_ + p / width_));
     sums_.pixels = size_t(count_);
     sums_.sum.assign(images_.size() * size_t(count_), Rgb(0.0));
-    pixel_ = settings_.spp > 0 ? 0 : count_;
-    sample_ = 0;
+    next_ = 0;
   }
 
   // The camera rays of the tile's next (pixel, sample) pairs in order, up to a wave of them: a pixel's
@@ -67,16 +61,13 @@ class TileRenderer {
   // sum is taken in sample order whatever the wave boundaries (the paths parked at the object join their
   // sums later, which differs from sample order only in rounding).
   int nextWave() {
+    const int64_t spp = settings_.spp;
     int lanes = 0;
-    for (; lanes < kWaveSize && pixel_ < count_; ++lanes) {
-      lanePixel_[lanes] = pixel_;
-      samplers_[lanes] = CmjSampler(pattern_, pixels_[size_t(pixel_)], uint32_t(sample_));
-      if (++sample_ == settings_.spp) {
-        sample_ = 0;
-        ++pixel_;
-      }
+    for (; lanes < kWaveSize && next_ < count_ * spp; ++lanes, ++next_) {
+      lanePixel_[lanes] = int(next_ / spp);
+      samplers_[lanes] = CmjSampler(pattern_, pixels_[size_t(lanePixel_[lanes])], uint32_t(next_ % spp));
     }
-    CmjSampler::get2D(samplers_, kLanes.data(), lanes, film_);
+    CmjSampler::get2D(samplers_, Lanes::first(lanes).lane, lanes, film_);
     for (int i = 0; i < lanes; ++i)
       rays_[i] = cameraRays_(Vec2(x0_ + lanePixel_[i] % width_, y0_ + lanePixel_[i] / width_) + film_[i]);
     return lanes;
@@ -97,7 +88,7 @@ class TileRenderer {
   std::vector<RgbImage>& images_;
   PanelTracer tracer_;
   int x0_ = 0, y0_ = 0, width_ = 0, count_ = 0;  // the tile, count_ its pixels
-  int pixel_ = 0, sample_ = 0;                   // the next sample to trace
+  int64_t next_ = 0;  // the next sample to trace: pixel next_ / spp, its sample next_ % spp
   std::vector<CmjPixel> pixels_;
   PanelSums sums_;
   CmjSampler samplers_[kWaveSize];
@@ -146,10 +137,7 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
   });
   progress.finish();
   stats = RenderStats{};
-  for (const std::unique_ptr<TileRenderer>& renderer : renderers) {
-    stats.droppedSamples += renderer->dropped();
-    stats.objectPaths += renderer->objectPaths();
-  }
+  for (const std::unique_ptr<TileRenderer>& renderer : renderers) renderer->addStats(stats);
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return images;
 }

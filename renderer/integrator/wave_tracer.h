@@ -12,6 +12,13 @@ struct Lanes {
   int lane[kWaveSize];
   int n = 0;
   void add(int i) { lane[n++] = i; }
+  static Lanes first(int n) {  // 0, 1, …, n − 1
+    Lanes lanes;
+    while (lanes.n < n) lanes.add(lanes.n);
+    return lanes;
+  }
+  const int* begin() const { return lane; }
+  const int* end() const { return lane + n; }
 };
 
 class SharedDraws;
