@@ -26,8 +26,25 @@ struct ObjectVertex {
 // Li, but a path that reaches the object stops there, stop its vertex (stop.depth is 0 when it did not
 // stop): the radiance so far. continueFromObject then finishes it for a panel, whose context differs only
 // in the object's BRDF. The two make exactly Li's radiance.
-Rgb traceToObject(const PathContext& context, Ray ray, CmjSampler& sampler, ObjectVertex& stop);
-Rgb continueFromObject(const PathContext& panel, ObjectVertex stop);
+inline Rgb traceToObject(const PathContext& context, Ray ray, CmjSampler& sampler, ObjectVertex& stop) {
+  Rgb radiance(0.0);
+  stop.depth = 0;
+  PathState path(ray.origin);
+  PathVertex v;
+  for (int depth = 1; nextVertex(context, ray, sampler, depth, path, radiance, v); ++depth) {
+    if (context.scene.isObject(v.mesh)) return (stop = ObjectVertex{depth, path, radiance, v, sampler}).radiance;
+    if (!reflect(context, depth, v, path, radiance, ray)) break;
+  }
+  return radiance;
+}
+
+inline Rgb continueFromObject(const PathContext& panel, ObjectVertex stop) {
+  stop.vertex.point.brdf = &panel.scene.brdfOf(stop.vertex.mesh);
+  Ray ray;
+  if (reflect(panel, stop.depth, stop.vertex, stop.path, stop.radiance, ray))
+    finishPath(panel, ray, stop.sampler, stop.path, stop.depth + 1, stop.radiance);
+  return stop.radiance;
+}
 
 // A tile's sums of its samples' radiance, per panel and pixel; a non-finite sample is dropped, and counted.
 struct PanelSums {
@@ -48,14 +65,14 @@ struct PanelSums {
 class PanelTracer {
  public:
   PanelTracer(std::span<const PathContext> panels, bool reference)
-      : panels_(panels), split_(panels.size() > 1), shared_(panels[0].settings.maxDepth), parked_(size_t(std::max(1, panels[0].settings.maxDepth))) {
+      : panels_(panels), shared_(panels[0].settings.maxDepth), parked_(size_t(std::max(1, panels[0].settings.maxDepth))) {
     for (size_t p = 0; p < panels.size() && !reference; ++p)
-      waves_.push_back(std::make_unique<WaveTracer>(panels[p], split_ ? &shared_ : nullptr));
+      waves_.push_back(std::make_unique<WaveTracer>(panels[p], panels.size() > 1 ? &shared_ : nullptr));
   }
 
   // The camera rays of the tile's samples of pixel[i], i < n, added to sums where their paths end.
   void trace(Ray* rays, CmjSampler* samplers, const int* pixel, int n, PanelSums& sums) {
-    ObjectVertex* stops = split_ ? stops_ : nullptr;
+    ObjectVertex* stops = panels_.size() > 1 ? stops_ : nullptr;
     if (!waves_.empty())
       waves_[0]->trace(rays, samplers, n, radiance_, stops);
     else
@@ -103,7 +120,6 @@ class PanelTracer {
     std::vector<int> pixels;  // the tile's, of their samples
   };
   std::span<const PathContext> panels_;
-  bool split_;
   SharedDraws shared_;
   std::vector<std::unique_ptr<WaveTracer>> waves_;  // per panel; none for the reference
   std::vector<Parked> parked_;                      // [depth]

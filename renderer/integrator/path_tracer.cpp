@@ -1,5 +1,5 @@
-// The image (or a sheet's panels): tiles of pixels, each pixel's samples in order, traced by the wave (or
-// the reference path tracer), averaged per pixel.
+// The image (or a sheet's panels): tiles of pixels, each pixel's samples in order, their camera rays a wave
+// at a time traced by the panel tracer (panel_split.h), averaged per pixel.
 #include "renderer/integrator/path_tracer.h"
 
 #include "renderer/camera/camera_rays.h"

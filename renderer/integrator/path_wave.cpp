@@ -56,11 +56,9 @@ void WaveTracer::resume(const ObjectVertex* vertices, int n, Rgb* radiance) {
 }
 
 void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, Rgb* radiance, ObjectVertex* stops) {
-  const RenderScene& scene = context_.scene;
-  const LightSet& lights = context_.lights;
   for (;; ++depth) {
     if (std::none_of(alive, alive + kWaveSize, [](bool a) { return a; })) return;
-    for (int p = 0; p < kWaveSize; p += kPacketSize) scene.bvh->intersect(alive + p, rays + p, hit_ + p, found_ + p);
+    for (int p = 0; p < kWaveSize; p += kPacketSize) context_.scene.bvh->intersect(alive + p, rays + p, hit_ + p, found_ + p);
 
     // Rays that left the scene see the distant lights; rays that hit a light see it; the others shade, and
     // with stops those on the object stop there once their light sample is taken.
@@ -75,11 +73,11 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
         from_[i] = path_[i].from;
       } else if (arrive(context_, rays[i], hit_[i], depth, path_[i], radiance[i], point_[i])) {
         shading.add(i);
-        stopping[i] = stops && scene.isObject(hit_[i].mesh);
+        stopping[i] = stops && context_.scene.isObject(hit_[i].mesh);
         if (!stopping[i]) reflecting.add(i);
       }
     }
-    for (const ChosenLight& distant : lights.distant()) {
+    for (const ChosenLight& distant : context_.lights.distant()) {
       distant.light->arriving(direction_, from_, escaped.lane, escaped.n, arriving_, pdf_);
       for (const int i : escaped) addEmission(path_[i], arriving_[i], distant.probability * pdf_[i], radiance[i]);
     }
@@ -100,7 +98,6 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
 // shadow-ray packets; distant lights' first samples from `shared` where it keeps them (deeper vertices,
 // the only ones shared, take one).
 void WaveTracer::sampleLights(int depth, const Lanes& lanes, SharedDraws* shared) {
-  const LightSet& lights = context_.lights;
   int most = 0;
   for (const int i : lanes) {
     light_[i].count = draws_[i].lightSamples;
@@ -112,7 +109,7 @@ void WaveTracer::sampleLights(int depth, const Lanes& lanes, SharedDraws* shared
     for (const int i : lanes) {
       if (j >= light_[i].count) continue;
       light_[i].visible[j] = false;
-      chosen_[i] = lights.choose(draws_[i].lightChoice[j]);
+      chosen_[i] = context_.lights.choose(draws_[i].lightChoice[j]);
       if (!chosen_[i]) continue;
       sampled.add(i);
       uLight_[i] = draws_[i].light[j];

@@ -12,11 +12,7 @@ struct Lanes {
   int lane[kWaveSize];
   int n = 0;
   void add(int i) { lane[n++] = i; }
-  static Lanes first(int n) {  // 0, 1, …, n − 1
-    Lanes lanes;
-    while (lanes.n < n) lanes.add(lanes.n);
-    return lanes;
-  }
+  static Lanes first(int n) { Lanes l; while (l.n < n) l.add(l.n); return l; }  // 0, 1, …, n − 1
   const int* begin() const { return lane; }
   const int* end() const { return lane + n; }
 };
