@@ -18,18 +18,11 @@ bool nextVertex(const PathContext& context, const Ray& ray, CmjSampler& sampler,
     for (const ChosenLight& distant : context.lights.distant()) {
       double pdf = 0.0;
       const Rgb arriving = distant.light->arriving(ray.dir, path.from, pdf);
-      radiance += path.throughput * weightedEmission(path, arriving, distant.probability * pdf);
+      addEmission(path, arriving, distant.probability * pdf, radiance);
     }
     return false;
   }
-  if (const ChosenLight light = context.lights.at(hit)) {
-    // Emitters are black bodies: they shine and reflect nothing.
-    double pdf = 0.0;
-    const Rgb emitted = light.light->emitted(hit, path.from, pdf);
-    radiance += path.throughput * weightedEmission(path, emitted, light.probability * pdf);
-    return false;
-  }
-  if (depth >= context.settings.maxDepth || !shade(context.scene, ray, hit, vertex.point)) return false;
+  if (!arrive(context, ray, hit, depth, path, radiance, vertex.point)) return false;
   vertex.mesh = hit.mesh;
   const int lane = 0;
   drawVertices(&sampler, &lane, 1, DrawsUsed(context, depth), &vertex.draws);
@@ -44,8 +37,7 @@ void finishPath(const PathContext& context, Ray ray, CmjSampler& sampler, PathSt
 
 Rgb Li(const PathContext& context, Ray ray, CmjSampler& sampler) {
   Rgb radiance(0.0);
-  PathState path;
-  path.from.point = ray.origin;
+  PathState path(ray.origin);
   finishPath(context, ray, sampler, path, 1, radiance);
   return radiance;
 }

@@ -9,6 +9,8 @@ namespace glossy {
 
 // A path's state between vertices.
 struct PathState {
+  PathState() = default;
+  explicit PathState(const Vec3& eye) { from.point = eye; }  // a camera path, before its first vertex
   Rgb throughput{1.0};
   double bsdfPdf = 0.0;  // solid-angle pdf of the BSDF sample that made the ray; 0 for the camera ray
   int lightSamples = 1;  // that the vertex the ray left took (MIS counts them)
@@ -16,11 +18,25 @@ struct PathState {
 };
 
 // Emission found by the path's ray (from a light it hit or a distant light it escaped to), weighted
-// against the light samples that could have found it: lightPdf is one's density, its light's choice
-// included, and the vertex took path.lightSamples of them (the power heuristic with sample counts). A
-// camera ray's is unweighted.
-inline Rgb weightedEmission(const PathState& path, const Rgb& emitted, double lightPdf) {
-  return path.bsdfPdf > 0.0 ? emitted * powerHeuristic(path.bsdfPdf, path.lightSamples * lightPdf) : emitted;
+// against the light samples that could have found it, added to radiance with the path's throughput:
+// lightPdf is one's density, its light's choice included, and the vertex took path.lightSamples of them
+// (the power heuristic with sample counts). A camera ray's is unweighted.
+inline void addEmission(const PathState& path, const Rgb& emitted, double lightPdf, Rgb& radiance) {
+  radiance += path.throughput *
+              (path.bsdfPdf > 0.0 ? emitted * powerHeuristic(path.bsdfPdf, path.lightSamples * lightPdf) : emitted);
+}
+
+// What the path's ray hit: a light adds its emission and ends the path (emitters are black bodies: they
+// shine and reflect nothing); elsewhere the shading point, if the path reflects there (true).
+inline bool arrive(const PathContext& context, const Ray& ray, const Hit& hit, int depth, const PathState& path,
+                   Rgb& radiance, ShadingPoint& sp) {
+  if (const ChosenLight light = context.lights.at(hit)) {
+    double pdf = 0.0;
+    const Rgb emitted = light.light->emitted(hit, path.from, pdf);
+    addEmission(path, emitted, light.probability * pdf, radiance);
+    return false;
+  }
+  return depth < context.settings.maxDepth && shade(context.scene, ray, hit, sp);
 }
 
 // The BSDF sample s continues the path: the next ray, the throughput and pdf it carries. False ends it.

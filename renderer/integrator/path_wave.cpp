@@ -2,8 +2,7 @@
 // BRDFs' samples and values are batch calls, whose long chains of arithmetic and cache misses overlap
 // across lanes. Every lane takes the steps the reference takes, in its order, with the same draws, so
 // each lane's radiance is the reference's bit for bit.
-#include "renderer/integrator/shared_draws.h"
-#include "renderer/integrator/wave_tracer.h"
+#include "renderer/integrator/panel_split.h"
 
 #include <algorithm>
 
@@ -17,30 +16,23 @@ static_assert(kWaveSize % kPacketSize == 0, "a wave is whole Embree packets");
 // mostly has one BRDF and one or two lights, so this is one or two passes.
 template <class Key, class F>
 void forEachGroup(const Lanes& lanes, Key key, F&& f) {
-  bool done[kWaveSize] = {};
-  int group[kWaveSize];
-  for (int first = 0; first < lanes.n; ++first) {
-    if (done[first]) continue;
-    const auto k0 = key(lanes.lane[first]);
-    int count = 0;
-    for (int j = first; j < lanes.n; ++j)
-      if (!done[j] && key(lanes.lane[j]) == k0) {
-        group[count++] = lanes.lane[j];
-        done[j] = true;
-      }
-    f(k0, group, count);
+  for (Lanes rest = lanes; rest.n > 0;) {
+    const auto k0 = key(rest.lane[0]);
+    Lanes group, others;
+    for (const int i : rest) (key(i) == k0 ? group : others).add(i);
+    f(k0, group.lane, group.n);
+    rest = others;
   }
 }
 
 }  // namespace
 
-void WaveTracer::trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* radiance, ObjectVertex* stops) {
+void WaveTracer::trace(Ray* rays, CmjSampler* samplers, int n, Rgb* radiance, ObjectVertex* stops) {
   bool alive[kWaveSize];
   for (int i = 0; i < kWaveSize; ++i) {
-    alive[i] = start[i];
+    alive[i] = i < n;
     radiance[i] = Rgb(0.0);
-    path_[i] = PathState{};
-    path_[i].from = Receiver{rays[i].origin, Vec3(0.0)};
+    path_[i] = PathState(rays[i].origin);
     if (stops) stops[i].depth = 0;
   }
   walk(1, rays, samplers, alive, radiance, stops);
@@ -48,7 +40,6 @@ void WaveTracer::trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* 
 
 void WaveTracer::resume(const ObjectVertex* vertices, int n, Rgb* radiance) {
   bool alive[kWaveSize] = {};
-  Lanes lanes;
   for (int i = 0; i < n; ++i) {
     const ObjectVertex& v = vertices[i];
     path_[i] = v.path;
@@ -58,19 +49,16 @@ void WaveTracer::resume(const ObjectVertex* vertices, int n, Rgb* radiance) {
     draws_[i] = v.vertex.draws;
     light_[i] = v.vertex.light;
     resumeSamplers_[i] = v.sampler;
-    lanes.add(i);
   }
   if (n == 0) return;
-  reflectAll(vertices[0].depth, lanes, resumeRays_, alive, radiance);
+  reflectAll(vertices[0].depth, Lanes::first(n), resumeRays_, alive, radiance);
   walk(vertices[0].depth + 1, resumeRays_, resumeSamplers_, alive, radiance, nullptr);
 }
 
 void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, Rgb* radiance, ObjectVertex* stops) {
-  const RenderScene& scene = context_.scene;
-  const LightSet& lights = context_.lights;
   for (;; ++depth) {
     if (std::none_of(alive, alive + kWaveSize, [](bool a) { return a; })) return;
-    for (int p = 0; p < kWaveSize; p += kPacketSize) scene.bvh->intersect(alive + p, rays + p, hit_ + p, found_ + p);
+    for (int p = 0; p < kWaveSize; p += kPacketSize) context_.scene.bvh->intersect(alive + p, rays + p, hit_ + p, found_ + p);
 
     // Rays that left the scene see the distant lights; rays that hit a light see it; the others shade, and
     // with stops those on the object stop there once their light sample is taken.
@@ -83,22 +71,15 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
         escaped.add(i);
         direction_[i] = rays[i].dir;
         from_[i] = path_[i].from;
-      } else if (const ChosenLight light = lights.at(hit_[i])) {
-        double pdf = 0.0;
-        const Rgb emitted = light.light->emitted(hit_[i], path_[i].from, pdf);
-        radiance[i] += path_[i].throughput * weightedEmission(path_[i], emitted, light.probability * pdf);
-      } else if (depth < context_.settings.maxDepth && shade(scene, rays[i], hit_[i], point_[i])) {
+      } else if (arrive(context_, rays[i], hit_[i], depth, path_[i], radiance[i], point_[i])) {
         shading.add(i);
-        stopping[i] = stops && scene.isObject(hit_[i].mesh);
+        stopping[i] = stops && context_.scene.isObject(hit_[i].mesh);
         if (!stopping[i]) reflecting.add(i);
       }
     }
-    for (const ChosenLight& distant : lights.distant()) {
+    for (const ChosenLight& distant : context_.lights.distant()) {
       distant.light->arriving(direction_, from_, escaped.lane, escaped.n, arriving_, pdf_);
-      for (int k = 0; k < escaped.n; ++k) {
-        const int i = escaped.lane[k];
-        radiance[i] += path_[i].throughput * weightedEmission(path_[i], arriving_[i], distant.probability * pdf_[i]);
-      }
+      for (const int i : escaped) addEmission(path_[i], arriving_[i], distant.probability * pdf_[i], radiance[i]);
     }
     // Resumed paths share what the panels draw alike; the paths before the object are traced once anyway.
     SharedDraws* shared = stops ? nullptr : shared_;
@@ -107,10 +88,8 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
     else
       drawVertices(samplers, shading.lane, shading.n, DrawsUsed(context_, depth), draws_);
     sampleLights(depth, shading, shared);
-    for (int k = 0; k < shading.n; ++k) {
-      const int i = shading.lane[k];
+    for (const int i : shading)
       if (stopping[i]) stops[i] = ObjectVertex{depth, path_[i], radiance[i], {hit_[i].mesh, point_[i], draws_[i], light_[i]}, samplers[i]};
-    }
     reflectAll(depth, reflecting, rays, alive, radiance);
   }
 }
@@ -119,21 +98,18 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
 // shadow-ray packets; distant lights' first samples from `shared` where it keeps them (deeper vertices,
 // the only ones shared, take one).
 void WaveTracer::sampleLights(int depth, const Lanes& lanes, SharedDraws* shared) {
-  const LightSet& lights = context_.lights;
   int most = 0;
-  for (int k = 0; k < lanes.n; ++k) {
-    const int i = lanes.lane[k];
+  for (const int i : lanes) {
     light_[i].count = draws_[i].lightSamples;
     most = std::max(most, light_[i].count);
     from_[i] = receiver(point_[i]);
   }
   for (int j = 0; j < most; ++j) {
     Lanes sampled, drawn;
-    for (int k = 0; k < lanes.n; ++k) {
-      const int i = lanes.lane[k];
+    for (const int i : lanes) {
       if (j >= light_[i].count) continue;
       light_[i].visible[j] = false;
-      chosen_[i] = lights.choose(draws_[i].lightChoice[j]);
+      chosen_[i] = context_.lights.choose(draws_[i].lightChoice[j]);
       if (!chosen_[i]) continue;
       sampled.add(i);
       uLight_[i] = draws_[i].light[j];
@@ -148,21 +124,15 @@ void WaveTracer::sampleLights(int depth, const Lanes& lanes, SharedDraws* shared
     forEachGroup(drawn, [&](int i) { return chosen_[i].light; },
                  [&](const Light* light, const int* group, int n) { light->sample(from_, uLight_, group, n, lightSample_); });
     if (shared)
-      for (int k = 0; k < drawn.n; ++k) {
-        const int i = drawn.lane[k];
+      for (const int i : drawn)
         if (chosen_[i].light->distant()) shared->keep(depth, i, chosen_[i].light, from_[i].normal, uLight_[i], lightSample_[i]);
-      }
     std::fill(shadowed_, shadowed_ + kWaveSize, false);
-    for (int k = 0; k < sampled.n; ++k) {
-      const int i = sampled.lane[k];
+    for (const int i : sampled) {
       shadowed_[i] = toLight(point_[i], chosen_[i], lightSample_[i], light_[i].path[j]);
       shadow_[i] = light_[i].path[j].shadow;
     }
     for (int p = 0; p < kWaveSize; p += kPacketSize) context_.scene.bvh->occluded(shadowed_ + p, shadow_ + p, occluded_ + p);
-    for (int k = 0; k < sampled.n; ++k) {
-      const int i = sampled.lane[k];
-      light_[i].visible[j] = shadowed_[i] && !occluded_[i];
-    }
+    for (const int i : sampled) light_[i].visible[j] = shadowed_[i] && !occluded_[i];
   }
 }
 
@@ -172,27 +142,22 @@ void WaveTracer::reflectAll(int depth, const Lanes& lanes, Ray* rays, bool* aliv
   forEachGroup(lanes, [&](int i) { return point_[i].brdf; },
                [&](const Brdf* brdf, const int* group, int n) { sampleBrdf(*brdf, group, n); });
   int most = 0;
-  for (int k = 0; k < lanes.n; ++k) most = std::max(most, light_[lanes.lane[k]].count);
+  for (const int i : lanes) most = std::max(most, light_[i].count);
   // The light samples in the reference's order: the j-th of every lane, j = 0, 1, ….
   for (int j = 0; j < most; ++j) {
     Lanes lit;
-    for (int k = 0; k < lanes.n; ++k) {
-      const int i = lanes.lane[k];
+    for (const int i : lanes)
       if (j < light_[i].count && light_[i].visible[j]) lit.add(i);
-    }
     forEachGroup(lit, [&](int i) { return point_[i].brdf; },
                  [&](const Brdf* brdf, const int* group, int n) { evalBrdf(*brdf, j, group, n); });
-    for (int k = 0; k < lit.n; ++k) {
-      const int i = lit.lane[k];
+    for (const int i : lit) {
       Rgb contribution;
       if (lightContribution(light_[i].path[j], light_[i].count, value_[i], contribution))
         radiance[i] += path_[i].throughput * contribution;
     }
   }
-  for (int k = 0; k < lanes.n; ++k) {
-    const int i = lanes.lane[k];
+  for (const int i : lanes)
     alive[i] = continuePath(depth, context_.settings, point_[i], bsdfSample_[i], draws_[i], path_[i], rays[i]);
-  }
 }
 
 // bsdfSample_ of the lanes: sampleBsdf, as one batch.

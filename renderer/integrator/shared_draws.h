@@ -26,8 +26,7 @@ class SharedDraws {
   // the state of the draws kept for it, drawn and kept elsewhere.
   void draw(int depth, CmjSampler* samplers, const Lanes& lanes, DrawsUsed used, VertexDraws* out) {
     Lanes fresh;
-    for (int k = 0; k < lanes.n; ++k) {
-      const int i = lanes.lane[k];
+    for (const int i : lanes) {
       Entry& e = at(depth, i);
       const CmjSampler::Key key = samplers[i].key();
       if (e.sampler == key) {
@@ -39,7 +38,7 @@ class SharedDraws {
       }
     }
     drawVertices(samplers, fresh.lane, fresh.n, used, out);
-    for (int k = 0; k < fresh.n; ++k) at(depth, fresh.lane[k]).draws = out[fresh.lane[k]];
+    for (const int i : fresh) at(depth, i).draws = out[i];
   }
 
   // The sample the distant `light` made toward `normal` from draw u for the lane at depth, if one is kept.

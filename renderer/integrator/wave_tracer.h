@@ -3,7 +3,7 @@
 // With stops, it is the panel split's (panel_split.h) traceToObject; resume is its continueFromObject.
 #pragma once
 
-#include "renderer/integrator/panel_split.h"
+#include "renderer/integrator/path_vertex.h"
 
 namespace glossy {
 
@@ -12,11 +12,15 @@ struct Lanes {
   int lane[kWaveSize];
   int n = 0;
   void add(int i) { lane[n++] = i; }
+  static Lanes first(int n) { Lanes l; while (l.n < n) l.add(l.n); return l; }  // 0, 1, …, n − 1
+  const int* begin() const { return lane; }
+  const int* end() const { return lane + n; }
 };
 
 class SharedDraws;
+struct ObjectVertex;  // panel_split.h
 
-// Li for up to kWaveSize camera rays at once: radiance[i] for the lanes with start[i]. With stops,
+// Li for up to kWaveSize camera rays at once: radiance[i] for the lanes i < n. With stops,
 // traceToObject instead: a lane whose path reaches the object stops there, stops[i] its vertex (depth 0 for
 // the others). continueFromObject for n vertices of one depth: resume. Its lanes' state lives in the
 // tracer, made once per thread and reused, as it is too large to clear per wave. The panels' tracers of a
@@ -24,7 +28,7 @@ class SharedDraws;
 class WaveTracer {
  public:
   explicit WaveTracer(const PathContext& context, SharedDraws* shared = nullptr) : context_(context), shared_(shared) {}
-  void trace(Ray* rays, CmjSampler* samplers, const bool* start, Rgb* radiance, ObjectVertex* stops = nullptr);
+  void trace(Ray* rays, CmjSampler* samplers, int n, Rgb* radiance, ObjectVertex* stops = nullptr);
   void resume(const ObjectVertex* vertices, int n, Rgb* radiance);
 
  private:
