@@ -1,5 +1,5 @@
 // What a sheet spends on its measured data before it renders (prints figures, asserts nothing): for each
-// given file, the steps of renderer/cli/sheet_job.cpp and renderer/sheet/sheet.cpp that read it — loading
+// given file, the steps of renderer/app/sheet_job.cpp and renderer/sheet/sheet.cpp that read it — loading
 // it as loadMeasured does (a .nbrdf is tabulated, a .binary.xz decompressed), the measured panel's BRDF with
 // its tabulated sampler, and the E1 and E2 data the fits' BRDF errors are taken against — each in CPU
 // seconds (all threads) and wall seconds, then the median and maximum of the totals over the files.

@@ -7,6 +7,8 @@
 #include "renderer/plot/directional_albedo.h"
 #include "renderer/plot/plot_csv.h"
 #include "renderer/plot/rusinkiewicz.h"
+#include "renderer/sheet/comparison_grid.h"
+#include "materials/params/material_file.h"
 #include "support/test_support.h"
 
 #include <nlohmann/json.hpp>
@@ -116,11 +118,8 @@ void checkLogRatios(const std::filesystem::path& dir) {
 std::map<std::string, std::vector<std::string>> fitArgs(const std::filesystem::path& material) {
   const MaterialFile m = loadMaterialFile(material);
   std::map<std::string, std::vector<std::string>> args;
-  const std::map<std::string, std::string> labels = {
-      {"microfacet:E2", "Microfacet E2"}, {"smooth:E2", "Smooth E2"}, {"ashikhmin-shirley:E1", "AS E1"},
-      {"ashikhmin-shirley:E2", "AS E2"},  {"cook-torrance:E1", "CT E1"}, {"cook-torrance:E2", "CT E2"},
-      {"ggx:E2:glossy", "GGX E2 (glossy fit)"}};
-  for (const Fit& f : m.fits) args[labels.at(f.id.str())] = {"eval", "--material", material.string(), "--fit", f.id.str()};
+  // Each fit under the label its curve has (the grid's: "CT E2", "CT E2 (glossy fit)").
+  for (const Fit& f : m.fits) args[SheetPanel::ofFit(f.id).label] = {"eval", "--material", material.string(), "--fit", f.id.str()};
   return args;
 }
 
@@ -155,7 +154,8 @@ TEST(PlotCli, CsvMatchesEvalWithMeasuredData) {
     }
   }
   EXPECT_EQ(kinds.count("theta_h"), 1u);
-  EXPECT_EQ(kinds.count("image_slice"), 8u);  // measured, the six published fits and glossy's GGX E2
+  // The measured data and every fit of the file: the six published ones, glossy's refits and its GGX E2.
+  EXPECT_EQ(kinds.count("image_slice"), 1u + loadMaterialFile(materialsDir() / "alum-bronze.toml").fits.size());
   EXPECT_EQ(kinds.count("albedo"), 1u);
   EXPECT_EQ(kinds.count("polar"), 1u);
 
@@ -190,7 +190,7 @@ TEST(PlotCli, CsvMatchesEvalWithoutMeasuredData) {
     EXPECT_NE(std::string(f["caption"]).find("measured data: none"), std::string::npos) << f["caption"];
     EXPECT_EQ(readCsv(tmp / "out" / std::string(f["csv"]))[0].count("Measured"), 0u) << f["csv"];
   }
-  EXPECT_EQ(slices, 7u);  // the six published fits and glossy's GGX E2
+  EXPECT_EQ(slices, loadMaterialFile(material).fits.size());  // one per fit: published, glossy's refits, its GGX E2
   checkCsvsAgainstEval(tmp / "out", fitArgs(material));
 }
 
@@ -251,7 +251,8 @@ TEST(PlotRange, EveryCurvesFloorIsOnTheLogAxes) {
     EXPECT_LT(lowest, std::pow(10.0, lo + 1)) << f["kind"] << ": the axis reaches decades no value is in";
     EXPECT_LE(hi - lo, plot::kMaxDecades);
   }
-  EXPECT_EQ(checked, 14u);  // Measured and six fits, in two figures
+  // Measured and every fit of the file, in two figures.
+  EXPECT_EQ(checked, 2u * (1u + loadMaterialFile(materialsDir() / "chrome.toml").fits.size()));
 }
 
 // The image slices' colour scale is what their caption says: the decades holding the 0.5th to the 99.5th
@@ -269,8 +270,9 @@ TEST(PlotRange, ImageSliceCaptionStatesItsColourScale) {
     for (const auto& [column, values] : brdfColumns(dir / std::string(f["csv"])))
       if (title.find("of " + column + ",") != std::string::npos) all.insert(all.end(), values.begin(), values.end());
   }
-  ASSERT_EQ(stated.size(), 7u);
-  ASSERT_GT(all.size(), 7u * 8000u);
+  const size_t slices = 1 + loadMaterialFile(materialsDir() / "chrome.toml").fits.size();  // its network's, and each fit's
+  ASSERT_EQ(stated.size(), slices);
+  ASSERT_GT(all.size(), slices * 8000u);
   const int lo = int(std::floor(std::log10(percentile(all, 0.005)))), hi = int(std::ceil(std::log10(percentile(all, 0.995))));
   for (const auto& s : stated) EXPECT_EQ(s, std::make_pair(lo, hi));
 }
@@ -284,7 +286,8 @@ TEST(PlotRange, DecadesOptionSetsEverySpan) {
                                    "-o", (tmp / "out").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json index = readIndex(tmp / "out");
-  ASSERT_EQ(index["figures"].size(), 8u);
+  // θh and polar, and an image slice per fit of the file.
+  ASSERT_EQ(index["figures"].size(), 2u + loadMaterialFile(material).fits.size());
   for (const auto& f : index["figures"]) {
     const auto [lo, hi] = captionDecades(f["caption"]);
     EXPECT_EQ(hi - lo, 4) << f["caption"];
@@ -529,7 +532,8 @@ print("ok", len(index["figures"]))
                           "' > '" + (tmp / "py.out").string() + "' 2>&1";
   const int status = std::system(cmd.c_str());
   EXPECT_EQ(status, 0) << readText(tmp / "py.out");
-  EXPECT_EQ(readText(tmp / "py.out"), "ok 10\n");
+  // θh, albedo, polar, and an image slice of the measured data and of each fit.
+  EXPECT_EQ(readText(tmp / "py.out"), "ok " + std::to_string(4 + loadMaterialFile(materialsDir() / "alum-bronze.toml").fits.size()) + "\n");
 }
 
 // Without rsvg-convert on PATH: the SVGs and CSVs all the same, "png": null, and one line saying why.

@@ -4,6 +4,7 @@
 #include "renderer/image/colour_maps.h"
 #include "renderer/image/exr_image.h"
 #include "renderer/sheet/error_maps.h"
+#include "materials/params/material_file.h"
 #include "tests/support/test_support.h"
 
 #include <OpenImageIO/imageio.h>
@@ -68,8 +69,10 @@ TEST(CliSheet, EverySupplementMaterialGivesTheLayeredExrAndThePngWithNoNonFinite
                                      (sharedDir() / "merl" / (std::string(name) + ".binary")).string(), "--json"});
       ASSERT_EQ(e.status, 0) << e.err;
       const auto json = nlohmann::json::parse(e.out);
-      ASSERT_EQ(json["fits"].size(), 6u);
+      ASSERT_EQ(json["fits"].size(), loadMaterialFile(materialsDir() / (std::string(name) + ".toml")).fits.size());
       for (const auto& f : json["fits"]) {
+        // The grid's panels: the published fits (glossy's refits beside them are not panels).
+        if (f["fit"].get<std::string>().find(":glossy") != std::string::npos) continue;
         std::string layer = f["fit"].get<std::string>();
         std::replace(layer.begin(), layer.end(), '-', '_');
         std::replace(layer.begin(), layer.end(), ':', '_');

@@ -490,16 +490,19 @@ std::string errorTable(const Sheet& sheet) {
       << formatted("%d spp in %d replicates", sheet.spp, sheet.replicates) << "\n";
   else
     s << "no measured panel (" << note << "), so no errors against it\n";
-  s << "  panel            rel. RMSE, noise-free [95 %]   luminance ratio [95 %]    HDR-FLIP [95 %]            noisy rRMSE   BRDF E1   BRDF E2\n";
+  // The label column fits the longest label (a glossy fit's says so: "GGX E2 (glossy fit)").
+  int w = 14;
+  for (const PanelRender& p : sheet.panels) w = std::max(w, int(p.panel.label.size()));
+  s << formatted("  %-*s   rel. RMSE, noise-free [95 %%]   luminance ratio [95 %%]    HDR-FLIP [95 %%]            noisy rRMSE   BRDF E1   BRDF E2\n", w, "panel");
   bool clamped = false;
   for (const PanelRender& p : sheet.panels) {
     const PanelFigures& f = p.figures;
     if (p.empty) {
-      s << formatted("  %-14s   %s\n", p.panel.label.c_str(), p.note.c_str());
+      s << formatted("  %-*s   %s\n", w, p.panel.label.c_str(), p.note.c_str());
       continue;
     }
     if (!f.compared) {
-      s << formatted("  %-14s   %s\n", p.panel.label.c_str(), p.panel.fit.empty() ? "(the reference)" : "-");
+      s << formatted("  %-*s   %s\n", w, p.panel.label.c_str(), p.panel.fit.empty() ? "(the reference)" : "-");
       continue;
     }
     const std::string r = !f.available ? "-"
@@ -512,7 +515,7 @@ std::string errorTable(const Sheet& sheet) {
                              : p.maps.hasFlipCi ? formatted("%.4f [%.4f, %.4f]", p.maps.flip, p.maps.flipCi.lo, p.maps.flipCi.hi)
                                                 : formatted("%.4f", p.maps.flip);
     clamped = clamped || f.clamped;
-    s << formatted("  %-14s   %-29s  %-24s  %-25s  %11.4f   %7.4f   %7.4f\n", p.panel.label.c_str(), r.c_str(), l.c_str(),
+    s << formatted("  %-*s   %-29s  %-24s  %-25s  %11.4f   %7.4f   %7.4f\n", w, p.panel.label.c_str(), r.c_str(), l.c_str(),
                    flip.c_str(), f.noisyRelativeRmse, p.brdfE1, p.brdfE2);
   }
   if (clamped) s << "  * the estimate of the squared error came out negative (the model is within the noise): shown as 0\n";
