@@ -21,9 +21,9 @@ struct ModelInfo {
   std::string_view label;       // for people: "Cook-Torrance"
   std::string_view shortLabel;  // for a sheet panel's label: "CT"
   std::string_view conventions; // how the published formula is read, for image metadata; may be empty
-  double fitCost = 1.0;         // a fit's expected cost, in units of a Microfacet fit (kFitCost; docs/cluster.md)
   std::span<const ParamSpec> params;
   Brdf (*make)(const ParamSet&);
+  double fitCost = 1.0;  // a fit's expected cost, in units of a Microfacet fit (kFitCost; docs/cluster.md)
 };
 
 template <class M>
