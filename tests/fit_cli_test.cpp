@@ -24,6 +24,14 @@ std::filesystem::path writeTable(const TempDir& dir, const std::string& name, co
   return path;
 }
 
+// A copy of a library file with its published fits only (the library's hold glossy's refits too), so that a
+// fit into it is added, not a replacement of glossy's earlier one.
+void copyPublishedFits(const std::string& name, const std::filesystem::path& to) {
+  MaterialFile library = loadMaterialFile(materialsDir() / (name + ".toml"));
+  std::erase_if(library.fits, [](const Fit& f) { return f.id.isGlossys(); });
+  writeText(to, toToml(library));
+}
+
 }  // namespace
 
 TEST(CliFit, UpdatesTheMaterialFileKeepingItsOtherFitsAndRecordsTheErrorAndSettings) {
@@ -75,10 +83,7 @@ TEST(CliFit, AddsItsFitBesideThePublishedOneAndNeverReplacesItUnasked) {
   TempDir dir;
   const auto table = writeTable(dir, "alum-bronze", kTruth);
   const auto toml = dir / "alum-bronze.toml";
-  // The library's file with its published fits only (it holds glossy's refits too).
-  MaterialFile library = loadMaterialFile(materialsDir() / "alum-bronze.toml");
-  std::erase_if(library.fits, [](const Fit& f) { return f.id.isGlossys(); });
-  writeText(toml, toToml(library));
+  copyPublishedFits("alum-bronze", toml);
   const MaterialFile published = loadMaterialFile(toml);
   const FitId ctE2 = FitId::parse("cook-torrance:E2", "test"), glossys = FitId::parse("cook-torrance:E2:glossy", "test");
   const std::vector<std::string> fit = {"fit", "--measured", table.string(), "--model", "cook-torrance", "--metric", "E2",
@@ -197,10 +202,7 @@ TEST(CliFit, BatchAddsBesideThePublishedFitsAndResumesPastItsOwnOnly) {
   std::filesystem::create_directories(dir / "tables");
   std::filesystem::create_directories(dir / "lib");
   writeText(dir / "tables" / "alum-bronze.binary", tabulatedMerlBytes(kTruth));
-  // The library's file with its published fits only (it holds glossy's refits too).
-  MaterialFile library = loadMaterialFile(materialsDir() / "alum-bronze.toml");
-  std::erase_if(library.fits, [](const Fit& f) { return f.id.isGlossys(); });
-  writeText(dir / "lib" / "alum-bronze.toml", toToml(library));
+  copyPublishedFits("alum-bronze", dir / "lib" / "alum-bronze.toml");
   const std::string before = readText(dir / "lib" / "alum-bronze.toml");
   const std::vector<std::string> args = {"fit", "--measured-dir", (dir / "tables").string(), "--out-dir", (dir / "lib").string(),
                                          "--model", "cook-torrance", "--metric", "E2", "--starts", "1", "--max-iterations", "20"};
