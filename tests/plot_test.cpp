@@ -115,6 +115,9 @@ void checkLogRatios(const std::filesystem::path& dir) {
   }
 }
 
+// The fits a plot draws by default: the comparison grid's, measured aside.
+size_t gridFits() { return sheetPanels().size() - 1; }
+
 std::map<std::string, std::vector<std::string>> fitArgs(const std::filesystem::path& material) {
   const MaterialFile m = loadMaterialFile(material);
   std::map<std::string, std::vector<std::string>> args;
@@ -154,8 +157,8 @@ TEST(PlotCli, CsvMatchesEvalWithMeasuredData) {
     }
   }
   EXPECT_EQ(kinds.count("theta_h"), 1u);
-  // The measured data and every fit of the file: the six published ones, glossy's refits and its GGX E2.
-  EXPECT_EQ(kinds.count("image_slice"), 1u + loadMaterialFile(materialsDir() / "alum-bronze.toml").fits.size());
+  // The measured data and the grid's six fits (not glossy's refits or its GGX fit beside them: --panels).
+  EXPECT_EQ(kinds.count("image_slice"), 1u + gridFits());
   EXPECT_EQ(kinds.count("albedo"), 1u);
   EXPECT_EQ(kinds.count("polar"), 1u);
 
@@ -190,7 +193,7 @@ TEST(PlotCli, CsvMatchesEvalWithoutMeasuredData) {
     EXPECT_NE(std::string(f["caption"]).find("measured data: none"), std::string::npos) << f["caption"];
     EXPECT_EQ(readCsv(tmp / "out" / std::string(f["csv"]))[0].count("Measured"), 0u) << f["csv"];
   }
-  EXPECT_EQ(slices, loadMaterialFile(material).fits.size());  // one per fit: published, glossy's refits, its GGX E2
+  EXPECT_EQ(slices, gridFits());  // one per fit of the grid
   checkCsvsAgainstEval(tmp / "out", fitArgs(material));
 }
 
@@ -251,8 +254,8 @@ TEST(PlotRange, EveryCurvesFloorIsOnTheLogAxes) {
     EXPECT_LT(lowest, std::pow(10.0, lo + 1)) << f["kind"] << ": the axis reaches decades no value is in";
     EXPECT_LE(hi - lo, plot::kMaxDecades);
   }
-  // Measured and every fit of the file, in two figures.
-  EXPECT_EQ(checked, 2u * (1u + loadMaterialFile(materialsDir() / "chrome.toml").fits.size()));
+  // Measured and the grid's fits, in two figures.
+  EXPECT_EQ(checked, 2u * (1u + gridFits()));
 }
 
 // The image slices' colour scale is what their caption says: the decades holding the 0.5th to the 99.5th
@@ -270,7 +273,7 @@ TEST(PlotRange, ImageSliceCaptionStatesItsColourScale) {
     for (const auto& [column, values] : brdfColumns(dir / std::string(f["csv"])))
       if (title.find("of " + column + ",") != std::string::npos) all.insert(all.end(), values.begin(), values.end());
   }
-  const size_t slices = 1 + loadMaterialFile(materialsDir() / "chrome.toml").fits.size();  // its network's, and each fit's
+  const size_t slices = 1 + gridFits();  // its network's, and each fit's
   ASSERT_EQ(stated.size(), slices);
   ASSERT_GT(all.size(), slices * 8000u);
   const int lo = int(std::floor(std::log10(percentile(all, 0.005)))), hi = int(std::ceil(std::log10(percentile(all, 0.995))));
@@ -286,8 +289,8 @@ TEST(PlotRange, DecadesOptionSetsEverySpan) {
                                    "-o", (tmp / "out").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json index = readIndex(tmp / "out");
-  // θh and polar, and an image slice per fit of the file.
-  ASSERT_EQ(index["figures"].size(), 2u + loadMaterialFile(material).fits.size());
+  // θh and polar, and an image slice per fit of the grid.
+  ASSERT_EQ(index["figures"].size(), 2u + gridFits());
   for (const auto& f : index["figures"]) {
     const auto [lo, hi] = captionDecades(f["caption"]);
     EXPECT_EQ(hi - lo, 4) << f["caption"];
@@ -533,7 +536,7 @@ print("ok", len(index["figures"]))
   const int status = std::system(cmd.c_str());
   EXPECT_EQ(status, 0) << readText(tmp / "py.out");
   // θh, albedo, polar, and an image slice of the measured data and of each fit.
-  EXPECT_EQ(readText(tmp / "py.out"), "ok " + std::to_string(4 + loadMaterialFile(materialsDir() / "alum-bronze.toml").fits.size()) + "\n");
+  EXPECT_EQ(readText(tmp / "py.out"), "ok " + std::to_string(4 + gridFits()) + "\n");
 }
 
 // Without rsvg-convert on PATH: the SVGs and CSVs all the same, "png": null, and one line saying why.
@@ -553,6 +556,32 @@ TEST(PlotCli, WithoutRsvgConvertWritesSvgAndSaysSo) {
   EXPECT_FALSE(std::filesystem::exists(tmp / "out/albedo.png"));
 }
 
+// --panels: exactly the BRDFs named, in that order, glossy's fits beside the grid included; the legend and
+// the CSV columns follow it.
+TEST(PlotCli, PanelsChooseTheCurvesAndTheirOrder) {
+  TempDir tmp;
+  const std::string material = (materialsDir() / "chrome.toml").string();
+  const RunResult r = runGlossyIn(tmp.path(), {"GLOSSY_MERL_DIR"},
+                                  {"plot", "--material", material, "--panels", "ggx:E2:glossy,measured,cook-torrance:E1",
+                                   "--figures", "theta_h,image_slice", "-o", (tmp / "out").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json index = readIndex(tmp / "out");
+  std::vector<std::string> slices;
+  for (const auto& f : index["figures"]) {
+    if (f["kind"] == "image_slice") slices.push_back(f["title"]);
+    if (f["kind"] != "theta_h") continue;
+    const std::string text = readText(tmp / "out" / std::string(f["csv"]));
+    std::vector<std::string> brdfs;  // the header's BRDF columns, in order
+    std::istringstream header(text.substr(0, text.find('\n')));
+    for (std::string column; std::getline(header, column, ',');)
+      if (column == "Measured" || column.find(" E") != std::string::npos) brdfs.push_back(column);
+    EXPECT_EQ(brdfs, (std::vector<std::string>{"GGX E2 (glossy fit)", "Measured", "CT E1"})) << f["csv"];
+  }
+  ASSERT_EQ(slices.size(), 3u);  // one per BRDF named
+  EXPECT_NE(slices[0].find("GGX E2"), std::string::npos) << slices[0];
+  EXPECT_NE(slices[2].find("CT E1"), std::string::npos) << slices[2];
+}
+
 TEST(PlotCli, BadInputExitsTwoWithOneLine) {
   TempDir tmp;
   const std::string material = (materialsDir() / "chrome.toml").string();
@@ -563,6 +592,8 @@ TEST(PlotCli, BadInputExitsTwoWithOneLine) {
   expectOneLineError(runGlossy({"plot", "--material", material, "-o", (tmp / "file").string()}), "file");
   expectOneLineError(runGlossy({"plot", "--material", material, "--measured", (tmp / "none.binary").string(), "-o", (tmp / "out").string()}),
                      "none.binary");
+  expectOneLineError(runGlossy({"plot", "--material", material, "--panels", "measured,phong:E2", "-o", (tmp / "out").string()}), "--panels");
+  expectOneLineError(runGlossy({"plot", "--material", material, "--panels", "", "-o", (tmp / "out").string()}), "--panels");
   writeText(tmp / "bad.toml", "name = \"bad\"\n[[fit]]\nmodel = \"cook-torrance\"\n");
   expectOneLineError(runGlossy({"plot", "--material", (tmp / "bad.toml").string(), "-o", (tmp / "out").string()}), "bad.toml");
   EXPECT_FALSE(std::filesystem::exists(tmp / "out"));

@@ -21,14 +21,17 @@ namespace glossy::cli {
 namespace {
 
 struct PlotOptions {
-  std::string material, measured, channel = "luminance", polarScale = "log";
+  std::string material, measured, channel = "luminance", polarScale = "log", panels;
   int decades = 0;  // 0: the log scales follow the data
+  CLI::Option* panelsOption = nullptr;
   std::vector<std::string> figures;  // kinds to draw; empty: all
   std::filesystem::path merlDir, out;
 };
 
 int runPlot(const PlotOptions& o) {
   using namespace plot;
+  const std::vector<SheetPanel> panels = o.panelsOption->count() == 0 ? std::vector<SheetPanel>(sheetPanels().begin(), sheetPanels().end())
+                                                          : parsePanels(o.panels, "--panels");
   checkOutputFolder(o.out, "-o");
   const OutputLock lock(o.out, "-o");
   OwnedFolder out(o.out, kPlotCommand, "-o");  // a folder of glossy plot's, or new: never `/` or a user's
@@ -50,7 +53,7 @@ int runPlot(const PlotOptions& o) {
                                : "none (no " + m.measured + " in --merl-dir or $GLOSSY_MERL_DIR)";
   }
   const Channel channel = o.channel == "R" ? Channel::R : o.channel == "G" ? Channel::G : o.channel == "B" ? Channel::B : Channel::Luminance;
-  PlotSet set = makePlotSet(m, table, label, channel);
+  PlotSet set = makePlotSet(m, table, label, channel, panels);
   set.decades = o.decades;
   const auto rsvg = findRsvgConvert();
   if (!rsvg) note("rsvg-convert is not on PATH: writing the SVGs only; PNGs need librsvg2-bin");
@@ -91,6 +94,9 @@ Command addPlotCommand(CLI::App& parent) {
   app->add_option("--channel", o->channel, "Which channel to plot: R, G, B or luminance (Rec. 709)")
       ->check(CLI::IsMember({"R", "G", "B", "luminance"}))
       ->capture_default_str();
+  o->panelsOption = app->add_option("--panels", o->panels,
+                  "The BRDFs to draw, as a sheet's --panels: a comma list of measured and MODEL:METRIC fits, in order; "
+                  "default: " + panelList(sheetPanels()));
   app->add_option("--figures", o->figures, "Only these kinds of figure (default: all): theta_h, image_slice, albedo, polar")
       ->check(CLI::IsMember(std::vector<std::string>(plot::kPlotKinds.begin(), plot::kPlotKinds.end())))
       ->delimiter(',');

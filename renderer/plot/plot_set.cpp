@@ -96,27 +96,23 @@ std::vector<LegendEntry> PlotSet::legend() const {
 }
 
 PlotSet makePlotSet(const MaterialFile& material, std::shared_ptr<const MerlTable> measured, const std::string& measuredNote,
-                    Channel channel) {
+                    Channel channel, std::span<const SheetPanel> panels) {
   PlotSet set;
   set.material = material.name;
   set.channel = channel;
   set.measuredLabel = measuredNote;
-  PlotBrdf m{SheetPanel::measured(), true, measured != nullptr, measured ? "" : "no data", std::nullopt, measured};
-  set.brdfs.push_back(std::move(m));
-  std::vector<const Fit*> shown;
-  auto addFit = [&](const SheetPanel& panel) {
+  for (const SheetPanel& panel : panels) {
+    if (panel.fit.empty()) {
+      set.brdfs.push_back({panel, true, measured != nullptr, measured ? "" : "no data", std::nullopt, measured});
+      continue;
+    }
     const Fit* fit = material.find(FitId::parse(panel.fit, material.path.string()));
     // A grid slot that only glossy's fit fills shows it under glossy's label.
     PlotBrdf b{fit && fit->id.str() != panel.fit ? SheetPanel::ofFit(fit->id) : panel, false, fit != nullptr,
                fit ? "" : "not in the file", std::nullopt, nullptr};
-    if (fit) b.fit = makeBrdf(*fit), shown.push_back(fit);
+    if (fit) b.fit = makeBrdf(*fit);
     set.brdfs.push_back(std::move(b));
-  };
-  for (const SheetPanel& panel : sheetPanels())
-    if (!panel.fit.empty()) addFit(panel);
-  // Fits beyond the grid (glossy's own fits; glossy fit may add microfacet:E1, smooth:E1), in the file's order.
-  for (const Fit& fit : material.fits)
-    if (std::find(shown.begin(), shown.end(), &fit) == shown.end()) addFit(SheetPanel::ofFit(fit.id));
+  }
   return set;
 }
 

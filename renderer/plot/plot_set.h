@@ -1,5 +1,5 @@
 // What glossy plot draws: a material's BRDFs in the sheet's order and colours (renderer/sheet/comparison_grid.h:
-// Measured, then the six fits of the supplement's grid, then any other fit the file holds),
+// the panels --panels names, by default Measured and the six fits of the supplement's grid),
 // each present or absent with the reason, and the one channel plotted (R, G, B or luminance). Every figure
 // evaluates through value(), so its curves, its CSV and `glossy eval` see the same numbers.
 #pragma once
@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,7 +37,7 @@ struct PlotSet {
   std::string measuredLabel;   // the data source ("MERL (NBRDF reconstruction) FILE"), or why there is none
   Channel channel = Channel::Luminance;
   int decades = 0;  // the log scales' span below the peak (glossy plot --decades); 0: down to every curve's floor
-  std::vector<PlotBrdf> brdfs;  // measured first, then the fits, in the sheet's order
+  std::vector<PlotBrdf> brdfs;  // in the order of the panels asked for (by default the sheet grid's)
 
   const PlotBrdf* measured() const;  // null when absent
   std::vector<const PlotBrdf*> present() const;
@@ -60,8 +61,9 @@ struct PlotSet {
 // neighbouring bin.
 Vec3 asEvalReads(const Vec3& d);
 
-// `measured` null: no measured data, `measuredNote` says why.
+// The BRDFs of `panels` (glossy plot --panels; by default the sheet's grid) in their order. `measured` null:
+// no measured data, `measuredNote` says why.
 PlotSet makePlotSet(const MaterialFile& material, std::shared_ptr<const MerlTable> measured, const std::string& measuredNote,
-                    Channel channel);
+                    Channel channel, std::span<const SheetPanel> panels = sheetPanels());
 
 }  // namespace glossy::plot
