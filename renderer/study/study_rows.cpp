@@ -3,6 +3,7 @@
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "materials/params/material_file.h"
+#include "renderer/sheet/comparison_grid.h"
 #include "renderer/study/perceptual.h"
 
 #include <algorithm>
@@ -69,7 +70,9 @@ std::vector<StudyRow> sheetRows(const report::SheetRecord& sheet, const PlannedM
     r.lighting = lighting;
     r.scene = scene;
     r.layer = p.layer;
-    r.label = p.label;
+    // The model's label whoever made the fit ("CT E2", not the sheet's "CT E2 (glossy fit)"): one model
+    // compares across databases; fitSource says whose fit it is.
+    r.label = SheetPanel::ofFit({id.model, id.metric}).label;
     r.fit = p.fit;
     r.fitMetric = id.metric;
     r.fitSource = fitSource(id, file);
