@@ -154,6 +154,7 @@ TEST(StudyCli, BadStudyFilesAreRefusedBeforeAnyWork) {
       {head + "[lightings]\ngrey = { constant = -1.0 }\n", "lightings.grey.constant: radiance must be"},
       {head + "[lightings]\ngrey = { constant = [1.0, inf, 1.0] }\n", "lightings.grey.constant: radiance must be"},
       {head + "[lightings]\nboth = { sky = true, constant = 1.0 }\n", "lightings.both: give exactly one"},
+      {head + "[lightings]\nsky = { sky = true, rotate = 400 }\n", "lightings.sky.rotate: must be a finite number in [-360, 360]"},
       {head + sky + "[scenes]\nbox = { builtin = \"box\" }\n", "scenes.box.builtin: 'box' is not a built-in scene"},
       {head + sky + "[scenes]\nmine = { gltf = \"missing.gltf\" }\n", "scenes.mine.gltf: no such file"},
       {head + "perceptual = \"no-such-folder\"\n" + sky, "perceptual: no such folder"},

@@ -59,7 +59,7 @@ struct Reader {
     return std::nullopt;
   }
 
-  // A path from the file: relative to the study file's folder; it must exist as `kind` ("file", "folder").
+  // A path from the file, relative to the study file's folder: an existing regular file, or folder.
   fs::path path(const toml::node& node, const std::string& key, bool folderWanted) const {
     const std::string given = text(node, key);
     if (given.empty()) fail(node, key, "empty path");
@@ -149,7 +149,8 @@ StudyLighting readLighting(const Reader& r, const std::string& name, const toml:
   if (const toml::node* c = t->get("constant")) l.envConstant = rgbText(r, *c, key + ".constant");
   if (const toml::node* rotate = t->get("rotate")) {
     const auto v = r.number(*rotate);
-    if (!v || !options::kEnvRotate.accepts(*v)) r.fail(*rotate, key + ".rotate", options::kEnvRotate.refusal(rotate->is_value() ? formatted("%g", v.value_or(NAN)) : "?"));
+    if (!v) r.fail(*rotate, key + ".rotate", "must be a number of degrees");
+    if (!options::kEnvRotate.accepts(*v)) r.fail(*rotate, key + ".rotate", options::kEnvRotate.refusal(formatted("%g", *v)));
     if (!l.envConstant.empty()) r.fail(*rotate, key + ".rotate", "a constant environment has nothing to rotate");
     l.rotate = *v;
   }
@@ -242,7 +243,7 @@ void readAnalysis(const Reader& r, const toml::node& node, StudyFile& study) {
 
 }  // namespace
 
-std::string databaseLabel(const std::string& folder) {
+std::string databaseOfFolder(const std::string& folder) {
   static const std::map<std::string, std::string> kLabels = {{"merl", "MERL"}, {"rgl-epfl", "RGL-EPFL"}, {"nielsen2015", "Nielsen 2015"}};
   const auto it = kLabels.find(folder);
   return it == kLabels.end() ? folder : it->second;
@@ -288,7 +289,7 @@ StudyFile loadStudyFile(const fs::path& path, const fs::path& library) {
     if (auto [it, fresh] = byName.emplace(m.name, entries[k].file); !fresh)
       throw InputError(r.source + ": materials: " + it->second.string() + " and " + entries[k].file.string() + " both name the material '" +
                        m.name + "'");
-    study.plan.materials.push_back({m.name, databaseLabel(entries[k].database), fs::weakly_canonical(entries[k].file, ec)});
+    study.plan.materials.push_back({m.name, databaseOfFolder(entries[k].database), fs::weakly_canonical(entries[k].file, ec)});
   }
   std::sort(study.plan.materials.begin(), study.plan.materials.end(),
             [](const study::PlannedMaterial& a, const study::PlannedMaterial& b) { return a.name < b.name; });

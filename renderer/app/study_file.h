@@ -44,8 +44,8 @@ struct StudyFile {
   SceneOptions sceneOptions(size_t scene, size_t lighting) const;
 };
 
-// The database folders of the library and their labels, as StudyRow::database names them.
-std::string databaseLabel(const std::string& folder);
+// A database folder's label as StudyRow::database gives it ("rgl-epfl" → "RGL-EPFL"); an unknown folder's own name.
+std::string databaseOfFolder(const std::string& folder);
 
 // Reads and checks `path`; `library` is the material library (a folder per database) its globs range over.
 StudyFile loadStudyFile(const std::filesystem::path& path, const std::filesystem::path& library);

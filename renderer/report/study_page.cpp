@@ -56,7 +56,7 @@ std::string studyPage(const study::StudyPlan& plan, const std::vector<study::Stu
   h << ".</p>\n</header>\n<main>\n";
 
   if (!files.summary.empty())
-    h << "<h2 id=\"summary-heading\">Summary</h2>\n<pre class=\"study-summary\">" << escapeHtml(files.summary) << "</pre>\n";
+    h << "<h2 id=\"summary-heading\">Summary</h2>\n<pre class=\"study-summary\" style=\"white-space:pre-wrap\">" << escapeHtml(files.summary) << "</pre>\n";
   if (!files.figures.empty()) {
     h << "<h2 id=\"figures-heading\">Figures</h2>\n";
     for (const std::string& f : files.figures) {
