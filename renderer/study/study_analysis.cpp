@@ -56,7 +56,6 @@ Json intervalJson(const Interval& i) {
   return j;
 }
 
-std::string fmt(const Opt& v, const char* f = "%.4g") { return v ? formatted(f, *v) : std::string("—"); }
 std::string intervalText(const Interval& i, const char* f = "%.4g") {
   if (!i.estimate) return "undefined (" + i.reason + ")";
   std::string s = formatted(f, *i.estimate);
@@ -604,7 +603,9 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
       }
     jf["materials"] = int(mats.size());
     PerceptualSeries ps;
-    ps.name = pf.method + " ↔ " + s.models[*model] + " (" + pf.fitSource + ")";
+    ps.name = s.models[*model];
+    ps.note = pf.fitSource + " fit, as " + pf.method;
+    const std::string pairName = pf.method + " ↔ " + s.models[*model] + " (" + pf.fitSource + ")";
     ps.style.colour = fits.empty() ? "#e69f00" : "#56b4e9";
     ps.points.resize(std::size(kFigureNames));
     Json figs = Json::array();
@@ -646,7 +647,7 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
     jf["figures"] = figs;
     jf["agreesBest"] = best.empty() ? Json(nullptr) : Json(best);
     series.push_back(ps);
-    headline += (headline.empty() ? "" : "\n") + std::string("Against people (") + ps.name + ", " + std::to_string(mats.size()) +
+    headline += (headline.empty() ? "" : "\n") + std::string("Against people (") + pairName + ", " + std::to_string(mats.size()) +
                 " MERL materials): " +
                 (best.empty() ? std::string("no figure correlates (undefined)")
                               : "the figure that agrees best with the perceived distance is " + best + ", Spearman ρ " +
@@ -679,8 +680,11 @@ std::string rowsCsv(const Study& s) {
                                         csvNum(r.flipHi), csvNum(r.luminanceRatio), r.closest ? "1" : "0",
                                         r.tied ? "1" : "0", r.warning, r.sheet, std::to_string(r.width),
                                         std::to_string(r.height), std::to_string(r.spp), std::to_string(r.seed)};
-    for (std::size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + csvField(f[i]);
-    out += "\n";
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      if (i) out += ',';
+      out += csvField(f[i]);
+    }
+    out += '\n';
   }
   return out;
 }
@@ -813,6 +817,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
     jf["df"] = t.friedman->treatments - 1;
     jf["p"] = t.friedman->pChiSquare;
     jf["imanDavenportF"] = num(t.friedman->imanDavenportF);
+    if (!t.friedman->imanDavenportF) jf["imanDavenportFReason"] = "infinite: every material ranks the models alike";
     jf["fDf"] = Json::array({t.friedman->treatments - 1, (t.friedman->treatments - 1) * (t.friedman->blocks - 1)});
     jf["pF"] = num(t.friedman->pF);
   } else {

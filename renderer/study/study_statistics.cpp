@@ -134,9 +134,11 @@ std::optional<FriedmanResult> friedman(const std::vector<std::vector<double>>& b
   out.chiSquare = std::max(0.0, (12.0 / (n * dk * (dk + 1.0)) * ss - 3.0 * n * (dk + 1.0)) / c);
   out.pChiSquare = chiSquareSf(out.chiSquare, dk - 1.0);
   const double fDenom = n * (dk - 1.0) - out.chiSquare;
-  if (fDenom > 0.0 && nb >= 2) {
+  if (fDenom > 0.0) {
     out.imanDavenportF = (n - 1.0) * out.chiSquare / fDenom;
     out.pF = fSf(*out.imanDavenportF, dk - 1.0, (dk - 1.0) * (n - 1.0));
+  } else {
+    out.pF = 0.0;  // every block ranks the treatments alike: F is infinite
   }
   for (double r : rankSums) out.meanRanks.push_back(r / n);
   return out;
