@@ -238,6 +238,19 @@ TEST(StudyAnalysis, UndefinedStatisticsAreNullWithAReasonNeverNaN) {
   expectNoNanOrInf(dir, res);
 }
 
+TEST(StudyAnalysis, AStudyWithoutImageErrorsStillWritesItsFilesAndSaysWhy) {
+  TempDir dir;
+  auto rows = syntheticStudy();
+  for (auto& r : rows) r.rrmse.reset();
+  const auto res = analyseStudy(rows, fastOptions(), dir.path());
+  const Json r = results(dir);
+  EXPECT_EQ(r["counts"]["rowsSkippedWithoutRrmse"], 96);
+  EXPECT_TRUE(r["friedman"]["p"].is_null());
+  EXPECT_FALSE(r["friedman"]["reason"].get<std::string>().empty());
+  EXPECT_NE(res.summary.find("96 without rRMSE skipped"), std::string::npos) << res.summary;
+  expectNoNanOrInf(dir, res);
+}
+
 TEST(StudyAnalysis, RowsThatCannotBeAStudyAreBadInput) {
   TempDir dir;
   auto rows = syntheticStudy();
