@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -84,7 +85,10 @@ struct Study {
   std::map<SheetKey, std::map<std::string, const StudyRow*>> sheets;
   // Per material and model: the figure averaged over the material's sheets.
   std::vector<std::vector<Opt>> rrmse, flip, e1, e2;
-  std::vector<std::string> fitOf, sourceOf;  // per model: its fit and source (the first row's)
+  // Per model: its first row's fit and source (for its colour), and every fit and source its rows carry
+  // (a model's label covers the published fit on one database and glossy's on another).
+  std::vector<std::string> fitOf, sourceOf;
+  std::vector<std::set<std::string>> fitsOf, sourcesOf;
 };
 
 Opt meanOf(const std::vector<double>& v) {
@@ -106,6 +110,7 @@ Study readRows(std::span<const StudyRow> rows) {
            std::tie(b.material, b.lighting, b.scene, b.label, b.fit, b.fitSource);
   });
   std::set<std::string> models, materials;
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, const StudyRow*> seen;
   for (const StudyRow& r : s.all) {
     if (r.material.empty() || r.label.empty())
       throw InputError("study row without a material or model label (" + printableLine(r.sheet, 80) + ")");
@@ -119,9 +124,13 @@ Study readRows(std::span<const StudyRow> rows) {
     checkFinite(r, r.flipHi, "FLIP's upper bound");
     checkFinite(r, r.luminanceRatio, "the luminance ratio");
     auto& sheet = s.sheets[{r.material, r.lighting, r.scene}];
-    if (sheet.count(r.label))
+    // One row per model and sheet: a sheet showing two fits of one model (the published and glossy's)
+    // could not say which of them ranks where.
+    const auto [first, fresh] = seen.emplace(std::tuple(r.material, r.lighting, r.scene, r.label), &r);
+    if (!fresh)
       throw InputError("study: model " + printableLine(r.label, 40) + " appears twice on the sheet of " +
-                       printableLine(r.material, 80) + " / " + printableLine(r.lighting, 40) + " / " + printableLine(r.scene, 40));
+                       printableLine(r.material, 80) + " / " + printableLine(r.lighting, 40) + " / " + printableLine(r.scene, 40) +
+                       " (fits " + printableLine(first->second->fit, 40) + " and " + printableLine(r.fit, 40) + ")");
     if (!r.rrmse) {
       ++s.skipped;
       continue;
@@ -138,6 +147,8 @@ Study readRows(std::span<const StudyRow> rows) {
   s.materials.assign(materials.begin(), materials.end());
   s.fitOf.resize(s.models.size());
   s.sourceOf.resize(s.models.size());
+  s.fitsOf.resize(s.models.size());
+  s.sourcesOf.resize(s.models.size());
   const auto nm = s.materials.size(), nk = s.models.size();
   for (auto* t : {&s.rrmse, &s.flip, &s.e1, &s.e2}) t->assign(nm, std::vector<Opt>(nk));
   for (std::size_t i = 0; i < nm; ++i)
@@ -152,6 +163,8 @@ Study readRows(std::span<const StudyRow> rows) {
           s.fitOf[k] = row.fit;
           s.sourceOf[k] = row.fitSource;
         }
+        s.fitsOf[k].insert(row.fit);
+        s.sourcesOf[k].insert(row.fitSource);
         r.push_back(*row.rrmse);
         if (row.flip) f.push_back(*row.flip);
         if (row.e1) a.push_back(*row.e1);
@@ -415,8 +428,8 @@ Json perModel(const Study& s, const RankTests& t, const AnalysisOptions& o, std:
     meanIv.push_back(mean);
     Json j;
     j["label"] = s.models[k];
-    j["fit"] = s.fitOf[k];
-    j["fitSource"] = s.sourceOf[k];
+    j["fits"] = Json(std::vector<std::string>(s.fitsOf[k].begin(), s.fitsOf[k].end()));
+    j["fitSources"] = Json(std::vector<std::string>(s.sourcesOf[k].begin(), s.sourcesOf[k].end()));
     j["sheets"] = sheets;
     j["closest"] = closest;
     j["tied"] = tied;
@@ -576,36 +589,47 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
       "Which ABC variant (Smooth Surface or Microfacet) the study used is not stated in the released data and could not "
       "be checked, so both published ABC fits are compared.";
   Json fits = Json::array();
-  const Column columns[] = {&Study::rrmse, &Study::flip, &Study::e1, &Study::e2};
   headline.clear();
   for (const PerceptualFit& pf : perceptualFits()) {
-    std::optional<std::size_t> model;
-    for (std::size_t k = 0; k < s.models.size(); ++k)
-      if (s.fitOf[k] == pf.fit && s.sourceOf[k] == pf.fitSource) model = k;
+    // The rows of exactly this fit (a model's label may cover glossy's fits on other materials), each
+    // figure averaged over the material's sheets.
+    std::string label;
+    std::vector<std::array<Opt, 4>> figure(s.materials.size());
+    for (std::size_t i = 0; i < s.materials.size(); ++i) {
+      std::array<std::vector<double>, 4> v;
+      for (const StudyRow* r : s.used) {
+        if (r->material != s.materials[i] || r->fit != pf.fit || r->fitSource != pf.fitSource) continue;
+        if (label.empty()) label = r->label;
+        const Opt values[] = {r->rrmse, r->flip, r->e1, r->e2};
+        for (std::size_t f = 0; f < 4; ++f)
+          if (values[f]) v[f].push_back(*values[f]);
+      }
+      for (std::size_t f = 0; f < 4; ++f) figure[i][f] = meanOf(v[f]);
+    }
     Json jf;
     jf["method"] = pf.method;
     jf["fit"] = pf.fit;
     jf["fitSource"] = pf.fitSource;
-    if (!model) {
+    if (label.empty()) {
       jf["model"] = nullptr;
       jf["reason"] = "the study has no " + pf.fitSource + " " + pf.fit + " fit";
       fits.push_back(jf);
       continue;
     }
-    jf["model"] = s.models[*model];
+    jf["model"] = label;
     // The materials with both a glossy figure and a perceived distance.
     std::vector<std::size_t> mats;
     std::vector<double> dist;
     for (std::size_t i = 0; i < s.materials.size(); ++i)
-      if (const auto d = data.distance(pf.method, s.materials[i]); d && s.rrmse[i][*model]) {
+      if (const auto d = data.distance(pf.method, s.materials[i]); d && figure[i][0]) {
         mats.push_back(i);
         dist.push_back(*d);
       }
     jf["materials"] = int(mats.size());
     PerceptualSeries ps;
-    ps.name = s.models[*model];
+    ps.name = label;
     ps.note = pf.fitSource + " fit, as " + pf.method;
-    const std::string pairName = pf.method + " ↔ " + s.models[*model] + " (" + pf.fitSource + ")";
+    const std::string pairName = pf.method + " ↔ " + label + " (" + pf.fitSource + ")";
     ps.style.colour = fits.empty() ? "#e69f00" : "#56b4e9";
     ps.points.resize(std::size(kFigureNames));
     Json figs = Json::array();
@@ -615,9 +639,9 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
     for (std::size_t f = 0; f < std::size(kFigureNames); ++f) {
       std::vector<std::size_t> unit;
       for (std::size_t u = 0; u < mats.size(); ++u)
-        if ((s.*columns[f])[mats[u]][*model]) {
+        if (figure[mats[u]][f]) {
           unit.push_back(u);
-          ps.points[f].push_back({*(s.*columns[f])[mats[u]][*model], dist[u]});
+          ps.points[f].push_back({*figure[mats[u]][f], dist[u]});
         }
       Json jfig;
       jfig["figure"] = kFigureNames[f];
@@ -629,7 +653,7 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
             [&](const std::vector<std::size_t>& idx) {
               std::vector<double> x, y;
               for (std::size_t i : idx) {
-                x.push_back(*(s.*columns[f])[mats[unit[i]]][*model]);
+                x.push_back(*figure[mats[unit[i]]][f]);
                 y.push_back(dist[unit[i]]);
               }
               return corr(x, y);
@@ -772,10 +796,12 @@ std::vector<ModelStyle> modelStyles(const Study& s) {
     const std::string fit = s.fitOf[k].substr(0, s.fitOf[k].find(':', s.fitOf[k].find(':') + 1));
     for (const GridFit& g : gridFits())
       if (g.fit == fit) m.style.colour = std::string(g.colour);
-    if (m.style.colour == "#000000" || used.count(m.style.colour + (s.sourceOf[k] == "glossy" ? "d" : "")))
-      m.style.colour = kPalette[k % std::size(kPalette)];
-    if (s.sourceOf[k] == "glossy") m.style.dash = "6 3";
-    used.insert(m.style.colour + (s.sourceOf[k] == "glossy" ? "d" : ""));
+    // Dashed: glossy's own fits only, as the sheets draw them.
+    const bool glossyOnly = s.sourcesOf[k].size() == 1 && s.sourcesOf[k].count("glossy");
+    const std::string key = glossyOnly ? "d" : "";
+    if (m.style.colour == "#000000" || used.count(m.style.colour + key)) m.style.colour = kPalette[k % std::size(kPalette)];
+    if (glossyOnly) m.style.dash = "6 3";
+    used.insert(m.style.colour + key);
     out.push_back(m);
   }
   return out;
