@@ -166,6 +166,7 @@ TEST(StudyAnalysis, E2OrderedWithTheImageErrorIsSaidToPredictItBetterThanE1) {
   EXPECT_EQ((*e2)["withinMaterial"]["spearman"]["estimate"], 1.0);
   EXPECT_EQ((*e2)["bestIsImageBest"]["share"]["estimate"], 1.0);
   EXPECT_GT((*e2)["pooled"]["spearman"]["lo"].get<double>(), (*e1)["pooled"]["spearman"]["hi"].get<double>());
+  EXPECT_GT(r["e2MinusE1"][0]["pooledSpearman"]["lo"].get<double>(), 0.0);
   EXPECT_NE(res.summary.find("E2 predicts image error better than E1"), std::string::npos) << res.summary;
 }
 
