@@ -11,6 +11,7 @@
 #include "renderer/sheet/comparison_grid.h"
 #include "renderer/study/perceptual.h"
 #include "renderer/study/study_figures.h"
+#include "renderer/study/study_tables.h"
 #include "renderer/study/study_statistics.h"
 #include "renderer/util/atomic_file.h"
 
@@ -694,109 +695,6 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
   return out;
 }
 
-// ---- outputs ----------------------------------------------------------------------------------------------
-
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
-std::string csvNum(const Opt& v) { return v ? formatted("%.17g", *v) : ""; }
-
-std::string rowsCsv(const Study& s) {
-  std::string out =
-      "material,database,material_class,lighting,scene,layer,label,fit,fit_metric,fit_source,e1,e2,rrmse,rrmse_lo,rrmse_hi,"
-      "flip,flip_lo,flip_hi,luminance_ratio,closest,tied,warning,sheet,width,height,spp,seed\n";
-  for (const StudyRow& r : s.all) {
-    const std::vector<std::string> f = {r.material, r.database, r.materialClass, r.lighting, r.scene, r.layer, r.label,
-                                        r.fit, r.fitMetric, r.fitSource, csvNum(r.e1), csvNum(r.e2), csvNum(r.rrmse),
-                                        csvNum(r.rrmseLo), csvNum(r.rrmseHi), csvNum(r.flip), csvNum(r.flipLo),
-                                        csvNum(r.flipHi), csvNum(r.luminanceRatio), r.closest ? "1" : "0",
-                                        r.tied ? "1" : "0", r.warning, r.sheet, std::to_string(r.width),
-                                        std::to_string(r.height), std::to_string(r.spp), std::to_string(r.seed)};
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      if (i) out += ',';
-      out += csvField(f[i]);
-    }
-    out += '\n';
-  }
-  return out;
-}
-
-Json rowsJson(const Study& s) {
-  Json out = Json::array();
-  for (const StudyRow& r : s.all) {
-    Json j;
-    j["material"] = r.material;
-    j["database"] = r.database;
-    j["materialClass"] = r.materialClass;
-    j["lighting"] = r.lighting;
-    j["scene"] = r.scene;
-    j["layer"] = r.layer;
-    j["label"] = r.label;
-    j["fit"] = r.fit;
-    j["fitMetric"] = r.fitMetric;
-    j["fitSource"] = r.fitSource;
-    j["e1"] = num(r.e1);
-    j["e2"] = num(r.e2);
-    j["rrmse"] = num(r.rrmse);
-    j["rrmseLo"] = num(r.rrmseLo);
-    j["rrmseHi"] = num(r.rrmseHi);
-    j["flip"] = num(r.flip);
-    j["flipLo"] = num(r.flipLo);
-    j["flipHi"] = num(r.flipHi);
-    j["luminanceRatio"] = num(r.luminanceRatio);
-    j["closest"] = r.closest;
-    j["tied"] = r.tied;
-    j["warning"] = r.warning;
-    j["sheet"] = r.sheet;
-    j["width"] = r.width;
-    j["height"] = r.height;
-    j["spp"] = r.spp;
-    j["seed"] = r.seed;
-    out.push_back(j);
-  }
-  return out;
-}
-
-std::string latexEscape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': case '%': case '$': case '#': case '_': case '{': case '}': out += std::string("\\") + c; break;
-      case '~': out += "\\textasciitilde{}"; break;
-      case '^': out += "\\textasciicircum{}"; break;
-      case '\\': out += "\\textbackslash{}"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-std::string latexInterval(const Json& j) {
-  if (j["estimate"].is_null()) return "--";
-  std::string s = formatted("%.4f", j["estimate"].get<double>());
-  if (!j["lo"].is_null()) s += formatted(" [%.4f, %.4f]", j["lo"].get<double>(), j["hi"].get<double>());
-  return s;
-}
-
-std::string modelsTex(const Json& models, int materials) {
-  std::string out =
-      "% glossy study: per-model results (needs \\usepackage{booktabs}). Intervals: 95 % percentile bootstrap over materials.\n"
-      "\\begin{tabular}{lrrrll}\n\\toprule\n"
-      "Model & Closest & Tied & Mean rank & Mean $r^*$ [95\\,\\% CI] & Median $r^*$ [95\\,\\% CI] \\\\\n\\midrule\n";
-  for (const Json& m : models) {
-    out += latexEscape(m["label"].get<std::string>()) + " & " + std::to_string(m["closest"].get<int>()) + " & " +
-           std::to_string(m["tied"].get<int>()) + " & " +
-           (m["meanRank"].is_null() ? std::string("--") : formatted("%.2f", m["meanRank"].get<double>())) + " & " +
-           latexInterval(m["meanRrmse"]) + " & " + latexInterval(m["medianRrmse"]) + " \\\\\n";
-  }
-  out += "\\bottomrule\n\\end{tabular}\n% " + std::to_string(materials) + " materials.\n";
-  return out;
-}
-
 std::vector<ModelStyle> modelStyles(const Study& s) {
   static const char* const kPalette[] = {"#e69f00", "#56b4e9", "#009e73", "#cc79a7", "#0072b2",
                                          "#d55e00", "#f0e442", "#999999", "#882255", "#000000"};
@@ -910,7 +808,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
     summary += "  " + m["label"].get<std::string>() + ": closest on " + std::to_string(m["closest"].get<int>()) + " of " +
                std::to_string(m["sheets"].get<int>()) + " sheets, tied on " + std::to_string(m["tied"].get<int>()) +
                "; mean rank " + (m["meanRank"].is_null() ? std::string("—") : formatted("%.2f", m["meanRank"].get<double>())) +
-               "; mean rRMSE " + latexInterval(m["meanRrmse"]) + "\n";
+               "; mean rRMSE " + intervalCell(m["meanRrmse"]) + "\n";
   if (t.friedman) {
     summary += formatted("Friedman χ² = %.3f (df %d), p = %.3g", t.friedman->chiSquare, t.friedman->treatments - 1, t.friedman->pChiSquare);
     if (t.friedman->pF) summary += formatted("; Iman–Davenport F p = %.3g", *t.friedman->pF);
@@ -950,8 +848,8 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
     result.files.emplace_back(name);
   };
   const auto dump = [](const Json& j) { return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; };
-  write("rows.csv", rowsCsv(s));
-  write("rows.json", dump(rowsJson(s)));
+  write("rows.csv", rowsCsv(s.all));
+  write("rows.json", dump(rowsJson(s.all)));
   Json figures = Json::array();
   const auto rsvg = plot::findRsvgConvert();
   for (const auto& [name, svg] : svgs) {
