@@ -11,12 +11,14 @@
 #include "renderer/sheet/comparison_grid.h"
 #include "renderer/study/perceptual.h"
 #include "renderer/study/study_figures.h"
+#include "renderer/study/study_tables.h"
 #include "renderer/study/study_statistics.h"
 #include "renderer/util/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -56,7 +58,6 @@ Json intervalJson(const Interval& i) {
   return j;
 }
 
-std::string fmt(const Opt& v, const char* f = "%.4g") { return v ? formatted(f, *v) : std::string("—"); }
 std::string intervalText(const Interval& i, const char* f = "%.4g") {
   if (!i.estimate) return "undefined (" + i.reason + ")";
   std::string s = formatted(f, *i.estimate);
@@ -85,7 +86,10 @@ struct Study {
   std::map<SheetKey, std::map<std::string, const StudyRow*>> sheets;
   // Per material and model: the figure averaged over the material's sheets.
   std::vector<std::vector<Opt>> rrmse, flip, e1, e2;
-  std::vector<std::string> fitOf, sourceOf;  // per model: its fit and source (the first row's)
+  // Per model: its first row's fit and source (for its colour), and every fit and source its rows carry
+  // (a model's label covers the published fit on one database and glossy's on another).
+  std::vector<std::string> fitOf, sourceOf;
+  std::vector<std::set<std::string>> fitsOf, sourcesOf;
 };
 
 Opt meanOf(const std::vector<double>& v) {
@@ -107,6 +111,7 @@ Study readRows(std::span<const StudyRow> rows) {
            std::tie(b.material, b.lighting, b.scene, b.label, b.fit, b.fitSource);
   });
   std::set<std::string> models, materials;
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, const StudyRow*> seen;
   for (const StudyRow& r : s.all) {
     if (r.material.empty() || r.label.empty())
       throw InputError("study row without a material or model label (" + printableLine(r.sheet, 80) + ")");
@@ -120,9 +125,13 @@ Study readRows(std::span<const StudyRow> rows) {
     checkFinite(r, r.flipHi, "FLIP's upper bound");
     checkFinite(r, r.luminanceRatio, "the luminance ratio");
     auto& sheet = s.sheets[{r.material, r.lighting, r.scene}];
-    if (sheet.count(r.label))
+    // One row per model and sheet: a sheet showing two fits of one model (the published and glossy's)
+    // could not say which of them ranks where.
+    const auto [first, fresh] = seen.emplace(std::tuple(r.material, r.lighting, r.scene, r.label), &r);
+    if (!fresh)
       throw InputError("study: model " + printableLine(r.label, 40) + " appears twice on the sheet of " +
-                       printableLine(r.material, 80) + " / " + printableLine(r.lighting, 40) + " / " + printableLine(r.scene, 40));
+                       printableLine(r.material, 80) + " / " + printableLine(r.lighting, 40) + " / " + printableLine(r.scene, 40) +
+                       " (fits " + printableLine(first->second->fit, 40) + " and " + printableLine(r.fit, 40) + ")");
     if (!r.rrmse) {
       ++s.skipped;
       continue;
@@ -139,6 +148,8 @@ Study readRows(std::span<const StudyRow> rows) {
   s.materials.assign(materials.begin(), materials.end());
   s.fitOf.resize(s.models.size());
   s.sourceOf.resize(s.models.size());
+  s.fitsOf.resize(s.models.size());
+  s.sourcesOf.resize(s.models.size());
   const auto nm = s.materials.size(), nk = s.models.size();
   for (auto* t : {&s.rrmse, &s.flip, &s.e1, &s.e2}) t->assign(nm, std::vector<Opt>(nk));
   for (std::size_t i = 0; i < nm; ++i)
@@ -153,6 +164,8 @@ Study readRows(std::span<const StudyRow> rows) {
           s.fitOf[k] = row.fit;
           s.sourceOf[k] = row.fitSource;
         }
+        s.fitsOf[k].insert(row.fit);
+        s.sourcesOf[k].insert(row.fitSource);
         r.push_back(*row.rrmse);
         if (row.flip) f.push_back(*row.flip);
         if (row.e1) a.push_back(*row.e1);
@@ -416,8 +429,8 @@ Json perModel(const Study& s, const RankTests& t, const AnalysisOptions& o, std:
     meanIv.push_back(mean);
     Json j;
     j["label"] = s.models[k];
-    j["fit"] = s.fitOf[k];
-    j["fitSource"] = s.sourceOf[k];
+    j["fits"] = Json(std::vector<std::string>(s.fitsOf[k].begin(), s.fitsOf[k].end()));
+    j["fitSources"] = Json(std::vector<std::string>(s.sourcesOf[k].begin(), s.sourcesOf[k].end()));
     j["sheets"] = sheets;
     j["closest"] = closest;
     j["tied"] = tied;
@@ -469,7 +482,7 @@ Opt bestAgrees(const Study& s, Column brdf, Column image, std::size_t i) {
   return 0.0;
 }
 
-Json brdfVsImage(const Study& s, const AnalysisOptions& o, std::string& headline) {
+Json brdfVsImage(const Study& s, const AnalysisOptions& o, Json& differences, std::string& headline) {
   Json out = Json::array();
   struct Named {
     const char* name;
@@ -540,20 +553,32 @@ Json brdfVsImage(const Study& s, const AnalysisOptions& o, std::string& headline
       j["bestIsImageBest"] = jb;
       out.push_back(j);
     }
-  // The headline: which BRDF metric's ranking follows the image's rRMSE, pooled Spearman.
-  const Interval &r1 = pooledRho["E1/rrmse"], &r2 = pooledRho["E2/rrmse"];
-  headline = "BRDF error against image error (pooled Spearman ρ with rRMSE): E1 " + intervalText(r1, "%.3f") + ", E2 " +
-             intervalText(r2, "%.3f");
-  if (r1.lo && r2.lo && r1.hi && r2.hi) {
-    if (*r2.lo > *r1.hi) {
-      headline += " — E2 predicts image error better than E1 (intervals separate).";
-    } else if (*r1.lo > *r2.hi) {
-      headline += " — E1 predicts image error better than E2 (intervals separate).";
+  // Whether E2 ranks the fits more like the image than E1 does: the difference of the pooled ρ, both
+  // computed on the same resampled materials (a paired interval, not two intervals compared by eye).
+  for (const auto& img : images) {
+    const auto diff = bootstrap(
+        all.size(),
+        [&](const std::vector<std::size_t>& idx) -> Opt {
+          const Pair p1 = pooled(s, &Study::e1, img.column, idx), p2 = pooled(s, &Study::e2, img.column, idx);
+          const Opt a = spearman(p1.x, p1.y), b = spearman(p2.x, p2.y);
+          if (!a || !b) return std::nullopt;
+          return *b - *a;
+        },
+        o.resamples, seedFor(o.seed, std::string("e2-e1/") + img.name));
+    Json j;
+    j["image"] = img.name;
+    j["pooledSpearman"] = intervalJson(diff);
+    differences.push_back(j);
+    if (std::string(img.name) != "rrmse") continue;
+    headline = "BRDF error against image error (pooled Spearman ρ with rRMSE): E1 " + intervalText(pooledRho["E1/rrmse"], "%.3f") +
+               ", E2 " + intervalText(pooledRho["E2/rrmse"], "%.3f") + "; E2 − E1 " + intervalText(diff, "%.3f");
+    if (diff.lo && diff.hi && *diff.lo > 0.0) {
+      headline += " — E2 predicts image error better than E1.";
+    } else if (diff.lo && diff.hi && *diff.hi < 0.0) {
+      headline += " — E1 predicts image error better than E2.";
     } else {
-      headline += " — the intervals overlap: no difference between E1 and E2 shown.";
+      headline += " — no difference between E1 and E2 shown.";
     }
-  } else {
-    headline += ".";
   }
   return out;
 }
@@ -577,34 +602,47 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
       "Which ABC variant (Smooth Surface or Microfacet) the study used is not stated in the released data and could not "
       "be checked, so both published ABC fits are compared.";
   Json fits = Json::array();
-  const Column columns[] = {&Study::rrmse, &Study::flip, &Study::e1, &Study::e2};
   headline.clear();
   for (const PerceptualFit& pf : perceptualFits()) {
-    std::optional<std::size_t> model;
-    for (std::size_t k = 0; k < s.models.size(); ++k)
-      if (s.fitOf[k] == pf.fit && s.sourceOf[k] == pf.fitSource) model = k;
+    // The rows of exactly this fit (a model's label may cover glossy's fits on other materials), each
+    // figure averaged over the material's sheets.
+    std::string label;
+    std::vector<std::array<Opt, 4>> figure(s.materials.size());
+    for (std::size_t i = 0; i < s.materials.size(); ++i) {
+      std::array<std::vector<double>, 4> v;
+      for (const StudyRow* r : s.used) {
+        if (r->material != s.materials[i] || r->fit != pf.fit || r->fitSource != pf.fitSource) continue;
+        if (label.empty()) label = r->label;
+        const Opt values[] = {r->rrmse, r->flip, r->e1, r->e2};
+        for (std::size_t f = 0; f < 4; ++f)
+          if (values[f]) v[f].push_back(*values[f]);
+      }
+      for (std::size_t f = 0; f < 4; ++f) figure[i][f] = meanOf(v[f]);
+    }
     Json jf;
     jf["method"] = pf.method;
     jf["fit"] = pf.fit;
     jf["fitSource"] = pf.fitSource;
-    if (!model) {
+    if (label.empty()) {
       jf["model"] = nullptr;
       jf["reason"] = "the study has no " + pf.fitSource + " " + pf.fit + " fit";
       fits.push_back(jf);
       continue;
     }
-    jf["model"] = s.models[*model];
+    jf["model"] = label;
     // The materials with both a glossy figure and a perceived distance.
     std::vector<std::size_t> mats;
     std::vector<double> dist;
     for (std::size_t i = 0; i < s.materials.size(); ++i)
-      if (const auto d = data.distance(pf.method, s.materials[i]); d && s.rrmse[i][*model]) {
+      if (const auto d = data.distance(pf.method, s.materials[i]); d && figure[i][0]) {
         mats.push_back(i);
         dist.push_back(*d);
       }
     jf["materials"] = int(mats.size());
     PerceptualSeries ps;
-    ps.name = pf.method + " ↔ " + s.models[*model] + " (" + pf.fitSource + ")";
+    ps.name = label;
+    ps.note = pf.fitSource + " fit, as " + pf.method;
+    const std::string pairName = pf.method + " ↔ " + label + " (" + pf.fitSource + ")";
     ps.style.colour = fits.empty() ? "#e69f00" : "#56b4e9";
     ps.points.resize(std::size(kFigureNames));
     Json figs = Json::array();
@@ -614,9 +652,9 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
     for (std::size_t f = 0; f < std::size(kFigureNames); ++f) {
       std::vector<std::size_t> unit;
       for (std::size_t u = 0; u < mats.size(); ++u)
-        if ((s.*columns[f])[mats[u]][*model]) {
+        if (figure[mats[u]][f]) {
           unit.push_back(u);
-          ps.points[f].push_back({*(s.*columns[f])[mats[u]][*model], dist[u]});
+          ps.points[f].push_back({*figure[mats[u]][f], dist[u]});
         }
       Json jfig;
       jfig["figure"] = kFigureNames[f];
@@ -628,7 +666,7 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
             [&](const std::vector<std::size_t>& idx) {
               std::vector<double> x, y;
               for (std::size_t i : idx) {
-                x.push_back(*(s.*columns[f])[mats[unit[i]]][*model]);
+                x.push_back(*figure[mats[unit[i]]][f]);
                 y.push_back(dist[unit[i]]);
               }
               return corr(x, y);
@@ -646,7 +684,7 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
     jf["figures"] = figs;
     jf["agreesBest"] = best.empty() ? Json(nullptr) : Json(best);
     series.push_back(ps);
-    headline += (headline.empty() ? "" : "\n") + std::string("Against people (") + ps.name + ", " + std::to_string(mats.size()) +
+    headline += (headline.empty() ? "" : "\n") + std::string("Against people (") + pairName + ", " + std::to_string(mats.size()) +
                 " MERL materials): " +
                 (best.empty() ? std::string("no figure correlates (undefined)")
                               : "the figure that agrees best with the perceived distance is " + best + ", Spearman ρ " +
@@ -654,106 +692,6 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
     fits.push_back(jf);
   }
   out["fits"] = fits;
-  return out;
-}
-
-// ---- outputs ----------------------------------------------------------------------------------------------
-
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
-std::string csvNum(const Opt& v) { return v ? formatted("%.17g", *v) : ""; }
-
-std::string rowsCsv(const Study& s) {
-  std::string out =
-      "material,database,material_class,lighting,scene,layer,label,fit,fit_metric,fit_source,e1,e2,rrmse,rrmse_lo,rrmse_hi,"
-      "flip,flip_lo,flip_hi,luminance_ratio,closest,tied,warning,sheet,width,height,spp,seed\n";
-  for (const StudyRow& r : s.all) {
-    const std::vector<std::string> f = {r.material, r.database, r.materialClass, r.lighting, r.scene, r.layer, r.label,
-                                        r.fit, r.fitMetric, r.fitSource, csvNum(r.e1), csvNum(r.e2), csvNum(r.rrmse),
-                                        csvNum(r.rrmseLo), csvNum(r.rrmseHi), csvNum(r.flip), csvNum(r.flipLo),
-                                        csvNum(r.flipHi), csvNum(r.luminanceRatio), r.closest ? "1" : "0",
-                                        r.tied ? "1" : "0", r.warning, r.sheet, std::to_string(r.width),
-                                        std::to_string(r.height), std::to_string(r.spp), std::to_string(r.seed)};
-    for (std::size_t i = 0; i < f.size(); ++i) out += (i ? "," : "") + csvField(f[i]);
-    out += "\n";
-  }
-  return out;
-}
-
-Json rowsJson(const Study& s) {
-  Json out = Json::array();
-  for (const StudyRow& r : s.all) {
-    Json j;
-    j["material"] = r.material;
-    j["database"] = r.database;
-    j["materialClass"] = r.materialClass;
-    j["lighting"] = r.lighting;
-    j["scene"] = r.scene;
-    j["layer"] = r.layer;
-    j["label"] = r.label;
-    j["fit"] = r.fit;
-    j["fitMetric"] = r.fitMetric;
-    j["fitSource"] = r.fitSource;
-    j["e1"] = num(r.e1);
-    j["e2"] = num(r.e2);
-    j["rrmse"] = num(r.rrmse);
-    j["rrmseLo"] = num(r.rrmseLo);
-    j["rrmseHi"] = num(r.rrmseHi);
-    j["flip"] = num(r.flip);
-    j["flipLo"] = num(r.flipLo);
-    j["flipHi"] = num(r.flipHi);
-    j["luminanceRatio"] = num(r.luminanceRatio);
-    j["closest"] = r.closest;
-    j["tied"] = r.tied;
-    j["warning"] = r.warning;
-    j["sheet"] = r.sheet;
-    j["width"] = r.width;
-    j["height"] = r.height;
-    j["spp"] = r.spp;
-    j["seed"] = r.seed;
-    out.push_back(j);
-  }
-  return out;
-}
-
-std::string latexEscape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': case '%': case '$': case '#': case '_': case '{': case '}': out += std::string("\\") + c; break;
-      case '~': out += "\\textasciitilde{}"; break;
-      case '^': out += "\\textasciicircum{}"; break;
-      case '\\': out += "\\textbackslash{}"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-std::string latexInterval(const Json& j) {
-  if (j["estimate"].is_null()) return "--";
-  std::string s = formatted("%.4f", j["estimate"].get<double>());
-  if (!j["lo"].is_null()) s += formatted(" [%.4f, %.4f]", j["lo"].get<double>(), j["hi"].get<double>());
-  return s;
-}
-
-std::string modelsTex(const Json& models, int materials) {
-  std::string out =
-      "% glossy study: per-model results (needs \\usepackage{booktabs}). Intervals: 95 % percentile bootstrap over materials.\n"
-      "\\begin{tabular}{lrrrll}\n\\toprule\n"
-      "Model & Closest & Tied & Mean rank & Mean $r^*$ [95\\,\\% CI] & Median $r^*$ [95\\,\\% CI] \\\\\n\\midrule\n";
-  for (const Json& m : models) {
-    out += latexEscape(m["label"].get<std::string>()) + " & " + std::to_string(m["closest"].get<int>()) + " & " +
-           std::to_string(m["tied"].get<int>()) + " & " +
-           (m["meanRank"].is_null() ? std::string("--") : formatted("%.2f", m["meanRank"].get<double>())) + " & " +
-           latexInterval(m["meanRrmse"]) + " & " + latexInterval(m["medianRrmse"]) + " \\\\\n";
-  }
-  out += "\\bottomrule\n\\end{tabular}\n% " + std::to_string(materials) + " materials.\n";
   return out;
 }
 
@@ -768,10 +706,12 @@ std::vector<ModelStyle> modelStyles(const Study& s) {
     const std::string fit = s.fitOf[k].substr(0, s.fitOf[k].find(':', s.fitOf[k].find(':') + 1));
     for (const GridFit& g : gridFits())
       if (g.fit == fit) m.style.colour = std::string(g.colour);
-    if (m.style.colour == "#000000" || used.count(m.style.colour + (s.sourceOf[k] == "glossy" ? "d" : "")))
-      m.style.colour = kPalette[k % std::size(kPalette)];
-    if (s.sourceOf[k] == "glossy") m.style.dash = "6 3";
-    used.insert(m.style.colour + (s.sourceOf[k] == "glossy" ? "d" : ""));
+    // Dashed: glossy's own fits only, as the sheets draw them.
+    const bool glossyOnly = s.sourcesOf[k].size() == 1 && s.sourcesOf[k].count("glossy");
+    const std::string key = glossyOnly ? "d" : "";
+    if (m.style.colour == "#000000" || used.count(m.style.colour + key)) m.style.colour = kPalette[k % std::size(kPalette)];
+    if (glossyOnly) m.style.dash = "6 3";
+    used.insert(m.style.colour + key);
     out.push_back(m);
   }
   return out;
@@ -813,6 +753,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
     jf["df"] = t.friedman->treatments - 1;
     jf["p"] = t.friedman->pChiSquare;
     jf["imanDavenportF"] = num(t.friedman->imanDavenportF);
+    if (!t.friedman->imanDavenportF) jf["imanDavenportFReason"] = "infinite: every material ranks the models alike";
     jf["fDf"] = Json::array({t.friedman->treatments - 1, (t.friedman->treatments - 1) * (t.friedman->blocks - 1)});
     jf["pF"] = num(t.friedman->pF);
   } else {
@@ -852,7 +793,9 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   results["closerThan"] = pairwise;
 
   std::string claimHeadline, peopleHeadline;
-  results["brdfVsImage"] = brdfVsImage(s, options, claimHeadline);
+  Json differences = Json::array();
+  results["brdfVsImage"] = brdfVsImage(s, options, differences, claimHeadline);
+  results["e2MinusE1"] = differences;
   std::vector<PerceptualSeries> series;
   results["againstPeople"] = againstPeople(s, options, peopleHeadline, series);
 
@@ -865,7 +808,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
     summary += "  " + m["label"].get<std::string>() + ": closest on " + std::to_string(m["closest"].get<int>()) + " of " +
                std::to_string(m["sheets"].get<int>()) + " sheets, tied on " + std::to_string(m["tied"].get<int>()) +
                "; mean rank " + (m["meanRank"].is_null() ? std::string("—") : formatted("%.2f", m["meanRank"].get<double>())) +
-               "; mean rRMSE " + latexInterval(m["meanRrmse"]) + "\n";
+               "; mean rRMSE " + intervalCell(m["meanRrmse"]) + "\n";
   if (t.friedman) {
     summary += formatted("Friedman χ² = %.3f (df %d), p = %.3g", t.friedman->chiSquare, t.friedman->treatments - 1, t.friedman->pChiSquare);
     if (t.friedman->pF) summary += formatted("; Iman–Davenport F p = %.3g", *t.friedman->pF);
@@ -905,8 +848,8 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
     result.files.emplace_back(name);
   };
   const auto dump = [](const Json& j) { return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; };
-  write("rows.csv", rowsCsv(s));
-  write("rows.json", dump(rowsJson(s)));
+  write("rows.csv", rowsCsv(s.all));
+  write("rows.json", dump(rowsJson(s.all)));
   Json figures = Json::array();
   const auto rsvg = plot::findRsvgConvert();
   for (const auto& [name, svg] : svgs) {

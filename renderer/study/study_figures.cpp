@@ -229,7 +229,7 @@ std::string perceptualSvg(const std::vector<PerceptualSeries>& series, const std
         }
   }
   std::vector<LegendEntry> legend;
-  for (const auto& s : series) legend.push_back({s.name, s.style, true, ""});
+  for (const auto& s : series) legend.push_back({s.name, s.style, true, s.note});
   drawLegend(svg, g.legendX(), g.top, g.legendW, legend);
   drawCaption(svg, 24.0, g.captionY(), g.width() - 48.0, caption);
   return svg.str();

@@ -30,7 +30,8 @@ struct CdModel {
 };
 
 struct PerceptualSeries {
-  std::string name;  // e.g. "ABC ↔ Microfacet E2 (published)"
+  std::string name;  // the model's label, e.g. "Microfacet E2"
+  std::string note;  // under it in the legend, e.g. "published fit, as ABC"
   plot::CurveStyle style;
   // Per figure (rRMSE, ꟻLIP, E1, E2): (glossy's figure, perceived distance) over the materials.
   std::vector<std::vector<plot::Point>> points;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <tuple>
 
 namespace glossy::study {
 
@@ -64,28 +65,64 @@ std::optional<double> spearman(const std::vector<double>& x, const std::vector<d
   return pearson(averageRanks(x), averageRanks(y));
 }
 
+namespace {
+
+// Pairs i < j with v[i] > v[j], by merge sort: O(n log n).
+std::int64_t inversions(std::vector<double>& v, std::vector<double>& buffer, std::size_t lo, std::size_t hi) {
+  if (hi - lo < 2) return 0;
+  const std::size_t mid = lo + (hi - lo) / 2;
+  std::int64_t count = inversions(v, buffer, lo, mid) + inversions(v, buffer, mid, hi);
+  std::size_t i = lo, j = mid, k = lo;
+  while (i < mid && j < hi) {
+    if (v[j] < v[i]) {
+      count += std::int64_t(mid - i);
+      buffer[k++] = v[j++];
+    } else {
+      buffer[k++] = v[i++];
+    }
+  }
+  while (i < mid) buffer[k++] = v[i++];
+  while (j < hi) buffer[k++] = v[j++];
+  std::copy(buffer.begin() + std::ptrdiff_t(lo), buffer.begin() + std::ptrdiff_t(hi), v.begin() + std::ptrdiff_t(lo));
+  return count;
+}
+
+// Σ t(t − 1)/2 over runs of equal values in `sorted`.
+template <class Eq>
+std::int64_t tiedPairs(std::size_t n, Eq equal) {
+  std::int64_t sum = 0;
+  for (std::size_t i = 0; i < n;) {
+    std::size_t j = i + 1;
+    while (j < n && equal(i, j)) ++j;
+    const std::int64_t t = std::int64_t(j - i);
+    sum += t * (t - 1) / 2;
+    i = j;
+  }
+  return sum;
+}
+
+}  // namespace
+
 std::optional<double> kendallTauB(const std::vector<double>& x, const std::vector<double>& y) {
   const std::size_t n = x.size();
   if (n < 2 || y.size() != n) return std::nullopt;
-  // O(n²) pair count: studies compare at most a few thousand fits, and the count is exact.
-  double concordant = 0.0, discordant = 0.0, tiesX = 0.0, tiesY = 0.0;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) {
-      const double dx = x[i] - x[j], dy = y[i] - y[j];
-      if (dx == 0.0 && dy == 0.0) continue;
-      if (dx == 0.0) {
-        tiesX += 1.0;
-      } else if (dy == 0.0) {
-        tiesY += 1.0;
-      } else if ((dx > 0.0) == (dy > 0.0)) {
-        concordant += 1.0;
-      } else {
-        discordant += 1.0;
-      }
-    }
-  const double denom = std::sqrt((concordant + discordant + tiesX) * (concordant + discordant + tiesY));
+  // Knight's O(n log n) count (as scipy.stats.kendalltau): the bootstraps recompute it thousands of times.
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return std::tie(x[a], y[a]) < std::tie(x[b], y[b]); });
+  const std::int64_t total = std::int64_t(n) * std::int64_t(n - 1) / 2;
+  const std::int64_t tiesX = tiedPairs(n, [&](std::size_t i, std::size_t j) { return x[order[i]] == x[order[j]]; });
+  const std::int64_t tiesXY =
+      tiedPairs(n, [&](std::size_t i, std::size_t j) { return x[order[i]] == x[order[j]] && y[order[i]] == y[order[j]]; });
+  std::vector<double> ys(n), buffer(n);
+  for (std::size_t i = 0; i < n; ++i) ys[i] = y[order[i]];
+  // Within a run of equal x the y are ascending, so every inversion is a discordant pair.
+  const std::int64_t discordant = inversions(ys, buffer, 0, n);
+  const std::int64_t tiesY = tiedPairs(n, [&](std::size_t i, std::size_t j) { return ys[i] == ys[j]; });  // ys now sorted
+  const double concordantMinusDiscordant = double(total - tiesX - tiesY + tiesXY - 2 * discordant);
+  const double denom = std::sqrt(double(total - tiesX) * double(total - tiesY));
   if (!(denom > 0.0)) return std::nullopt;
-  return std::clamp((concordant - discordant) / denom, -1.0, 1.0);
+  return std::clamp(concordantMinusDiscordant / denom, -1.0, 1.0);
 }
 
 std::optional<double> kendallW(const std::vector<std::vector<double>>& scores) {
@@ -134,9 +171,11 @@ std::optional<FriedmanResult> friedman(const std::vector<std::vector<double>>& b
   out.chiSquare = std::max(0.0, (12.0 / (n * dk * (dk + 1.0)) * ss - 3.0 * n * (dk + 1.0)) / c);
   out.pChiSquare = chiSquareSf(out.chiSquare, dk - 1.0);
   const double fDenom = n * (dk - 1.0) - out.chiSquare;
-  if (fDenom > 0.0 && nb >= 2) {
+  if (fDenom > 0.0) {
     out.imanDavenportF = (n - 1.0) * out.chiSquare / fDenom;
     out.pF = fSf(*out.imanDavenportF, dk - 1.0, (dk - 1.0) * (n - 1.0));
+  } else {
+    out.pF = 0.0;  // every block ranks the treatments alike: F is infinite
   }
   for (double r : rankSums) out.meanRanks.push_back(r / n);
   return out;

@@ -31,7 +31,9 @@ std::optional<double> kendallW(const std::vector<std::vector<double>>& scores);
 struct FriedmanResult {
   int blocks = 0, treatments = 0;
   double chiSquare = 0, pChiSquare = 1;           // tie-corrected, as scipy.stats.friedmanchisquare
-  std::optional<double> imanDavenportF, pF;        // F = (N−1)χ² / (N(k−1) − χ²) on (k−1, (k−1)(N−1)) df
+  // F = (N−1)χ² / (N(k−1) − χ²) on (k−1, (k−1)(N−1)) df; absent (infinite, pF = 0) when every block ranks
+  // the treatments alike.
+  std::optional<double> imanDavenportF, pF;
   std::vector<double> meanRanks;                   // per treatment, 1 = lowest value
 };
 // Friedman's test over blocks (rows, e.g. materials) × treatments (columns, models), lower value = rank 1.
