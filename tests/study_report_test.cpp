@@ -110,3 +110,17 @@ TEST(StudyReport, AnUnfinishedStudyIsRefused) {
   expectOneLineError(r, "sheets/preview/sky/chrome.exr");
   EXPECT_FALSE(fs::exists(tmp / "site/index.html"));
 }
+
+// With a perceptual folder in the plan, each row carries its material's class from the dataset.
+TEST(StudyRows, TheClassComesFromThePerceptualData) {
+  GLOSSY_REQUIRE_SHARED("perceptual");
+  TempDir tmp;
+  fs::copy(studyDir(), tmp / "out", fs::copy_options::recursive);
+  std::string plan = readText(tmp / "out/study.json");
+  const std::string none = "\"perceptual\": \"\"";
+  ASSERT_NE(plan.find(none), std::string::npos) << plan;
+  plan.replace(plan.find(none), none.size(), "\"perceptual\": \"" + (sharedDir() / "perceptual").string() + "\"");
+  writeText(tmp / "out/study.json", plan);
+  for (const study::StudyRow& row : study::readStudyRows(tmp / "out")) EXPECT_EQ(row.materialClass, "Metal") << row.material;
+  for (const study::StudyRow& row : study::readStudyRows(studyDir())) EXPECT_EQ(row.materialClass, "") << "no perceptual folder, no class";
+}
