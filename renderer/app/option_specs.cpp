@@ -31,7 +31,7 @@ const OptionSpec kTime{"time", "sheet, sheets", false, 0, 1e6, true, kSheet.seco
 const OptionSpec kTargetError{"target-error", "sheet, sheets", false, 0, 10, true, kSheet.targetError, "Render in passes until every model's relative-RMSE 95 % interval has at most this half-width, or until --spp (default " + kCap + ") or --time caps it, saying so; a line per pass on stderr", "glossy:targetError", "targetError"};
 const OptionSpec kExposure{"exposure", "sheet, sheets", false, -64, 64, false, std::make_unique<const SheetJob>()->exposure, "Exposure of the PNG preview in stops (the EXR stays linear)", "glossy:pngExposure", "exposure"};
 const OptionSpec kSeed{"seed", "render, sheet, sheets", true, 0, 4294967295.0, false, double(kRender.seed), "Random seed (a sheet's panels share it)", "glossy:seed", "seed"};
-const OptionSpec kThreads{"threads", "render, sheet, sheets, fit", true, 0, kMaxThreads, false, double(kRender.threads), "Threads (0 = all cores)", "", ""};
+const OptionSpec kThreads{"threads", "render, sheet, sheets, study, fit", true, 0, kMaxThreads, false, double(kRender.threads), "Threads (0 = all cores)", "", ""};
 const OptionSpec kMaxDepth{"max-depth", "render, sheet, sheets", true, 1, 1000, false, double(kRender.maxDepth), "Path segments at most (1 = emitters only, 3 = one indirect bounce)", "glossy:maxDepth", "maxDepth"};
 const OptionSpec kLightSamples{"light-samples", "render, sheet, sheets", true, 1, kMaxLightSamples, false, double(kRender.lightSamples), "Light samples at a path's first vertex (more: less noise from the lights at less than a path's cost)", "glossy:lightSamples", "lightSamples"};
 // The environment's rotation reaches a sheet's settings line through its description (env=).

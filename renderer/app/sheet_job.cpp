@@ -1,6 +1,7 @@
 #include "renderer/app/sheet_job.h"
 
 #include "renderer/util/notes.h"
+#include "renderer/util/output_lock.h"
 #include "materials/core/text.h"
 #include "materials/models/registry.h"
 #include "renderer/app/brdf_options.h"
@@ -8,8 +9,11 @@
 #include "renderer/app/sheet_resume.h"
 #include "renderer/scene/material_binding.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iostream>
+#include <optional>
 
 namespace glossy::app {
 
@@ -122,6 +126,51 @@ void writeSheetFiles(const MadeSheet& made, const Stage& stage, const SheetJob& 
   writeSheetPng(made.sheet, png, job.exposure, std::filesystem::exists(kFont) ? kFont : "");
   writeSheetExr(made.sheet, exr, sheetMetadata(made.material, stage, job, made.sheet, made.seconds, made.explicitMeasured),
                 job.half ? PixelType::Half : PixelType::Float);
+}
+
+void makeSheetFiles(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
+                    const std::filesystem::path& exr, const std::string& explicitMeasured) {
+  const MadeSheet made = makeMaterialSheet(stage, materialPath, job, explicitMeasured);
+  writeSheetFiles(made, stage, job, exr);
+  std::cout << errorTable(made.sheet) << std::flush;
+  flushNotes();  // what the render and the writing noted (a target missed, values clipped), by its sheet
+  std::cerr << "glossy: wrote " << exr.string() << " and " << std::filesystem::path(exr).replace_extension(".png").string()
+            << " (" << made.seconds << " s)\n";
+}
+
+BatchSheet renderBatchSheet(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
+                            const std::filesystem::path& exr, const std::string& tag) {
+  std::optional<OutputLock> lock;
+  try {
+    lock.emplace(exr, "-o");
+  } catch (const OutputBusy& e) {
+    std::cerr << "glossy: " << tag << ": " << e.what() << ", skipped\n";
+    return BatchSheet::Busy;
+  }
+  if (const size_t stale = removeStaleTemporaries(exr))
+    std::cerr << "glossy: " << tag << ": removed " << stale << " temporary files an interrupted run left\n";
+  const std::string why = whyIncomplete(exr, sheetSettings(loadMaterialFile(materialPath), stage, job, ""), job.settings);
+  if (why.empty()) {
+    std::cerr << "glossy: " << tag << ": complete, skipped\n";
+    return BatchSheet::Complete;
+  }
+  if (std::error_code ec; std::filesystem::exists(exr, ec)) std::cerr << "glossy: " << tag << ": " << why << ", rendering it again\n";
+  makeSheetFiles(stage, materialPath, job, exr, "");
+  return BatchSheet::Rendered;
+}
+
+// A measured panel, with its table's loading, its sampler and the error figures it brings, costs about
+// kMeasuredPanelCost analytic panels (alum-bronze's default sheet: 25.3 CPU seconds with it, 17.8 without;
+// docs/cluster.md).
+constexpr double kMeasuredPanelCost = 2.5;
+
+double sheetCost(const MaterialFile& m, const SheetJob& job) {
+  double cost = 0.0;
+  for (const SheetPanel& p : job.settings.panels)
+    if (p.fit.empty() ? resolveMeasured(m.measured, job.merlDir, m.path.parent_path()).has_value()
+                      : m.find(FitId::parse(p.fit, m.path.string())) != nullptr)
+      cost += p.fit.empty() ? kMeasuredPanelCost : 1.0;
+  return std::max(cost, 1.0);  // an empty sheet still costs its scene and files
 }
 
 }  // namespace glossy::app

@@ -61,4 +61,21 @@ void writeSheetFiles(const MadeSheet& made, const Stage& stage, const SheetJob& 
 // Everything a sheet's pixels depend on, as one line: glossy sheets keeps a sheet only if this matches.
 std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetJob& job, const std::string& explicitMeasured);
 
+// Renders and writes one sheet (EXR, then PNG beside it); prints its error table on stdout and what it wrote
+// on stderr.
+void makeSheetFiles(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
+                    const std::filesystem::path& exr, const std::string& explicitMeasured);
+
+// What became of one sheet of a batch (glossy sheets, glossy study).
+enum class BatchSheet { Rendered, Complete, Busy };
+
+// One sheet of a resumable batch: left to another run that holds it (its OutputLock: Busy), kept when it is
+// complete with these settings (whyIncomplete: Complete), else rendered and written (Rendered), clearing
+// the temporaries an interrupted write of it left. `tag` starts its lines on stderr ("[3/40] gold-paint").
+BatchSheet renderBatchSheet(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
+                            const std::filesystem::path& exr, const std::string& tag);
+
+// What a sheet costs, in analytic panels, for splitting a batch into shards (shard.h).
+double sheetCost(const MaterialFile& m, const SheetJob& job);
+
 }  // namespace glossy::app

@@ -38,6 +38,7 @@ Command addReportCommand(CLI::App& parent);
 Command addSampleCommand(CLI::App& parent);
 Command addSheetCommand(CLI::App& parent);
 Command addSheetsCommand(CLI::App& parent);
+Command addStudyCommand(CLI::App& parent);
 
 // An option of the table (renderer/app/option_specs.h) bound to `field`: its range, help and default.
 // CLI::PositiveNumber lets "inf" through, and an infinite budget never ends; CLI11's own ranges print a

@@ -18,7 +18,8 @@ int main(int argc, char** argv) {
   std::vector<cli::Command> commands = {cli::addErrorCommand(app),  cli::addEvalCommand(app),   cli::addFitCommand(app),
                                         cli::addImportCommand(app), cli::addListCommand(app),   cli::addMergeCommand(app),
                                         cli::addPlotCommand(app),   cli::addRenderCommand(app), cli::addReportCommand(app),
-                                        cli::addSampleCommand(app), cli::addSheetCommand(app),  cli::addSheetsCommand(app)};
+                                        cli::addSampleCommand(app), cli::addSheetCommand(app),  cli::addSheetsCommand(app),
+                                        cli::addStudyCommand(app)};
 
   try {
     app.parse(argc, argv);

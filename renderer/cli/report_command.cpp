@@ -42,7 +42,8 @@ Command addReportCommand(CLI::App& parent) {
       "Make a static HTML site of a folder of sheets (from glossy sheets) and optionally their plots (from glossy plot): "
       "an index of every material and model's error figures, sortable and filterable, and a page per material with its "
       "sheet, a compare view, the figures, the fit parameters and the plots. Self-contained: it works from file:// offline.");
-  app->add_option("SHEETS_DIR", o->sheetsDir, "Folder of sheets: NAME.exr and NAME.png from glossy sheets, all made with the same settings")
+  app->add_option("SHEETS_DIR", o->sheetsDir, "Folder of sheets: NAME.exr and NAME.png from glossy sheets, all made with the same settings; or the output "
+                                        "folder of glossy study, for the study's site")
       ->required();
   app->add_option("PLOTS_DIR", o->plotsDir, "Folder of plots: PLOTS_DIR/NAME/plots.json from glossy plot (optional)");
   app->add_option("-o,--output", o->site,

@@ -36,17 +36,6 @@ struct SheetOptions : SheetJob {
   std::string outDir = "out/sheets", shard;
 };
 
-// Renders and writes one sheet (EXR, then PNG beside it); prints its error table.
-void makeSheet(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
-               const std::filesystem::path& exr, const std::string& explicitMeasured) {
-  const MadeSheet made = makeMaterialSheet(stage, materialPath, job, explicitMeasured);
-  writeSheetFiles(made, stage, job, exr);
-  std::cout << errorTable(made.sheet) << std::flush;
-  flushNotes();  // what the render and the writing noted (a target missed, values clipped), by its sheet
-  std::cerr << "glossy: wrote " << exr.string() << " and " << std::filesystem::path(exr).replace_extension(".png").string()
-            << " (" << made.seconds << " s)\n";
-}
-
 void addRenderOptions(CLI::App* app, SheetOptions& o) {
   app->add_option("--merl-dir", o.merlDir, "Folder with MERL tables (else $GLOSSY_MERL_DIR)");
   addSceneOptions(app, o.scene);
@@ -84,22 +73,8 @@ int runSheet(const SheetOptions& options) {
   const Stage stage(o.scene, double(o.settings.width) / double(o.settings.height));
   SheetOptions single = o;
   single.settings.progress = isatty(STDERR_FILENO);
-  makeSheet(stage, o.material, single, o.output, o.measured);
+  makeSheetFiles(stage, o.material, single, o.output, o.measured);
   return 0;
-}
-
-// What a sheet costs, in analytic panels: its fits on the grid, and a measured panel, which with its table's
-// loading, its sampler and the error figures it brings costs about kMeasuredPanelCost of them (alum-bronze's
-// default sheet: 25.3 CPU seconds with it, 17.8 without; docs/cluster.md).
-constexpr double kMeasuredPanelCost = 2.5;
-
-double sheetCost(const MaterialFile& m, const SheetJob& job) {
-  double cost = 0.0;
-  for (const SheetPanel& p : job.settings.panels)
-    if (p.fit.empty() ? resolveMeasured(m.measured, job.merlDir, m.path.parent_path()).has_value()
-                      : m.find(FitId::parse(p.fit, m.path.string())) != nullptr)
-      cost += p.fit.empty() ? kMeasuredPanelCost : 1.0;
-  return std::max(cost, 1.0);  // an empty sheet still costs its scene and files
 }
 
 int runSheets(const SheetOptions& options) {
@@ -156,26 +131,10 @@ int runSheets(const SheetOptions& options) {
   for (size_t k = 0; k < files.size(); ++k) {
     const std::string& name = names[k];
     const std::filesystem::path exr = outDir / (name + ".exr");
-    std::optional<OutputLock> lock;
-    try {
-      lock.emplace(exr, "-o");
-    } catch (const OutputBusy& e) {
-      ++busy;
-      std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": " << e.what() << ", skipped\n";
-      continue;
-    }
-    if (const size_t stale = removeStaleTemporaries(exr))
-      std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": removed " << stale
-                << " temporary files an interrupted run left\n";
-    const std::string why = whyIncomplete(exr, sheetSettings(loadMaterialFile(files[k]), stage, batch, ""), batch.settings);
-    if (why.empty()) {
-      ++skipped;
-      std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": complete, skipped\n";
-      continue;
-    }
-    if (std::error_code ec; std::filesystem::exists(exr, ec))
-      std::cerr << "glossy: [" << k + 1 << "/" << files.size() << "] " << name << ": " << why << ", rendering it again\n";
-    makeSheet(stage, files[k], batch, exr, "");
+    const BatchSheet outcome = renderBatchSheet(stage, files[k], batch, exr, formatted("[%zu/%zu] %s", k + 1, files.size(), name.c_str()));
+    if (outcome == BatchSheet::Busy) ++busy;
+    if (outcome == BatchSheet::Complete) ++skipped;
+    if (outcome != BatchSheet::Rendered) continue;
     ++done;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double eta = elapsed / double(done) * double(files.size() - k - 1);

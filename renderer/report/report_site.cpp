@@ -15,6 +15,10 @@
 #include "renderer/report/sheet_record.h"
 #include "renderer/report/site_assets.h"
 #include "renderer/report/site_layout.h"
+#include "renderer/report/study_page.h"
+#include "renderer/study/study_plan.h"
+#include "renderer/study/study_rows.h"
+#include "materials/params/material_name.h"
 
 #include <algorithm>
 #include <map>
@@ -60,49 +64,61 @@ PlotIndex sitePlots(PlotIndex index, const ReportOptions& o) {
   return index;
 }
 
-}  // namespace
+void writeSiteAssets(const fs::path& root) {
+  fs::create_directories(root / "assets");
+  writeFileAtomically(root / layout::kStyle, siteStyleSheet());
+  writeFileAtomically(root / layout::kScript, siteScript());
+}
 
-ReportResult writeReport(const ReportOptions& options) {
-  // Everything is checked before anything is written: the destination first, then every input.
-  OwnedFolder site(options.site, layout::kGenerator, "-o");
-  checkPlotKinds(options.plotKinds);
-  const std::vector<SheetRecord> sheets = readSheetFolder(options.sheetsDir);
-  checkSameSettings(sheets);
-  for (const SheetRecord& s : sheets) readSheetPixels(s);  // a PNG whose header reads but whose pixels do not
+// One folder of sheets as a site of its own (site_layout.h), under `prefix` of the whole site ("" or
+// "sheets/SCENE/LIGHTING/").
+struct SheetSite {
+  std::vector<SheetRecord> sheets;
   std::map<std::string, PlotIndex> plots;
+};
+
+SheetSite readSheetSite(const fs::path& sheetsDir, const ReportOptions& options) {
+  SheetSite s;
+  s.sheets = readSheetFolder(sheetsDir);
+  checkSameSettings(s.sheets);
+  for (const SheetRecord& sheet : s.sheets) readSheetPixels(sheet);  // a PNG whose header reads but whose pixels do not
   if (options.plotsDir) {
     std::error_code ec;
     if (!fs::is_directory(*options.plotsDir, ec)) throw InputError(options.plotsDir->string() + ": no such folder (PLOTS_DIR)");
-    for (const SheetRecord& s : sheets)
-      if (fs::exists(fs::symlink_status(*options.plotsDir / s.name / "plots.json", ec)))
-        plots.emplace(s.name, sitePlots(readPlotIndex(*options.plotsDir, *options.plotsDir / s.name), options));
+    for (const SheetRecord& sheet : s.sheets)
+      if (fs::exists(fs::symlink_status(*options.plotsDir / sheet.name / "plots.json", ec)))
+        s.plots.emplace(sheet.name, sitePlots(readPlotIndex(*options.plotsDir, *options.plotsDir / sheet.name), options));
   }
+  return s;
+}
 
-  // The files the site will hold, so the folder's manifest can list them before the first is written.
-  std::vector<std::string> files = {layout::kIndex, layout::kStyle, layout::kScript};
-  for (const SheetRecord& s : sheets) {
-    const std::string folder = layout::materialFolder(s.name) + "/";
-    files.push_back(layout::materialPage(s.name));
-    for (const PanelRecord& p : s.panels) files.push_back(folder + layout::panelImage(p.layer));
-    if (s.panelsBottom < s.pngHeight) files.push_back(folder + layout::sheetLowerImage());
-    if (const auto it = plots.find(s.name); it != plots.end())
+// The files the site of `s` will hold, so the folder's manifest can list them before the first is written.
+void addSheetSiteFiles(const SheetSite& s, const std::string& prefix, std::vector<std::string>& files) {
+  for (const char* f : {layout::kIndex, layout::kStyle, layout::kScript}) files.push_back(prefix + f);
+  for (const SheetRecord& sheet : s.sheets) {
+    const std::string folder = prefix + layout::materialFolder(sheet.name) + "/";
+    files.push_back(prefix + layout::materialPage(sheet.name));
+    for (const PanelRecord& p : sheet.panels) files.push_back(folder + layout::panelImage(p.layer));
+    if (sheet.panelsBottom < sheet.pngHeight) files.push_back(folder + layout::sheetLowerImage());
+    if (const auto it = s.plots.find(sheet.name); it != s.plots.end())
       for (const PlotFigure& f : it->second.figures)
         for (const std::string* file : {&f.shown, &f.svg, &f.csv})
           if (!file->empty()) files.push_back(folder + layout::plotFile(*file));
   }
-  site.plan(files);
+}
 
-  ReportResult result;
-  result.materials = sheets.size();
+void writeSheetSite(const SheetSite& s, const fs::path& root, const ReportOptions& options, ReportResult& result) {
+  const std::vector<SheetRecord>& sheets = s.sheets;
+  result.materials += sheets.size();
   std::set<fs::path> written;
   for (size_t k = 0; k < sheets.size(); ++k) {
-    const SheetRecord& s = sheets[k];
-    const fs::path folder = site.path(layout::materialFolder(s.name));
+    const SheetRecord& sheet = sheets[k];
+    const fs::path folder = root / layout::materialFolder(sheet.name);
     fs::create_directories(folder);
-    writeSheetImages(s, readSheetPixels(s), folder);
-    result.images += s.panels.size() + 1;
-    const auto it = plots.find(s.name);
-    if (it != plots.end() && !it->second.figures.empty()) {
+    writeSheetImages(sheet, readSheetPixels(sheet), folder);
+    result.images += sheet.panels.size() + 1;
+    const auto it = s.plots.find(sheet.name);
+    if (it != s.plots.end() && !it->second.figures.empty()) {
       fs::create_directories(folder / "plots");
       for (const PlotFigure& f : it->second.figures) {
         if (!f.png.empty() && written.insert(folder / layout::plotFile(f.shown)).second) {
@@ -117,13 +133,88 @@ ReportResult writeReport(const ReportOptions& options) {
           }
       }
     }
-    writeFileAtomically(folder / "index.html", materialPage(s, it == plots.end() ? nullptr : &it->second, k ? &sheets[k - 1] : nullptr,
+    writeFileAtomically(folder / "index.html", materialPage(sheet, it == s.plots.end() ? nullptr : &it->second, k ? &sheets[k - 1] : nullptr,
                                                             k + 1 < sheets.size() ? &sheets[k + 1] : nullptr));
   }
-  fs::create_directories(site.path("assets"));
-  writeFileAtomically(site.path(layout::kStyle), siteStyleSheet());
-  writeFileAtomically(site.path(layout::kScript), siteScript());
-  writeFileAtomically(site.path(layout::kIndex), indexPage(sheets));  // last: the index links only to pages already there
+  writeSiteAssets(root);
+  writeFileAtomically(root / layout::kIndex, indexPage(sheets));  // last: the index links only to pages already there
+}
+
+// A study's analysis files (OUT/analysis, recursively), relative to it; each part of each path a plain name,
+// as they become the site's paths.
+StudyFiles studyFiles(const fs::path& analysis) {
+  StudyFiles out;
+  std::error_code ec;
+  if (!fs::is_directory(analysis, ec)) return out;
+  std::vector<std::string> all;
+  for (const auto& e : fs::recursive_directory_iterator(analysis)) {
+    if (e.is_directory(ec)) continue;
+    const fs::path relative = fs::relative(e.path(), analysis);
+    for (const fs::path& part : relative)
+      if (!isMaterialName(part.string()))
+        throw InputError(e.path().string() + ": not a plain file name; the report copies only the analysis's own files");
+    all.push_back(relative.generic_string());
+  }
+  std::sort(all.begin(), all.end());
+  const std::set<std::string> names(all.begin(), all.end());
+  for (const std::string& f : all) {
+    const fs::path p = f;
+    const std::string ext = p.extension().string();
+    if (ext == ".svg" || (ext == ".png" && !names.count(fs::path(p).replace_extension(".svg").generic_string())))
+      out.figures.push_back(f);
+    else
+      out.others.push_back(f);
+    if (p.stem() == "summary" && (ext == ".txt" || ext == ".md"))
+      out.summary = readInputFile(analysis, analysis / p, kMaxPlotFileBytes, "summary");
+  }
+  return out;
+}
+
+ReportResult writeStudyReport(OwnedFolder& site, const ReportOptions& options) {
+  const fs::path out = options.sheetsDir;
+  const study::StudyPlan plan = study::readPlan(out);
+  const std::vector<study::StudyRow> rows = study::readStudyRows(out);
+  std::vector<std::pair<std::string, SheetSite>> sheetSites;
+  for (const std::string& scene : plan.scenes)
+    for (const std::string& lighting : plan.lightings)
+      sheetSites.emplace_back(study_layout::sheetsSite(scene, lighting),
+                              readSheetSite(out / study::kSheetsFolder / scene / lighting, options));
+  const fs::path analysis = out / study::kAnalysisFolder;
+  const StudyFiles files = studyFiles(analysis);
+
+  std::vector<std::string> planned = {layout::kIndex, layout::kStyle, layout::kScript};
+  for (const auto& [prefix, s] : sheetSites) addSheetSiteFiles(s, prefix, planned);
+  for (const std::vector<std::string>* list : {&files.figures, &files.others})
+    for (const std::string& f : *list) planned.push_back(study_layout::analysisFile(f));
+  site.plan(planned);
+
+  ReportResult result;
+  for (const auto& [prefix, s] : sheetSites) writeSheetSite(s, site.path(prefix), options, result);
+  for (const std::vector<std::string>* list : {&files.figures, &files.others})
+    for (const std::string& f : *list) {
+      const fs::path to = site.path(study_layout::analysisFile(f));
+      fs::create_directories(to.parent_path());
+      writeFileAtomically(to, readInputFile(analysis, analysis / f, kMaxPlotFileBytes, "analysis file"));
+    }
+  writeSiteAssets(site.root());
+  writeFileAtomically(site.path(layout::kIndex), studyPage(plan, rows, files));  // last, as the sheets' own indexes
+  site.finish();
+  return result;
+}
+
+}  // namespace
+
+ReportResult writeReport(const ReportOptions& options) {
+  // Everything is checked before anything is written: the destination first, then every input.
+  OwnedFolder site(options.site, layout::kGenerator, "-o");
+  checkPlotKinds(options.plotKinds);
+  if (study::isStudyFolder(options.sheetsDir)) return writeStudyReport(site, options);
+  const SheetSite sheets = readSheetSite(options.sheetsDir, options);
+  std::vector<std::string> files;
+  addSheetSiteFiles(sheets, "", files);
+  site.plan(files);
+  ReportResult result;
+  writeSheetSite(sheets, site.root(), options, result);
   site.finish();
   return result;
 }

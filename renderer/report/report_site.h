@@ -3,6 +3,10 @@
 // read and checked before anything is written. The site's folder is glossy's own (its manifest,
 // renderer/output/owned_folder.h): a run writes into a missing or empty folder or an earlier report,
 // replaces only the files the earlier report wrote, and writes the index last.
+//
+// Given the output folder of `glossy study` (study::isStudyFolder) instead of a folder of sheets, the site is
+// the study's (study_page.h): its page at the top, and a site as above of each scene and lighting's sheets
+// under sheets/SCENE/LIGHTING/.
 #pragma once
 
 #include <filesystem>

@@ -6,7 +6,9 @@
 #      tables equal those of a single-machine `glossy sheets` of the same materials and settings;
 #   2. fits: the same for a 4-task `glossy fit --measured-dir` array and the merge into parameter files;
 #   3. resume: one task of an array cancelled mid-run (scancel), then the array resubmitted: the cancelled
-#      task's sheet is made, the finished ones are skipped, not rendered again.
+#      task's sheet is made, the finished ones are skipped, not rendered again;
+#   4. study: a tiny `glossy study` (2 materials × 2 lightings) as a 3-task array plus its merge job, which
+#      analyses; the analysis equals, byte for byte, that of the same study run whole on one machine.
 # Stops its daemons and removes its folder however it ends. Needs root (Slurm's daemons run as root here);
 # exits 77 (skip), saying why, without root or without the packages (scripts/setup-cluster installs them).
 # Usage: slurm_test.sh --exe GLOSSY --source-dir DIR --shared-dir DIR --work DIR
@@ -193,4 +195,36 @@ for k in 0 1 3; do
 done
 [ "$(wc -l <"$work/resume/errors.csv")" -eq $((1 + 4 * 7)) ] || failed "the resumed errors.csv has not 4 sheets × 7 panels"
 echo "Cluster.Slurm: resume: task 2 cancelled mid-run, resubmitted: 1 sheet made, 3 skipped, in $((SECONDS - t0)) s"
+# 4. A study: the array renders its sheets, the merge job analyses them.
+t0=$SECONDS
+cat >"$work/tiny-study.toml" <<TOML
+materials = ["merl/gold-paint", "merl/chrome"]
+[lightings]
+sky = { sky = true }
+grey = { constant = 0.8 }
+[settings]
+width = 16
+height = 16
+spp = 16
+seed = 7
+panels = "measured,microfacet:E2,smooth:E2,cook-torrance:E2"
+[analysis]
+resamples = 200
+TOML
+study_options=(--merl-dir "$shared_dir/merl")
+jobs=$("$source_dir/scripts/cluster/submit" study 3 "$work/tiny-study.toml" "$work/study" "${study_options[@]}")
+array=$(echo "$jobs" | awk '$1 == "array" {print $2}') merge=$(echo "$jobs" | awk '$1 == "merge" {print $2}')
+wait_jobs "$array,$merge" 300
+[ "$(state "$merge")" = COMPLETED ] || failed "the study's merge job is $(state "$merge")"
+for k in 0 1 2; do
+  grep -q "shard $k/3 from Slurm array task $k (array 0-2, 3 tasks)" glossy-study-"${array}_$k".log ||
+    failed "study task $k did not take its shard from Slurm: $(cat glossy-study-"${array}_$k".log)"
+done
+[ -n "$(ls -A "$work/study/analysis" 2>/dev/null)" ] || failed "the merge job wrote no analysis"
+"$exe" study "$work/tiny-study.toml" -o "$work/single-study" --threads 1 "${study_options[@]}" >/dev/null 2>"$work/run/single-study.log" ||
+  failed "the single-machine study failed: $(tail -n 3 "$work/run/single-study.log")"
+diff -r "$work/study/analysis" "$work/single-study/analysis" >/dev/null || failed "the array's study analysis differs from one machine's:
+$(diff -r "$work/study/analysis" "$work/single-study/analysis" | head)"
+cmp -s "$work/study/study.json" "$work/single-study/study.json" || failed "study.json differs from one machine's"
+echo "Cluster.Slurm: study: 3 tasks and the analysing merge in $((SECONDS - t0)) s"
 echo "Cluster.Slurm: passed"

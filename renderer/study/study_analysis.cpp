@@ -1,0 +1,877 @@
+// The study's statistics (docs/study.md, "The statistics"). The unit of the study is the material: every
+// figure of a model on a material is first averaged over the material's sheets (its lightings and scenes),
+// and tests, intervals and correlations treat materials as the independent draws — a material's
+// lightings are not independent evidence about the models, so bootstraps resample materials and keep
+// their sheets together.
+#include "renderer/study/study_analysis.h"
+
+#include "materials/core/input_error.h"
+#include "materials/core/text.h"
+#include "renderer/plot/svg_to_png.h"
+#include "renderer/sheet/comparison_grid.h"
+#include "renderer/study/perceptual.h"
+#include "renderer/study/study_figures.h"
+#include "renderer/study/study_tables.h"
+#include "renderer/study/study_statistics.h"
+#include "renderer/util/atomic_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+#include <tuple>
+
+namespace glossy::study {
+
+namespace {
+
+using Json = nlohmann::ordered_json;
+using Opt = std::optional<double>;
+
+constexpr double kAlpha = 0.05;
+
+// A bootstrap's own seed: the study's seed mixed with the statistic's name, so that adding a statistic
+// leaves the others' intervals unchanged.
+std::uint64_t seedFor(std::uint64_t seed, const std::string& key) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : key) h = (h ^ c) * 1099511628211ull;
+  std::uint64_t z = seed + h + 0x9e3779b97f4a7c15ull;  // splitmix64's finaliser
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+Json num(const Opt& v) { return v ? Json(*v) : Json(nullptr); }
+
+Json intervalJson(const Interval& i) {
+  Json j;
+  j["estimate"] = num(i.estimate);
+  j["lo"] = num(i.lo);
+  j["hi"] = num(i.hi);
+  j["resamples"] = i.resamples;
+  j["undefinedResamples"] = i.undefined;
+  if (!i.reason.empty()) j["reason"] = i.reason;
+  return j;
+}
+
+std::string intervalText(const Interval& i, const char* f = "%.4g") {
+  if (!i.estimate) return "undefined (" + i.reason + ")";
+  std::string s = formatted(f, *i.estimate);
+  if (i.lo && i.hi) s += " [" + formatted(f, *i.lo) + ", " + formatted(f, *i.hi) + "]";
+  return s;
+}
+
+void checkFinite(const StudyRow& r, const Opt& v, const char* what) {
+  if (v && !std::isfinite(*v))
+    throw InputError("study row " + printableLine(r.material, 80) + " / " + printableLine(r.lighting, 40) + " / " +
+                     printableLine(r.label, 40) + ": " + what + " is not a finite number");
+}
+
+struct SheetKey {
+  std::string material, lighting, scene;
+  auto operator<=>(const SheetKey&) const = default;
+};
+
+struct Study {
+  std::vector<StudyRow> all;   // every row, canonical order
+  std::vector<const StudyRow*> used;
+  int skipped = 0;
+  std::vector<std::string> models;     // labels, sorted
+  std::vector<std::string> materials;  // sorted
+  std::map<std::string, std::string> database, materialClass;
+  std::map<SheetKey, std::map<std::string, const StudyRow*>> sheets;
+  // Per material and model: the figure averaged over the material's sheets.
+  std::vector<std::vector<Opt>> rrmse, flip, e1, e2;
+  // Per model: its first row's fit and source (for its colour), and every fit and source its rows carry
+  // (a model's label covers the published fit on one database and glossy's on another).
+  std::vector<std::string> fitOf, sourceOf;
+  std::vector<std::set<std::string>> fitsOf, sourcesOf;
+};
+
+Opt meanOf(const std::vector<double>& v) {
+  if (v.empty()) return std::nullopt;
+  return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
+}
+
+Opt medianOf(std::vector<double> v) {
+  if (v.empty()) return std::nullopt;
+  std::sort(v.begin(), v.end());
+  return quantileSorted(v, 0.5);
+}
+
+Study readRows(std::span<const StudyRow> rows) {
+  Study s;
+  s.all.assign(rows.begin(), rows.end());
+  std::sort(s.all.begin(), s.all.end(), [](const StudyRow& a, const StudyRow& b) {
+    return std::tie(a.material, a.lighting, a.scene, a.label, a.fit, a.fitSource) <
+           std::tie(b.material, b.lighting, b.scene, b.label, b.fit, b.fitSource);
+  });
+  std::set<std::string> models, materials;
+  std::map<std::tuple<std::string, std::string, std::string, std::string>, const StudyRow*> seen;
+  for (const StudyRow& r : s.all) {
+    if (r.material.empty() || r.label.empty())
+      throw InputError("study row without a material or model label (" + printableLine(r.sheet, 80) + ")");
+    checkFinite(r, r.e1, "E1");
+    checkFinite(r, r.e2, "E2");
+    checkFinite(r, r.rrmse, "rrmse");
+    checkFinite(r, r.rrmseLo, "rrmse's lower bound");
+    checkFinite(r, r.rrmseHi, "rrmse's upper bound");
+    checkFinite(r, r.flip, "FLIP");
+    checkFinite(r, r.flipLo, "FLIP's lower bound");
+    checkFinite(r, r.flipHi, "FLIP's upper bound");
+    checkFinite(r, r.luminanceRatio, "the luminance ratio");
+    auto& sheet = s.sheets[{r.material, r.lighting, r.scene}];
+    // One row per model and sheet: a sheet showing two fits of one model (the published and glossy's)
+    // could not say which of them ranks where.
+    const auto [first, fresh] = seen.emplace(std::tuple(r.material, r.lighting, r.scene, r.label), &r);
+    if (!fresh)
+      throw InputError("study: model " + printableLine(r.label, 40) + " appears twice on the sheet of " +
+                       printableLine(r.material, 80) + " / " + printableLine(r.lighting, 40) + " / " + printableLine(r.scene, 40) +
+                       " (fits " + printableLine(first->second->fit, 40) + " and " + printableLine(r.fit, 40) + ")");
+    if (!r.rrmse) {
+      ++s.skipped;
+      continue;
+    }
+    sheet[r.label] = &r;
+    s.used.push_back(&r);
+    models.insert(r.label);
+    materials.insert(r.material);
+    if (!s.database.count(r.material)) s.database[r.material] = r.database;
+    if (!s.materialClass.count(r.material) || s.materialClass[r.material].empty()) s.materialClass[r.material] = r.materialClass;
+  }
+  for (auto it = s.sheets.begin(); it != s.sheets.end();) it = it->second.empty() ? s.sheets.erase(it) : std::next(it);
+  s.models.assign(models.begin(), models.end());
+  s.materials.assign(materials.begin(), materials.end());
+  s.fitOf.resize(s.models.size());
+  s.sourceOf.resize(s.models.size());
+  s.fitsOf.resize(s.models.size());
+  s.sourcesOf.resize(s.models.size());
+  const auto nm = s.materials.size(), nk = s.models.size();
+  for (auto* t : {&s.rrmse, &s.flip, &s.e1, &s.e2}) t->assign(nm, std::vector<Opt>(nk));
+  for (std::size_t i = 0; i < nm; ++i)
+    for (std::size_t k = 0; k < nk; ++k) {
+      std::vector<double> r, f, a, b;
+      for (const auto& [key, sheet] : s.sheets) {
+        if (key.material != s.materials[i]) continue;
+        const auto it = sheet.find(s.models[k]);
+        if (it == sheet.end()) continue;
+        const StudyRow& row = *it->second;
+        if (s.fitOf[k].empty()) {
+          s.fitOf[k] = row.fit;
+          s.sourceOf[k] = row.fitSource;
+        }
+        s.fitsOf[k].insert(row.fit);
+        s.sourcesOf[k].insert(row.fitSource);
+        r.push_back(*row.rrmse);
+        if (row.flip) f.push_back(*row.flip);
+        if (row.e1) a.push_back(*row.e1);
+        if (row.e2) b.push_back(*row.e2);
+      }
+      s.rrmse[i][k] = meanOf(r);
+      s.flip[i][k] = meanOf(f);
+      s.e1[i][k] = meanOf(a);
+      s.e2[i][k] = meanOf(b);
+    }
+  return s;
+}
+
+// ---- per material: verdicts under each lighting, across lightings, and their agreement -----------------
+
+Json perMaterial(const Study& s) {
+  Json out = Json::array();
+  for (const std::string& m : s.materials) {
+    Json jm;
+    jm["material"] = m;
+    jm["database"] = s.database.at(m);
+    jm["class"] = s.materialClass.at(m);
+    std::vector<const std::map<std::string, const StudyRow*>*> sheets;
+    Json js = Json::array();
+    for (const auto& [key, sheet] : s.sheets) {
+      if (key.material != m) continue;
+      sheets.push_back(&sheet);
+      Json j;
+      j["lighting"] = key.lighting;
+      j["scene"] = key.scene;
+      std::vector<std::string> tied;
+      std::string closest, warning;
+      std::vector<std::pair<double, std::string>> byError;
+      for (const auto& [label, row] : sheet) {
+        if (row->closest) closest = label;
+        if (row->tied) tied.push_back(label);
+        if (!row->warning.empty()) warning = row->warning;
+        byError.emplace_back(*row->rrmse, label);
+      }
+      std::sort(byError.begin(), byError.end());
+      j["verdict"] = !closest.empty() ? "closest" : (!tied.empty() ? "tie" : "none");
+      j["models"] = !closest.empty() ? Json::array({closest}) : Json(tied);
+      Json ranking = Json::array();
+      for (const auto& [e, label] : byError) ranking.push_back(label);
+      j["ranking"] = ranking;
+      j["warning"] = warning;
+      js.push_back(j);
+    }
+    // The models on every sheet of this material: rankings across lightings compare like with like.
+    std::vector<std::string> common;
+    for (const std::string& label : s.models)
+      if (std::all_of(sheets.begin(), sheets.end(), [&](auto* sh) { return sh->count(label) > 0; })) common.push_back(label);
+    std::vector<std::vector<double>> scores;
+    for (auto* sh : sheets) {
+      std::vector<double> row;
+      for (const std::string& label : common) row.push_back(*sh->at(label)->rrmse);
+      scores.push_back(row);
+    }
+    Json across;
+    if (!common.empty()) {
+      std::vector<double> meanRank(common.size(), 0.0);
+      for (const auto& row : scores) {
+        const auto r = averageRanks(row);
+        for (std::size_t k = 0; k < r.size(); ++k) meanRank[k] += r[k] / double(scores.size());
+      }
+      const std::size_t best = std::size_t(std::min_element(meanRank.begin(), meanRank.end()) - meanRank.begin());
+      across["model"] = common[best];
+      across["meanRank"] = meanRank[best];
+      // A flip: a sheet whose verdict names a model and not the one across lightings.
+      int flips = 0, withVerdict = 0;
+      std::set<std::string> verdicts;
+      for (const Json& j : js) {
+        if (j["verdict"] == "none") continue;
+        ++withVerdict;
+        verdicts.insert(j["models"].dump());
+        const auto& named = j["models"];
+        if (std::find(named.begin(), named.end(), Json(common[best])) == named.end()) ++flips;
+      }
+      across["sheetsWithVerdict"] = withVerdict;
+      across["flips"] = flips;
+      across["distinctVerdicts"] = int(verdicts.size());
+    } else {
+      across["model"] = nullptr;
+      across["reason"] = "no model on every sheet of the material";
+    }
+    Json w;
+    const auto kw = kendallW(scores);
+    w["value"] = num(kw);
+    w["lightings"] = int(scores.size());
+    w["models"] = int(common.size());
+    if (!kw)
+      w["reason"] = scores.size() < 2 ? "fewer than 2 sheets" : (common.size() < 2 ? "fewer than 2 models on every sheet" : "every sheet ties every model");
+    jm["sheets"] = js;
+    jm["acrossLightings"] = across;
+    jm["kendallW"] = w;
+    out.push_back(jm);
+  }
+  return out;
+}
+
+// ---- per model: wins, ranks and their tests, error levels, pairwise shares ---------------------------------
+
+struct RankTests {
+  std::optional<FriedmanResult> friedman;
+  std::string friedmanReason;
+  std::vector<std::size_t> complete;  // materials with every model
+  std::vector<std::vector<Opt>> pHolm;  // [a][b]
+  std::vector<std::vector<bool>> different;
+  std::vector<std::pair<int, int>> cliques;  // in rank order
+  std::vector<std::size_t> rankOrder;
+  Json wilcoxon = Json::array();
+  std::set<std::string> methods;
+};
+
+RankTests rankTests(const Study& s) {
+  RankTests t;
+  const std::size_t nk = s.models.size();
+  std::vector<std::vector<double>> blocks;
+  for (std::size_t i = 0; i < s.materials.size(); ++i) {
+    if (std::any_of(s.rrmse[i].begin(), s.rrmse[i].end(), [](const Opt& v) { return !v; })) continue;
+    t.complete.push_back(i);
+    std::vector<double> b;
+    for (const Opt& v : s.rrmse[i]) b.push_back(*v);
+    blocks.push_back(b);
+  }
+  t.friedman = friedman(blocks);
+  if (!t.friedman)
+    t.friedmanReason = nk < 2 ? "fewer than 2 models" : (blocks.size() < 2 ? "fewer than 2 materials with every model" : "every material ties every model");
+  t.pHolm.assign(nk, std::vector<Opt>(nk));
+  t.different.assign(nk, std::vector<bool>(nk, false));
+  std::vector<std::pair<std::size_t, std::size_t>> tested;
+  std::vector<double> raw;
+  std::vector<Json> entries;
+  for (std::size_t a = 0; a < nk; ++a)
+    for (std::size_t b = a + 1; b < nk; ++b) {
+      std::vector<double> x, y;
+      for (const auto& blk : blocks) {
+        x.push_back(blk[a]);
+        y.push_back(blk[b]);
+      }
+      std::string reason;
+      const auto w = wilcoxonSignedRank(x, y, &reason);
+      Json j;
+      j["a"] = s.models[a];
+      j["b"] = s.models[b];
+      if (w) {
+        j["n"] = w->n;
+        j["zeros"] = w->zeros;
+        j["statistic"] = w->statistic;
+        j["p"] = w->p;
+        j["method"] = w->method;
+        t.methods.insert(w->method);
+        tested.emplace_back(a, b);
+        raw.push_back(w->p);
+      } else {
+        j["p"] = nullptr;
+        j["reason"] = reason;
+      }
+      entries.push_back(j);
+    }
+  const auto adjusted = holm(raw);
+  for (std::size_t i = 0; i < tested.size(); ++i) {
+    const auto [a, b] = tested[i];
+    t.pHolm[a][b] = t.pHolm[b][a] = adjusted[i];
+    t.different[a][b] = t.different[b][a] = adjusted[i] < kAlpha;
+  }
+  for (Json& j : entries) {
+    const std::size_t a = std::size_t(std::find(s.models.begin(), s.models.end(), j["a"].get<std::string>()) - s.models.begin());
+    const std::size_t b = std::size_t(std::find(s.models.begin(), s.models.end(), j["b"].get<std::string>()) - s.models.begin());
+    j["pHolm"] = num(t.pHolm[a][b]);
+    j["significant"] = bool(t.different[a][b]);
+    t.wilcoxon.push_back(j);
+  }
+  // Rank order (mean rank, then label) and the cliques: maximal runs of models no pair of which differs.
+  t.rankOrder.resize(nk);
+  std::iota(t.rankOrder.begin(), t.rankOrder.end(), 0);
+  if (t.friedman) {
+    const auto& mr = t.friedman->meanRanks;
+    std::stable_sort(t.rankOrder.begin(), t.rankOrder.end(), [&](std::size_t a, std::size_t b) { return mr[a] < mr[b]; });
+    int lastEnd = -1;
+    for (int i = 0; i < int(nk); ++i) {
+      int j = i;
+      while (j + 1 < int(nk)) {
+        bool ok = true;
+        for (int k = i; k <= j && ok; ++k) ok = !t.different[t.rankOrder[std::size_t(k)]][t.rankOrder[std::size_t(j + 1)]];
+        if (!ok) break;
+        ++j;
+      }
+      if (j > i && j > lastEnd) {
+        t.cliques.emplace_back(i, j);
+        lastEnd = j;
+      }
+    }
+  }
+  return t;
+}
+
+// The share of materials (among `units`) on which model a is closer than model b (ties count one half).
+Opt closerShare(const Study& s, std::size_t a, std::size_t b, const std::vector<std::size_t>& materials) {
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t i : materials) {
+    const Opt x = s.rrmse[i][a], y = s.rrmse[i][b];
+    if (!x || !y) continue;
+    sum += *x < *y ? 1.0 : (*x == *y ? 0.5 : 0.0);
+    ++n;
+  }
+  if (n == 0) return std::nullopt;
+  return sum / n;
+}
+
+Json pairwiseTable(const Study& s, const std::vector<std::size_t>& materials, const AnalysisOptions& o, const std::string& key) {
+  Json out = Json::array();
+  for (std::size_t a = 0; a < s.models.size(); ++a)
+    for (std::size_t b = 0; b < s.models.size(); ++b) {
+      if (a == b) continue;
+      const auto iv = bootstrap(
+          materials.size(),
+          [&](const std::vector<std::size_t>& idx) {
+            std::vector<std::size_t> drawn;
+            for (std::size_t i : idx) drawn.push_back(materials[i]);
+            return closerShare(s, a, b, drawn);
+          },
+          o.resamples, seedFor(o.seed, "closer/" + key + "/" + s.models[a] + "/" + s.models[b]));
+      int n = 0;
+      for (std::size_t i : materials) n += s.rrmse[i][a] && s.rrmse[i][b] ? 1 : 0;
+      Json j;
+      j["x"] = s.models[a];
+      j["y"] = s.models[b];
+      j["materials"] = n;
+      j["share"] = intervalJson(iv);
+      out.push_back(j);
+    }
+  return out;
+}
+
+Json perModel(const Study& s, const RankTests& t, const AnalysisOptions& o, std::vector<Interval>& meanIv) {
+  Json out = Json::array();
+  meanIv.clear();
+  for (std::size_t k = 0; k < s.models.size(); ++k) {
+    int sheets = 0, closest = 0, tied = 0, warned = 0;
+    for (const auto& [key, sheet] : s.sheets)
+      if (const auto it = sheet.find(s.models[k]); it != sheet.end()) {
+        ++sheets;
+        closest += it->second->closest ? 1 : 0;
+        tied += it->second->tied ? 1 : 0;
+        warned += it->second->warning.empty() ? 0 : 1;
+      }
+    std::vector<std::size_t> have;
+    for (std::size_t i = 0; i < s.materials.size(); ++i)
+      if (s.rrmse[i][k]) have.push_back(i);
+    auto values = [&](const std::vector<std::size_t>& idx) {
+      std::vector<double> v;
+      for (std::size_t i : idx) v.push_back(*s.rrmse[have[i]][k]);
+      return v;
+    };
+    const auto mean = bootstrap(have.size(), [&](const auto& idx) { return meanOf(values(idx)); }, o.resamples,
+                                seedFor(o.seed, "mean/" + s.models[k]));
+    const auto median = bootstrap(have.size(), [&](const auto& idx) { return medianOf(values(idx)); }, o.resamples,
+                                  seedFor(o.seed, "median/" + s.models[k]));
+    meanIv.push_back(mean);
+    Json j;
+    j["label"] = s.models[k];
+    j["fits"] = Json(std::vector<std::string>(s.fitsOf[k].begin(), s.fitsOf[k].end()));
+    j["fitSources"] = Json(std::vector<std::string>(s.sourcesOf[k].begin(), s.sourcesOf[k].end()));
+    j["sheets"] = sheets;
+    j["closest"] = closest;
+    j["tied"] = tied;
+    j["sheetsWithWarning"] = warned;
+    j["materials"] = int(have.size());
+    j["meanRank"] = t.friedman ? Json(t.friedman->meanRanks[k]) : Json(nullptr);
+    j["meanRrmse"] = intervalJson(mean);
+    j["medianRrmse"] = intervalJson(median);
+    out.push_back(j);
+  }
+  return out;
+}
+
+// ---- the paper's claim: does BRDF-space error predict image-space error? ----------------------------------
+
+using Column = std::vector<std::vector<Opt>> Study::*;
+
+struct Pair {
+  std::vector<double> x, y;
+};
+
+// (BRDF error, image error) of every model on the drawn materials.
+Pair pooled(const Study& s, Column brdf, Column image, const std::vector<std::size_t>& materials) {
+  Pair p;
+  for (std::size_t i : materials)
+    for (std::size_t k = 0; k < s.models.size(); ++k) {
+      const Opt x = (s.*brdf)[i][k], y = (s.*image)[i][k];
+      if (x && y) {
+        p.x.push_back(*x);
+        p.y.push_back(*y);
+      }
+    }
+  return p;
+}
+
+// Whether the model best under `brdf` is best under `image` on material i (ties: any shared best model).
+Opt bestAgrees(const Study& s, Column brdf, Column image, std::size_t i) {
+  std::vector<std::size_t> ks;
+  for (std::size_t k = 0; k < s.models.size(); ++k)
+    if ((s.*brdf)[i][k] && (s.*image)[i][k]) ks.push_back(k);
+  if (ks.size() < 2) return std::nullopt;
+  double bx = INFINITY, by = INFINITY;
+  for (std::size_t k : ks) {
+    bx = std::min(bx, *(s.*brdf)[i][k]);
+    by = std::min(by, *(s.*image)[i][k]);
+  }
+  for (std::size_t k : ks)
+    if (*(s.*brdf)[i][k] == bx && *(s.*image)[i][k] == by) return 1.0;
+  return 0.0;
+}
+
+Json brdfVsImage(const Study& s, const AnalysisOptions& o, Json& differences, std::string& headline) {
+  Json out = Json::array();
+  struct Named {
+    const char* name;
+    Column column;
+  };
+  const Named brdfs[] = {{"E1", &Study::e1}, {"E2", &Study::e2}};
+  const Named images[] = {{"rrmse", &Study::rrmse}, {"flip", &Study::flip}};
+  std::vector<std::size_t> all(s.materials.size());
+  std::iota(all.begin(), all.end(), 0);
+  std::map<std::string, Interval> pooledRho;
+  for (const auto& img : images)
+    for (const auto& br : brdfs) {
+      const std::string key = std::string(br.name) + "/" + img.name;
+      using Corr = std::optional<double> (*)(const std::vector<double>&, const std::vector<double>&);
+      Json j;
+      j["brdf"] = br.name;
+      j["image"] = img.name;
+      Json jp, jw;
+      jp["pairs"] = int(pooled(s, br.column, img.column, all).x.size());
+      for (const auto& [cname, corr] : {std::pair<const char*, Corr>{"spearman", spearman}, {"kendallTauB", kendallTauB}}) {
+        const auto iv = bootstrap(
+            all.size(),
+            [&](const std::vector<std::size_t>& idx) {
+              const Pair p = pooled(s, br.column, img.column, idx);
+              return corr(p.x, p.y);
+            },
+            o.resamples, seedFor(o.seed, "pooled/" + key + "/" + cname));
+        jp[cname] = intervalJson(iv);
+        if (std::string(cname) == "spearman") pooledRho[key] = iv;
+        // Within each material, across its models; then the mean over materials, resampling materials.
+        std::vector<Opt> within(s.materials.size());
+        int defined = 0;
+        for (std::size_t i = 0; i < s.materials.size(); ++i) {
+          const Pair p = pooled(s, br.column, img.column, {i});
+          within[i] = corr(p.x, p.y);
+          defined += within[i] ? 1 : 0;
+        }
+        const auto wiv = bootstrap(
+            all.size(),
+            [&](const std::vector<std::size_t>& idx) {
+              std::vector<double> v;
+              for (std::size_t i : idx)
+                if (within[i]) v.push_back(*within[i]);
+              return meanOf(v);
+            },
+            o.resamples, seedFor(o.seed, "within/" + key + "/" + cname));
+        jw[cname] = intervalJson(wiv);
+        jw["materials"] = defined;
+        jw["materialsUndefined"] = int(s.materials.size()) - defined;
+      }
+      j["pooled"] = jp;
+      j["withinMaterial"] = jw;
+      std::vector<Opt> agrees(s.materials.size());
+      int n = 0;
+      for (std::size_t i = 0; i < s.materials.size(); ++i) n += (agrees[i] = bestAgrees(s, br.column, img.column, i)) ? 1 : 0;
+      const auto share = bootstrap(
+          all.size(),
+          [&](const std::vector<std::size_t>& idx) {
+            std::vector<double> v;
+            for (std::size_t i : idx)
+              if (agrees[i]) v.push_back(*agrees[i]);
+            return meanOf(v);
+          },
+          o.resamples, seedFor(o.seed, "best/" + key));
+      Json jb;
+      jb["materials"] = n;
+      jb["share"] = intervalJson(share);
+      j["bestIsImageBest"] = jb;
+      out.push_back(j);
+    }
+  // Whether E2 ranks the fits more like the image than E1 does: the difference of the pooled ρ, both
+  // computed on the same resampled materials (a paired interval, not two intervals compared by eye).
+  for (const auto& img : images) {
+    const auto diff = bootstrap(
+        all.size(),
+        [&](const std::vector<std::size_t>& idx) -> Opt {
+          const Pair p1 = pooled(s, &Study::e1, img.column, idx), p2 = pooled(s, &Study::e2, img.column, idx);
+          const Opt a = spearman(p1.x, p1.y), b = spearman(p2.x, p2.y);
+          if (!a || !b) return std::nullopt;
+          return *b - *a;
+        },
+        o.resamples, seedFor(o.seed, std::string("e2-e1/") + img.name));
+    Json j;
+    j["image"] = img.name;
+    j["pooledSpearman"] = intervalJson(diff);
+    differences.push_back(j);
+    if (std::string(img.name) != "rrmse") continue;
+    headline = "BRDF error against image error (pooled Spearman ρ with rRMSE): E1 " + intervalText(pooledRho["E1/rrmse"], "%.3f") +
+               ", E2 " + intervalText(pooledRho["E2/rrmse"], "%.3f") + "; E2 − E1 " + intervalText(diff, "%.3f");
+    if (diff.lo && diff.hi && *diff.lo > 0.0) {
+      headline += " — E2 predicts image error better than E1.";
+    } else if (diff.lo && diff.hi && *diff.hi < 0.0) {
+      headline += " — E1 predicts image error better than E2.";
+    } else {
+      headline += " — no difference between E1 and E2 shown.";
+    }
+  }
+  return out;
+}
+
+// ---- against people --------------------------------------------------------------------------------------
+
+const char* const kFigureNames[] = {"rrmse", "flip", "E1", "E2"};
+
+Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headline, std::vector<PerceptualSeries>& series) {
+  Json out;
+  if (o.perceptualDir.empty()) {
+    out["reason"] = "no perceptual data given";
+    return out;
+  }
+  const PerceptualData data = PerceptualData::read(o.perceptualDir);
+  out["source"] =
+      "Lavoué, Bonneel, Farrugia, Soler, \"Perceptual quality of BRDF approximations: dataset and metrics\", "
+      "Computer Graphics Forum 40(2), 2021";
+  out["note"] =
+      "The dataset's ABC rows are Löw et al. 2012's model with the fit published in their supplement (fitted under E2). "
+      "Which ABC variant (Smooth Surface or Microfacet) the study used is not stated in the released data and could not "
+      "be checked, so both published ABC fits are compared.";
+  Json fits = Json::array();
+  headline.clear();
+  for (const PerceptualFit& pf : perceptualFits()) {
+    // The rows of exactly this fit (a model's label may cover glossy's fits on other materials), each
+    // figure averaged over the material's sheets.
+    std::string label;
+    std::vector<std::array<Opt, 4>> figure(s.materials.size());
+    for (std::size_t i = 0; i < s.materials.size(); ++i) {
+      std::array<std::vector<double>, 4> v;
+      for (const StudyRow* r : s.used) {
+        if (r->material != s.materials[i] || r->fit != pf.fit || r->fitSource != pf.fitSource) continue;
+        if (label.empty()) label = r->label;
+        const Opt values[] = {r->rrmse, r->flip, r->e1, r->e2};
+        for (std::size_t f = 0; f < 4; ++f)
+          if (values[f]) v[f].push_back(*values[f]);
+      }
+      for (std::size_t f = 0; f < 4; ++f) figure[i][f] = meanOf(v[f]);
+    }
+    Json jf;
+    jf["method"] = pf.method;
+    jf["fit"] = pf.fit;
+    jf["fitSource"] = pf.fitSource;
+    if (label.empty()) {
+      jf["model"] = nullptr;
+      jf["reason"] = "the study has no " + pf.fitSource + " " + pf.fit + " fit";
+      fits.push_back(jf);
+      continue;
+    }
+    jf["model"] = label;
+    // The materials with both a glossy figure and a perceived distance.
+    std::vector<std::size_t> mats;
+    std::vector<double> dist;
+    for (std::size_t i = 0; i < s.materials.size(); ++i)
+      if (const auto d = data.distance(pf.method, s.materials[i]); d && figure[i][0]) {
+        mats.push_back(i);
+        dist.push_back(*d);
+      }
+    jf["materials"] = int(mats.size());
+    PerceptualSeries ps;
+    ps.name = label;
+    ps.note = pf.fitSource + " fit, as " + pf.method;
+    const std::string pairName = pf.method + " ↔ " + label + " (" + pf.fitSource + ")";
+    ps.style.colour = fits.empty() ? "#e69f00" : "#56b4e9";
+    ps.points.resize(std::size(kFigureNames));
+    Json figs = Json::array();
+    std::string best;
+    Opt bestRho;
+    Interval bestIv;
+    for (std::size_t f = 0; f < std::size(kFigureNames); ++f) {
+      std::vector<std::size_t> unit;
+      for (std::size_t u = 0; u < mats.size(); ++u)
+        if (figure[mats[u]][f]) {
+          unit.push_back(u);
+          ps.points[f].push_back({*figure[mats[u]][f], dist[u]});
+        }
+      Json jfig;
+      jfig["figure"] = kFigureNames[f];
+      jfig["materials"] = int(unit.size());
+      using Corr = std::optional<double> (*)(const std::vector<double>&, const std::vector<double>&);
+      for (const auto& [cname, corr] : {std::pair<const char*, Corr>{"spearman", spearman}, {"kendallTauB", kendallTauB}}) {
+        const auto iv = bootstrap(
+            unit.size(),
+            [&](const std::vector<std::size_t>& idx) {
+              std::vector<double> x, y;
+              for (std::size_t i : idx) {
+                x.push_back(*figure[mats[unit[i]]][f]);
+                y.push_back(dist[unit[i]]);
+              }
+              return corr(x, y);
+            },
+            o.resamples, seedFor(o.seed, "people/" + pf.fit + "/" + kFigureNames[f] + "/" + cname));
+        jfig[cname] = intervalJson(iv);
+        if (std::string(cname) == "spearman" && iv.estimate && (!bestRho || *iv.estimate > *bestRho)) {
+          bestRho = iv.estimate;
+          best = kFigureNames[f];
+          bestIv = iv;
+        }
+      }
+      figs.push_back(jfig);
+    }
+    jf["figures"] = figs;
+    jf["agreesBest"] = best.empty() ? Json(nullptr) : Json(best);
+    series.push_back(ps);
+    headline += (headline.empty() ? "" : "\n") + std::string("Against people (") + pairName + ", " + std::to_string(mats.size()) +
+                " MERL materials): " +
+                (best.empty() ? std::string("no figure correlates (undefined)")
+                              : "the figure that agrees best with the perceived distance is " + best + ", Spearman ρ " +
+                                    intervalText(bestIv, "%.3f"));
+    fits.push_back(jf);
+  }
+  out["fits"] = fits;
+  return out;
+}
+
+std::vector<ModelStyle> modelStyles(const Study& s) {
+  static const char* const kPalette[] = {"#e69f00", "#56b4e9", "#009e73", "#cc79a7", "#0072b2",
+                                         "#d55e00", "#f0e442", "#999999", "#882255", "#000000"};
+  std::vector<ModelStyle> out;
+  std::set<std::string> used;
+  for (std::size_t k = 0; k < s.models.size(); ++k) {
+    ModelStyle m{s.models[k], {}};
+    // The sheet's colour for the fit (renderer/sheet/comparison_grid.h), so figures match the sheets.
+    const std::string fit = s.fitOf[k].substr(0, s.fitOf[k].find(':', s.fitOf[k].find(':') + 1));
+    for (const GridFit& g : gridFits())
+      if (g.fit == fit) m.style.colour = std::string(g.colour);
+    // Dashed: glossy's own fits only, as the sheets draw them.
+    const bool glossyOnly = s.sourcesOf[k].size() == 1 && s.sourcesOf[k].count("glossy");
+    const std::string key = glossyOnly ? "d" : "";
+    if (m.style.colour == "#000000" || used.count(m.style.colour + key)) m.style.colour = kPalette[k % std::size(kPalette)];
+    if (glossyOnly) m.style.dash = "6 3";
+    used.insert(m.style.colour + key);
+    out.push_back(m);
+  }
+  return out;
+}
+
+}  // namespace
+
+AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOptions& options, const std::filesystem::path& folder) {
+  if (options.resamples < 0 || options.resamples > 1000000)
+    throw InputError("study: bootstrap resamples " + std::to_string(options.resamples) + " outside 0 … 1000000");
+  // The perceptual data are read first: a malformed table stops the analysis before anything is written.
+  if (!options.perceptualDir.empty()) (void)PerceptualData::read(options.perceptualDir);
+  const Study s = readRows(rows);
+  const RankTests t = rankTests(s);
+
+  Json results;
+  results["generator"] = "glossy study";
+  results["seed"] = options.seed;
+  results["resamples"] = options.resamples;
+  results["interval"] = "95 % percentile bootstrap, materials resampled with their sheets";
+  Json counts;
+  counts["rows"] = int(s.all.size());
+  counts["rowsUsed"] = int(s.used.size());
+  counts["rowsSkippedWithoutRrmse"] = s.skipped;
+  counts["materials"] = int(s.materials.size());
+  counts["sheets"] = int(s.sheets.size());
+  counts["models"] = int(s.models.size());
+  results["counts"] = counts;
+  results["materials"] = perMaterial(s);
+
+  std::vector<Interval> meanIv;
+  const Json models = perModel(s, t, options, meanIv);
+  results["models"] = models;
+  Json jf;
+  jf["materials"] = int(t.complete.size());
+  jf["materialsLeftOut"] = int(s.materials.size() - t.complete.size());
+  if (t.friedman) {
+    jf["chiSquare"] = t.friedman->chiSquare;
+    jf["df"] = t.friedman->treatments - 1;
+    jf["p"] = t.friedman->pChiSquare;
+    jf["imanDavenportF"] = num(t.friedman->imanDavenportF);
+    if (!t.friedman->imanDavenportF) jf["imanDavenportFReason"] = "infinite: every material ranks the models alike";
+    jf["fDf"] = Json::array({t.friedman->treatments - 1, (t.friedman->treatments - 1) * (t.friedman->blocks - 1)});
+    jf["pF"] = num(t.friedman->pF);
+  } else {
+    jf["p"] = nullptr;
+    jf["reason"] = t.friedmanReason;
+  }
+  results["friedman"] = jf;
+  Json jw;
+  jw["alpha"] = kAlpha;
+  jw["correction"] = "Holm";
+  jw["zeroMethod"] = "Wilcoxon (zero differences dropped)";
+  jw["methods"] = Json(std::vector<std::string>(t.methods.begin(), t.methods.end()));
+  jw["pairs"] = t.wilcoxon;
+  Json cliques = Json::array();
+  for (const auto& [a, b] : t.cliques) {
+    Json c = Json::array();
+    for (int i = a; i <= b; ++i) c.push_back(s.models[t.rankOrder[std::size_t(i)]]);
+    cliques.push_back(c);
+  }
+  jw["cliques"] = cliques;
+  results["wilcoxon"] = jw;
+
+  std::vector<std::size_t> all(s.materials.size());
+  std::iota(all.begin(), all.end(), 0);
+  Json pairwise;
+  pairwise["overall"] = pairwiseTable(s, all, options, "all");
+  Json byDb, byClass;
+  std::map<std::string, std::vector<std::size_t>> dbs, classes;
+  for (std::size_t i = 0; i < s.materials.size(); ++i) {
+    dbs[s.database.at(s.materials[i])].push_back(i);
+    if (!s.materialClass.at(s.materials[i]).empty()) classes[s.materialClass.at(s.materials[i])].push_back(i);
+  }
+  for (const auto& [db, mats] : dbs) byDb[db.empty() ? "(none)" : db] = pairwiseTable(s, mats, options, "db/" + db);
+  for (const auto& [c, mats] : classes) byClass[c] = pairwiseTable(s, mats, options, "class/" + c);
+  pairwise["byDatabase"] = byDb.is_null() ? Json::object() : byDb;
+  pairwise["byClass"] = byClass.is_null() ? Json::object() : byClass;
+  results["closerThan"] = pairwise;
+
+  std::string claimHeadline, peopleHeadline;
+  Json differences = Json::array();
+  results["brdfVsImage"] = brdfVsImage(s, options, differences, claimHeadline);
+  results["e2MinusE1"] = differences;
+  std::vector<PerceptualSeries> series;
+  results["againstPeople"] = againstPeople(s, options, peopleHeadline, series);
+
+  // The headline.
+  std::string summary = "Study: " + std::to_string(s.materials.size()) + " materials, " + std::to_string(s.sheets.size()) +
+                        " sheets, " + std::to_string(s.models.size()) + " models; " + std::to_string(s.used.size()) + " rows used";
+  if (s.skipped) summary += ", " + std::to_string(s.skipped) + " without rRMSE skipped";
+  summary += ".\n";
+  for (const Json& m : models)
+    summary += "  " + m["label"].get<std::string>() + ": closest on " + std::to_string(m["closest"].get<int>()) + " of " +
+               std::to_string(m["sheets"].get<int>()) + " sheets, tied on " + std::to_string(m["tied"].get<int>()) +
+               "; mean rank " + (m["meanRank"].is_null() ? std::string("—") : formatted("%.2f", m["meanRank"].get<double>())) +
+               "; mean rRMSE " + intervalCell(m["meanRrmse"]) + "\n";
+  if (t.friedman) {
+    summary += formatted("Friedman χ² = %.3f (df %d), p = %.3g", t.friedman->chiSquare, t.friedman->treatments - 1, t.friedman->pChiSquare);
+    if (t.friedman->pF) summary += formatted("; Iman–Davenport F p = %.3g", *t.friedman->pF);
+    summary += " over " + std::to_string(t.complete.size()) + " materials.\n";
+    std::string groups;
+    for (const Json& c : cliques) groups += (groups.empty() ? "" : "; ") + c.dump();
+    summary += "Not significantly different (Holm–Wilcoxon, α = 0.05): " + (groups.empty() ? std::string("none") : groups) + ".\n";
+  } else {
+    summary += "Friedman test: none (" + t.friedmanReason + ").\n";
+  }
+  summary += claimHeadline + "\n";
+  if (!peopleHeadline.empty()) summary += peopleHeadline + "\n";
+  results["summary"] = summary;
+
+  // Figures.
+  MaterialTable table{s.materials, modelStyles(s), s.rrmse, s.flip, s.e1, s.e2};
+  std::vector<std::pair<std::string, std::string>> svgs = {
+      {"error_curves", errorCurvesSvg(table, options.referenceModel)},
+      {"heat_map", heatMapSvg(table)},
+  };
+  {
+    std::vector<CdModel> cd;
+    if (t.friedman)
+      for (std::size_t k : t.rankOrder) cd.push_back({s.models[k], t.friedman->meanRanks[k]});
+    std::string test = t.methods.empty() ? std::string("no Wilcoxon test") : *t.methods.begin();
+    if (t.methods.size() > 1) test = "exact or normal approximation";
+    svgs.emplace_back("critical_difference", criticalDifferenceSvg(cd, t.cliques, int(t.complete.size()), test));
+  }
+  svgs.emplace_back("brdf_vs_image", brdfVsImageSvg(table));
+  if (!options.perceptualDir.empty())
+    svgs.emplace_back("perceptual", perceptualSvg(series, {"rRMSE r*", "ꟻLIP", "E1", "E2"}));
+
+  AnalysisResult result;
+  result.summary = summary;
+  auto write = [&](const std::string& name, const std::string& contents) {
+    writeFileAtomically(folder / name, contents);
+    result.files.emplace_back(name);
+  };
+  const auto dump = [](const Json& j) { return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; };
+  write("rows.csv", rowsCsv(s.all));
+  write("rows.json", dump(rowsJson(s.all)));
+  Json figures = Json::array();
+  const auto rsvg = plot::findRsvgConvert();
+  for (const auto& [name, svg] : svgs) {
+    write(name + ".svg", svg);
+    if (rsvg) {
+      plot::svgToPng(*rsvg, folder / (name + ".svg"), folder / (name + ".png"), 1.5);
+      result.files.emplace_back(name + ".png");
+    }
+    figures.push_back({{"name", name}, {"svg", name + ".svg"}, {"png", rsvg ? Json(name + ".png") : Json(nullptr)}});
+  }
+  results["figures"] = figures;
+  write("results.json", dump(results));
+  write("models.tex", modelsTex(models, int(s.materials.size())));
+  std::string md = "# Study summary\n\n```\n" + summary + "```\n\nEvery statistic with its interval: `results.json`; "
+                   "the rows: `rows.csv`, `rows.json`; per-model table: `models.tex`; figures: ";
+  for (std::size_t i = 0; i < svgs.size(); ++i) md += (i ? ", " : "") + std::string("`") + svgs[i].first + ".svg`";
+  md += ".\n";
+  if (!options.perceptualDir.empty())
+    md += "\nPerceived distances: Lavoué, Bonneel, Farrugia, Soler, \"Perceptual quality of BRDF approximations: dataset and "
+          "metrics\", Computer Graphics Forum 40(2), 2021.\n";
+  write("summary.md", md);
+  return result;
+}
+
+}  // namespace glossy::study

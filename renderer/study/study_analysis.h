@@ -1,0 +1,40 @@
+// The statistics of a study (docs/study.md, "The statistics"): rows in, files out. `glossy study` reads its
+// sheets into StudyRows and hands them here; everything it reports about the models — verdicts per material
+// and lighting, ranks and their tests, bootstrap intervals, the BRDF-space against image-space question,
+// and the comparison with people's judgments — is computed and written by analyseStudy, so that the
+// command, its tests and Python see the same numbers.
+#pragma once
+
+#include "renderer/study/study_row.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace glossy::study {
+
+struct AnalysisOptions {
+  std::uint64_t seed = 1;  // the bootstraps' seed: the same seed and rows give the same files
+  int resamples = 2000;    // bootstrap resamples (percentile intervals)
+  // ../shared/perceptual (renderer/study/perceptual.h); empty: no comparison with people.
+  std::filesystem::path perceptualDir;
+  // The label the per-material error curves are sorted by.
+  std::string referenceModel = "Microfacet E2";
+};
+
+struct AnalysisResult {
+  std::string summary;                        // the headline text `glossy study` prints
+  std::vector<std::filesystem::path> files;  // written, relative to the folder, in the order written
+};
+
+// Every statistic of docs/study.md over `rows`, written into `folder` (which must exist) atomically
+// (renderer/util/atomic_file.h). Deterministic: the same rows, in any order, and the same options give
+// byte-identical files. Rows without an rrmse are skipped and counted. Throws InputError for rows that
+// cannot be a study (e.g. the same model twice on one sheet, a non-finite figure) and std::runtime_error
+// if a file cannot be written.
+AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOptions& options,
+                            const std::filesystem::path& folder);
+
+}  // namespace glossy::study

@@ -1,0 +1,358 @@
+// The study's analysis (renderer/study/study_analysis.h) on synthetic studies built so that the answer is
+// known: one model closest everywhere, E2 ordered with the image error and E1 not; plus the perceptual
+// tables it reads (renderer/study/perceptual.h). The statistics themselves are checked against scipy in
+// study_statistics_test.cpp.
+#include "materials/core/input_error.h"
+#include "renderer/study/perceptual.h"
+#include "renderer/study/study_analysis.h"
+#include "tests/support/test_support.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+
+namespace glossy::study {
+namespace {
+
+using test::TempDir;
+using Json = nlohmann::json;
+
+// MERL materials as the perceptual dataset and glossy's library spell them.
+const std::vector<std::string> kMaterials = {"alum-bronze", "alumina-oxide", "aluminium", "aventurnine", "beige-fabric",
+                                             "black-fabric", "black-obsidian", "black-oxidized-steel", "black-phenolic",
+                                             "black-soft-plastic", "blue-acrylic", "blue-fabric"};
+
+struct Model {
+  std::string label, fit, metric;
+  double factor;  // its error relative to the material's base error
+};
+const std::vector<Model> kModels = {{"Microfacet E2", "microfacet:E2", "E2", 0.5},
+                                    {"Smooth E2", "smooth:E2", "E2", 1.0},
+                                    {"CT E1", "cook-torrance:E1", "E1", 1.4},
+                                    {"AS E2", "ashikhmin-shirley:E2", "E2", 1.9}};
+
+// A fixed pseudo-random sequence (a 64-bit LCG), so the study is the same on every run.
+struct Lcg {
+  std::uint64_t s = 12345;
+  double next() {
+    s = s * 6364136223846793005ull + 1442695040888963407ull;
+    return double(s >> 11) / double(1ull << 53);
+  }
+};
+
+// 12 materials × 2 lightings × 4 models. "Microfacet E2" is built to be best: half the error of any other
+// model, named closest on every sheet but two, where it ties with Smooth E2. E2 rises with the image error
+// within each material; E1 is noise.
+std::vector<StudyRow> syntheticStudy() {
+  std::vector<StudyRow> rows;
+  Lcg rng;
+  for (std::size_t i = 0; i < kMaterials.size(); ++i)
+    for (const std::string lighting : {"sky", "studio"}) {
+      const double base = 0.04 * (1.0 + 0.25 * double(i)) * (lighting == "sky" ? 1.0 : 1.3);
+      const bool tie = (i == 3 && lighting == "sky") || (i == 7 && lighting == "studio");
+      for (const Model& m : kModels) {
+        StudyRow r;
+        r.material = kMaterials[i];
+        r.database = "MERL";
+        r.materialClass = i % 2 ? "Dielectric" : "Metal";
+        r.lighting = lighting;
+        r.scene = "sphere";
+        r.layer = m.fit.substr(0, m.fit.find(':')) + "_" + m.metric;
+        r.label = m.label;
+        r.fit = m.fit;
+        r.fitMetric = m.metric;
+        r.fitSource = "published";
+        const double noise = 0.1 * rng.next();
+        r.rrmse = base * m.factor * (1.0 + noise);
+        r.rrmseLo = *r.rrmse * 0.97;
+        r.rrmseHi = *r.rrmse * 1.03;
+        r.flip = 0.1 + *r.rrmse;
+        r.flipLo = *r.flip - 0.01;
+        r.flipHi = *r.flip + 0.01;
+        r.e2 = 0.01 * m.factor * (1.0 + 0.1 * double(i));
+        r.e1 = 0.02 + 0.05 * rng.next();
+        r.luminanceRatio = 1.0;
+        r.closest = m.label == "Microfacet E2" && !tie;
+        r.tied = tie && (m.label == "Microfacet E2" || m.label == "Smooth E2");
+        r.sheet = "sheets/" + r.material + "_" + lighting + ".exr";
+        r.width = r.height = 64;
+        r.spp = 16;
+        r.seed = 1;
+        rows.push_back(r);
+      }
+    }
+  return rows;
+}
+
+AnalysisOptions fastOptions() {
+  AnalysisOptions o;
+  o.resamples = 400;  // enough for the assertions; the default (2000) is exercised by determinism
+  return o;
+}
+
+Json results(const TempDir& dir) { return Json::parse(test::readText(dir / "results.json")); }
+
+const Json& modelEntry(const Json& r, const std::string& label) {
+  for (const Json& m : r["models"])
+    if (m["label"] == label) return m;
+  throw std::runtime_error("no model " + label);
+}
+
+void expectNoNanOrInf(const TempDir& dir, const AnalysisResult& res) {
+  static const std::regex kBad(R"((^|[^A-Za-z])(nan|NaN|inf|Inf|INF|NAN)([^A-Za-z]|$))");
+  for (const auto& f : res.files) {
+    if (f.extension() == ".png") continue;
+    const std::string text = test::readText(dir / f);
+    EXPECT_FALSE(std::regex_search(text, kBad)) << f << " holds NaN or Inf";
+  }
+}
+
+TEST(StudyAnalysis, TheModelBuiltToBeBestIsNamedBestEverywhere) {
+  TempDir dir;
+  const auto rows = syntheticStudy();
+  const auto res = analyseStudy(rows, fastOptions(), dir.path());
+  const Json r = results(dir);
+  SCOPED_TRACE(r.dump(1));
+  EXPECT_EQ(r["counts"]["materials"], 12);
+  EXPECT_EQ(r["counts"]["sheets"], 24);
+  const Json& best = modelEntry(r, "Microfacet E2");
+  EXPECT_EQ(best["closest"], 22);
+  EXPECT_EQ(best["tied"], 2);
+  EXPECT_EQ(best["meanRank"], 1.0);
+  EXPECT_EQ(modelEntry(r, "Smooth E2")["closest"], 0);
+  for (const Json& m : r["models"])
+    if (m["label"] != "Microfacet E2") {
+      EXPECT_LT(best["meanRrmse"]["hi"].get<double>(), m["meanRrmse"]["lo"].get<double>()) << m["label"];
+    }
+  EXPECT_LT(r["friedman"]["p"].get<double>(), 1e-4);
+  EXPECT_LT(r["friedman"]["pF"].get<double>(), 1e-4);
+  // Every pair is separated (12 materials, the order is the same on each): exact tests, all significant.
+  for (const Json& p : r["wilcoxon"]["pairs"]) {
+    EXPECT_EQ(p["method"], "exact");
+    EXPECT_TRUE(p["significant"].get<bool>()) << p.dump();
+  }
+  EXPECT_TRUE(r["wilcoxon"]["cliques"].empty());
+  for (const Json& c : r["closerThan"]["overall"])
+    if (c["x"] == "Microfacet E2") {
+      EXPECT_EQ(c["share"]["estimate"], 1.0) << c.dump();
+    }
+  EXPECT_TRUE(r["closerThan"]["byClass"].contains("Metal"));
+  EXPECT_TRUE(r["closerThan"]["byDatabase"].contains("MERL"));
+  // Per material: the same verdict under both lightings, no flip, rankings in full agreement.
+  for (const Json& m : r["materials"]) {
+    EXPECT_EQ(m["acrossLightings"]["model"], "Microfacet E2");
+    EXPECT_EQ(m["acrossLightings"]["flips"], 0);
+    EXPECT_EQ(m["kendallW"]["value"], 1.0);
+  }
+  EXPECT_NE(res.summary.find("Microfacet E2: closest on 22 of 24 sheets"), std::string::npos) << res.summary;
+  EXPECT_NE(test::readText(dir / "summary.md").find("Microfacet E2: closest on 22 of 24"), std::string::npos);
+  expectNoNanOrInf(dir, res);
+}
+
+TEST(StudyAnalysis, E2OrderedWithTheImageErrorIsSaidToPredictItBetterThanE1) {
+  TempDir dir;
+  const auto res = analyseStudy(syntheticStudy(), fastOptions(), dir.path());
+  const Json r = results(dir);
+  const Json* e1 = nullptr;
+  const Json* e2 = nullptr;
+  for (const Json& c : r["brdfVsImage"]) {
+    if (c["image"] != "rrmse") continue;
+    (c["brdf"] == "E1" ? e1 : e2) = &c;
+  }
+  ASSERT_TRUE(e1 && e2);
+  EXPECT_EQ((*e2)["withinMaterial"]["spearman"]["estimate"], 1.0);
+  EXPECT_EQ((*e2)["bestIsImageBest"]["share"]["estimate"], 1.0);
+  EXPECT_GT((*e2)["pooled"]["spearman"]["lo"].get<double>(), (*e1)["pooled"]["spearman"]["hi"].get<double>());
+  EXPECT_GT(r["e2MinusE1"][0]["pooledSpearman"]["lo"].get<double>(), 0.0);
+  EXPECT_NE(res.summary.find("E2 predicts image error better than E1"), std::string::npos) << res.summary;
+}
+
+TEST(StudyAnalysis, PeopleAreComparedWithTheSharedFitOnlyWhereAModelCoversOthers) {
+  GLOSSY_REQUIRE_SHARED("perceptual");
+  // Microfacet E2 on the first three materials is glossy's own fit: those rows are not Löw's published
+  // fit the dataset judged, so they stay out of the comparison with people (and the model lists both fits).
+  auto rows = syntheticStudy();
+  for (auto& r : rows)
+    if (r.label == "Microfacet E2" && r.material < "av") {
+      r.fit = "microfacet:E2:glossy";
+      r.fitSource = "glossy";
+    }
+  TempDir dir;
+  AnalysisOptions o = fastOptions();
+  o.perceptualDir = test::sharedDir() / "perceptual";
+  analyseStudy(rows, o, dir.path());
+  const Json r = results(dir);
+  for (const Json& f : r["againstPeople"]["fits"]) {
+    if (f["fit"] == "microfacet:E2") {
+      EXPECT_EQ(f["materials"], 9);
+    } else {
+      EXPECT_EQ(f["materials"], 12);
+    }
+  }
+  EXPECT_EQ(modelEntry(r, "Microfacet E2")["fitSources"], Json({"glossy", "published"}));
+}
+
+TEST(StudyAnalysis, RowOrderDoesNotChangeAByte) {
+  TempDir a, b;
+  auto rows = syntheticStudy();
+  AnalysisOptions o;  // the default 2000 resamples
+  const auto ra = analyseStudy(rows, o, a.path());
+  std::reverse(rows.begin(), rows.end());
+  std::rotate(rows.begin(), rows.begin() + 17, rows.end());
+  const auto rb = analyseStudy(rows, o, b.path());
+  ASSERT_EQ(ra.files, rb.files);
+  for (const auto& f : ra.files) EXPECT_EQ(test::readText(a / f.string()), test::readText(b / f.string())) << f;
+  // And another seed moves the intervals (the seed is used).
+  TempDir c;
+  o.seed = 2;
+  analyseStudy(rows, o, c.path());
+  EXPECT_NE(test::readText(a / "results.json"), test::readText(c / "results.json"));
+}
+
+TEST(StudyAnalysis, WritesEveryOutput) {
+  TempDir dir;
+  const auto res = analyseStudy(syntheticStudy(), fastOptions(), dir.path());
+  for (const char* f : {"rows.csv", "rows.json", "results.json", "models.tex", "summary.md", "error_curves.svg", "heat_map.svg",
+                        "critical_difference.svg", "brdf_vs_image.svg"}) {
+    EXPECT_TRUE(std::find(res.files.begin(), res.files.end(), std::filesystem::path(f)) != res.files.end()) << f;
+    EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
+  }
+  const auto csv = test::readCsv(dir / "rows.csv");
+  ASSERT_EQ(csv.size(), 96u);
+  EXPECT_EQ(csv[0].at("fit_source"), "published");
+  EXPECT_EQ(csv[0].at("spp"), "16");
+  const std::string tex = test::readText(dir / "models.tex");
+  EXPECT_NE(tex.find("\\toprule"), std::string::npos);
+  EXPECT_NE(tex.find("Microfacet E2 & 22 & 2 & 1.00"), std::string::npos) << tex;
+  EXPECT_NE(test::readText(dir / "critical_difference.svg").find("Microfacet E2 (1.00)"), std::string::npos);
+}
+
+TEST(StudyAnalysis, RowsWithoutAnImageErrorAreSkippedAndCounted) {
+  TempDir dir;
+  auto rows = syntheticStudy();
+  rows[5].rrmse.reset();
+  analyseStudy(rows, fastOptions(), dir.path());
+  const Json r = results(dir);
+  EXPECT_EQ(r["counts"]["rowsSkippedWithoutRrmse"], 1);
+  EXPECT_EQ(r["counts"]["rowsUsed"], 95);
+  EXPECT_EQ(test::readCsv(dir / "rows.csv").size(), 96u);  // still listed, with the figure empty
+}
+
+TEST(StudyAnalysis, UndefinedStatisticsAreNullWithAReasonNeverNaN) {
+  TempDir dir;
+  auto rows = syntheticStudy();
+  for (auto& r : rows) r.flip = 0.25;  // a constant column: no rank correlation with it
+  rows.resize(3 * 8);                  // three materials: too few pairs for a Wilcoxon test
+  const auto res = analyseStudy(rows, fastOptions(), dir.path());
+  const Json r = results(dir);
+  for (const Json& c : r["brdfVsImage"])
+    if (c["image"] == "flip") {
+      EXPECT_TRUE(c["pooled"]["spearman"]["estimate"].is_null());
+      EXPECT_FALSE(c["pooled"]["spearman"]["reason"].get<std::string>().empty());
+      EXPECT_TRUE(c["withinMaterial"]["kendallTauB"]["estimate"].is_null());
+    }
+  for (const Json& p : r["wilcoxon"]["pairs"]) {
+    EXPECT_TRUE(p["p"].is_null());
+    EXPECT_NE(p["reason"].get<std::string>().find("fewer than 6"), std::string::npos);
+  }
+  // Without tests nothing is significantly different: all four models form one clique.
+  ASSERT_EQ(r["wilcoxon"]["cliques"].size(), 1u);
+  EXPECT_EQ(r["wilcoxon"]["cliques"][0].size(), 4u);
+  expectNoNanOrInf(dir, res);
+}
+
+TEST(StudyAnalysis, AStudyWithoutImageErrorsStillWritesItsFilesAndSaysWhy) {
+  TempDir dir;
+  auto rows = syntheticStudy();
+  for (auto& r : rows) r.rrmse.reset();
+  const auto res = analyseStudy(rows, fastOptions(), dir.path());
+  const Json r = results(dir);
+  EXPECT_EQ(r["counts"]["rowsSkippedWithoutRrmse"], 96);
+  EXPECT_TRUE(r["friedman"]["p"].is_null());
+  EXPECT_FALSE(r["friedman"]["reason"].get<std::string>().empty());
+  EXPECT_NE(res.summary.find("96 without rRMSE skipped"), std::string::npos) << res.summary;
+  expectNoNanOrInf(dir, res);
+}
+
+TEST(StudyAnalysis, RowsThatCannotBeAStudyAreBadInput) {
+  TempDir dir;
+  auto rows = syntheticStudy();
+  rows.push_back(rows[0]);
+  rows.back().fit = "microfacet:E2:glossy";
+  rows.back().rrmse.reset();  // even a row the statistics would skip
+  const std::string twice = test::expectInputError([&] { analyseStudy(rows, fastOptions(), dir.path()); });
+  EXPECT_NE(twice.find("appears twice"), std::string::npos) << twice;
+  EXPECT_NE(twice.find("microfacet:E2:glossy"), std::string::npos) << twice;
+  rows = syntheticStudy();
+  rows[2].e1 = std::nan("");
+  EXPECT_NE(test::expectInputError([&] { analyseStudy(rows, fastOptions(), dir.path()); }).find("E1"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "results.json"));
+}
+
+TEST(StudyPerceptual, ReadsTheReleasedTables) {
+  GLOSSY_REQUIRE_SHARED("perceptual");
+  const auto data = PerceptualData::read(test::sharedDir() / "perceptual");
+  EXPECT_EQ(data.materialClass("alum-bronze"), "Metal");
+  EXPECT_EQ(data.materialClass("aventurnine"), "Dielectric");
+  EXPECT_EQ(data.materialClass("no-such-material"), "");
+  // PerceptualDistances.csv line 2: "ABC";"alum-bronze";0.216666666666667
+  EXPECT_NEAR(*data.distance("ABC", "alum-bronze"), 0.216666666666667, 1e-15);
+  EXPECT_FALSE(data.distance("ABC", "no-such-material"));
+  // Every MERL material of glossy's library has a class.
+  for (const auto& entry : std::filesystem::directory_iterator(test::libraryDir() / "merl"))
+    if (entry.path().extension() == ".toml") {
+      EXPECT_NE(data.materialClass(entry.path().stem().string()), "") << entry.path();
+    }
+}
+
+TEST(StudyPerceptual, MalformedTablesNameTheFileAndLine) {
+  TempDir dir;
+  test::writeText(dir / "MaterialType.csv", "BRDF;Type\nalum-bronze;Metal\n");
+  test::writeText(dir / "PerceptualDistances.csv", "\"METHOD\";\"BRDF\";\"DISTANCE\"\n\"ABC\";\"alum-bronze\";0.2\n\"ABC\";\"x\";nan\n");
+  std::string msg = test::expectInputError([&] { PerceptualData::read(dir.path()); });
+  EXPECT_NE(msg.find("PerceptualDistances.csv:3"), std::string::npos) << msg;
+  test::writeText(dir / "PerceptualDistances.csv", "\"METHOD\";\"BRDF\";\"DISTANCE\"\n\"ABC\";\"alum-bronze\";0.2\n");
+  test::writeText(dir / "MaterialType.csv", "BRDF;Type\nalum-bronze;Metallic\n");
+  msg = test::expectInputError([&] { PerceptualData::read(dir.path()); });
+  EXPECT_NE(msg.find("MaterialType.csv:2"), std::string::npos) << msg;
+  test::writeText(dir / "MaterialType.csv", "Material;Type\n");
+  msg = test::expectInputError([&] { PerceptualData::read(dir.path()); });
+  EXPECT_NE(msg.find("MaterialType.csv:1"), std::string::npos) << msg;
+  std::filesystem::remove(dir / "MaterialType.csv");
+  msg = test::expectInputError([&] { PerceptualData::read(dir.path()); });
+  EXPECT_NE(msg.find("MaterialType.csv"), std::string::npos) << msg;
+  // The analysis reads them before writing anything.
+  TempDir out;
+  AnalysisOptions o = fastOptions();
+  o.perceptualDir = dir.path();
+  test::expectInputError([&] { analyseStudy(syntheticStudy(), o, out.path()); });
+  EXPECT_TRUE(std::filesystem::is_empty(out.path()));
+}
+
+TEST(StudyPerceptual, TheSharedFitsAreComparedWithPeople) {
+  GLOSSY_REQUIRE_SHARED("perceptual");
+  TempDir dir;
+  AnalysisOptions o = fastOptions();
+  o.perceptualDir = test::sharedDir() / "perceptual";
+  const auto res = analyseStudy(syntheticStudy(), o, dir.path());
+  const Json r = results(dir);
+  const Json& fits = r["againstPeople"]["fits"];
+  ASSERT_EQ(fits.size(), 2u);  // ABC against both published ABC fits: the variant is not documented
+  for (const Json& f : fits) {
+    EXPECT_EQ(f["method"], "ABC");
+    EXPECT_EQ(f["materials"], 12);
+    ASSERT_EQ(f["figures"].size(), 4u);
+    EXPECT_FALSE(f["figures"][0]["spearman"]["estimate"].is_null());
+    EXPECT_FALSE(f["agreesBest"].is_null());
+  }
+  EXPECT_NE(res.summary.find("agrees best with the perceived distance"), std::string::npos) << res.summary;
+  EXPECT_TRUE(std::filesystem::exists(dir / "perceptual.svg"));
+  EXPECT_NE(test::readText(dir / "summary.md").find("Lavoué"), std::string::npos);
+  expectNoNanOrInf(dir, res);
+}
+
+}  // namespace
+}  // namespace glossy::study

@@ -1,0 +1,179 @@
+// glossy study (renderer/cli/study_command.cpp, renderer/app/study_file.h): a tiny study's outputs are the same
+// bytes whether it runs whole, in shards then --analyse, or resumed after an interruption; a bad study file
+// or destination is refused in one line before any work.
+#include "renderer/study/study_plan.h"
+#include "renderer/study/study_rows.h"
+#include "support/test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+
+using namespace glossy;
+using namespace glossy::test;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Two materials of two databases × two lightings, 16² panels at 16 spp, four panels: seconds in all.
+const std::string kTinyStudy = R"(# a tiny study (docs/study.md)
+materials = ["merl/gold-paint", "nielsen2015/bluebook"]
+
+[lightings]
+sky = { sky = true }
+grey = { constant = [0.8, 0.8, 0.9] }
+
+[scenes]
+preview = { builtin = "preview" }
+
+[settings]
+width = 16
+height = 16
+spp = 16
+seed = 7
+threads = 2
+panels = "measured,microfacet:E2,smooth:E2,cook-torrance:E2"
+
+[analysis]
+resamples = 200
+)";
+
+// Every file under `root` (relative path → bytes), but the sheets' EXRs, which record their render time.
+std::map<std::string, std::string> outputs(const fs::path& root) {
+  std::map<std::string, std::string> files;
+  for (const auto& e : fs::recursive_directory_iterator(root))
+    if (e.is_regular_file() && e.path().extension() != ".exr") files[fs::relative(e.path(), root).generic_string()] = readText(e.path());
+  return files;
+}
+
+void expectSameOutputs(const fs::path& a, const fs::path& b) {
+  const auto x = outputs(a), y = outputs(b);
+  ASSERT_FALSE(x.empty());
+  for (const auto& [file, bytes] : x) {
+    const auto it = y.find(file);
+    ASSERT_NE(it, y.end()) << file << " is in " << a << " but not in " << b;
+    EXPECT_TRUE(it->second == bytes) << file << " differs between " << a << " and " << b;
+  }
+  EXPECT_EQ(x.size(), y.size());
+}
+
+RunResult runStudy(const fs::path& file, const fs::path& out, std::vector<std::string> more = {}) {
+  std::vector<std::string> args = {"study", file.string(), "-o", out.string()};
+  args.insert(args.end(), more.begin(), more.end());
+  return runGlossy(args);
+}
+
+}  // namespace
+
+TEST(StudyCli, WholeShardedAndResumedRunsWriteTheSameBytes) {
+  TempDir tmp;
+  writeText(tmp / "tiny.toml", kTinyStudy);
+
+  const RunResult whole = runStudy(tmp / "tiny.toml", tmp / "whole");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  for (const char* s : {"sky/gold-paint", "sky/bluebook", "grey/gold-paint", "grey/bluebook"})
+    for (const char* ext : {".exr", ".png"})
+      EXPECT_TRUE(fs::is_regular_file(tmp / "whole/sheets/preview" / (std::string(s) + ext))) << s << ext;
+  ASSERT_TRUE(fs::is_directory(tmp / "whole/analysis"));
+  EXPECT_FALSE(fs::is_empty(tmp / "whole/analysis"));
+  const std::vector<study::StudyRow> rows = study::readStudyRows(tmp / "whole");
+  ASSERT_EQ(rows.size(), 2u * 2u * 3u) << "a row per model panel of every sheet";
+  EXPECT_EQ(rows.front().material, "bluebook");
+  EXPECT_EQ(rows.front().database, "Nielsen 2015");
+  EXPECT_EQ(rows.front().fitSource, "glossy") << "Nielsen's files hold glossy's fits only";
+  EXPECT_EQ(rows.front().fit, "microfacet:E2:glossy");
+  EXPECT_EQ(rows.front().label, "Microfacet E2") << "the model's label, whoever made the fit";
+  EXPECT_EQ(rows.front().lighting, "grey");
+  EXPECT_EQ(rows.back().material, "gold-paint");
+  EXPECT_EQ(rows.back().database, "MERL");
+  EXPECT_EQ(rows.back().fitSource, "published");
+  EXPECT_EQ(rows.back().fit, "cook-torrance:E2");
+  EXPECT_EQ(rows.back().fitMetric, "E2");
+  EXPECT_EQ(rows.back().sheet, "sheets/preview/sky/gold-paint.exr");
+  EXPECT_EQ(rows.back().width, 16);
+  EXPECT_EQ(rows.back().spp, 16);
+  EXPECT_EQ(rows.back().seed, 7u);
+  EXPECT_TRUE(rows.back().rrmse.has_value());
+
+  // Two shards, then the analysis: a shard renders its share and does not analyse.
+  for (const char* shard : {"0/2", "1/2"}) {
+    const RunResult r = runStudy(tmp / "tiny.toml", tmp / "sharded", {"--shard", shard});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_FALSE(fs::exists(tmp / "sharded/analysis")) << "a shard analyses nothing";
+  }
+  const RunResult analysed = runStudy(tmp / "tiny.toml", tmp / "sharded", {"--analyse"});
+  ASSERT_EQ(analysed.status, 0) << analysed.err;
+  EXPECT_TRUE(whole.out.ends_with(analysed.out)) << "the same summary after the sheets' tables:\n" << analysed.out;
+  expectSameOutputs(tmp / "whole", tmp / "sharded");
+
+  // Interrupted: one shard of three done, one sheet of it cut short; the whole run keeps the rest.
+  ASSERT_EQ(runStudy(tmp / "tiny.toml", tmp / "resumed", {"--shard", "0/3"}).status, 0);
+  std::vector<fs::path> done;
+  for (const auto& e : fs::recursive_directory_iterator(tmp / "resumed/sheets"))
+    if (e.path().extension() == ".exr") done.push_back(e.path());
+  ASSERT_FALSE(done.empty());
+  fs::resize_file(done.front(), fs::file_size(done.front()) / 2);
+  const RunResult resumed = runStudy(tmp / "tiny.toml", tmp / "resumed");
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("rendering it again"), std::string::npos) << resumed.err;
+  if (done.size() > 1) {
+    EXPECT_NE(resumed.err.find("complete, skipped"), std::string::npos) << resumed.err;
+  }
+  EXPECT_TRUE(resumed.out.ends_with(analysed.out)) << resumed.out;
+  expectSameOutputs(tmp / "whole", tmp / "resumed");
+
+  // --analyse with a sheet missing: said, not analysed.
+  fs::remove(tmp / "sharded/sheets/preview/grey/bluebook.exr");
+  const RunResult incomplete = runStudy(tmp / "tiny.toml", tmp / "sharded", {"--analyse"});
+  EXPECT_EQ(incomplete.status, 1);
+  EXPECT_NE(incomplete.err.find("1 of 4 sheets are not complete"), std::string::npos) << incomplete.err;
+}
+
+// Each bad study file fails in one line naming the file and the key, before any folder is made.
+TEST(StudyCli, BadStudyFilesAreRefusedBeforeAnyWork) {
+  TempDir tmp;
+  const std::string head = "materials = \"merl/gold-paint\"\n";
+  const std::string sky = "[lightings]\nsky = { sky = true }\n";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {head + "colour = 1\n" + sky, "colour: unknown key"},
+      {head + sky + "[settings]\nsamples = 4\n", "settings.samples: unknown key"},
+      {head + sky + "[settings]\nspp = nan\n", "settings.spp: must be a whole number"},
+      {head + sky + "[settings]\nspp = inf\n", "settings.spp: must be a whole number"},
+      {head + sky + "[settings]\nwidth = 0\n", "settings.width: must be a whole number in [8, 16384]"},
+      {head + sky + "[settings]\nwidth = 16384\nheight = 16384\n", "--width"},
+      {head + sky + "[settings]\ntarget-error = -1.0\n", "settings.target-error"},
+      {head + sky + "[settings]\npanels = \"measured,nonsense:E2\"\n", "settings.panels"},
+      {"materials = \"merl/no-such-*\"\n" + sky, "'merl/no-such-*' matches no material"},
+      {"materials = [\"../merl/*\"]\n" + sky, "is not a glob over the library"},
+      {"materials = [\"merl/[ab\"]\n" + sky, "is not a glob over the library"},
+      {head, "lightings: give at least one"},
+      {head + "[lightings]\nstudio = { env = \"no-such.hdr\" }\n", "lightings.studio.env: no such file"},
+      {head + "[lightings]\n\"../up\" = { sky = true }\n", "is not a plain name"},
+      {head + "[lightings]\ngrey = { constant = -1.0 }\n", "lightings.grey.constant: radiance must be"},
+      {head + "[lightings]\ngrey = { constant = [1.0, inf, 1.0] }\n", "lightings.grey.constant: radiance must be"},
+      {head + "[lightings]\nboth = { sky = true, constant = 1.0 }\n", "lightings.both: give exactly one"},
+      {head + "[lightings]\nsky = { sky = true, rotate = 400 }\n", "lightings.sky.rotate: must be a finite number in [-360, 360]"},
+      {head + sky + "[scenes]\nbox = { builtin = \"box\" }\n", "scenes.box.builtin: 'box' is not a built-in scene"},
+      {head + sky + "[scenes]\nmine = { gltf = \"missing.gltf\" }\n", "scenes.mine.gltf: no such file"},
+      {head + "perceptual = \"no-such-folder\"\n" + sky, "perceptual: no such folder"},
+      {head + sky + "[analysis]\nreference = \"Nobody E9\"\n", "analysis.reference"},
+      {"materials = 3\n" + sky, "materials: must be a glob"},
+      {"materials = [\n", "TOML syntax error"},
+  };
+  for (const auto& [text, mention] : cases) {
+    SCOPED_TRACE(text);
+    writeText(tmp / "bad.toml", text);
+    const RunResult r = runStudy(tmp / "bad.toml", tmp / "out");
+    expectOneLineError(r, "bad.toml");
+    expectOneLineError(r, mention);
+    EXPECT_FALSE(fs::exists(tmp / "out")) << "nothing is made for a bad study";
+  }
+  // A folder of someone else's files is not a study's output.
+  writeText(tmp / "good.toml", head + sky);
+  fs::create_directories(tmp / "theirs");
+  writeText(tmp / "theirs/notes.txt", "mine");
+  expectOneLineError(runStudy(tmp / "good.toml", tmp / "theirs"), "not a study's output");
+  expectOneLineError(runStudy(tmp / "good.toml", tmp / "out", {"--shard", "0/2", "--analyse"}), "--analyse");
+}
