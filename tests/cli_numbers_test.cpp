@@ -53,7 +53,7 @@ std::vector<Case> cases(const TempDir& tmp) {
   all.push_back({sample, "-n", with(nonFinite, {"-1", "1e300", "2000000000"})});
   all.push_back({fit, "--threads", with(nonFinite, {"4097", "-1", "1e8"})});
   // A study's numbers are in its file (StudyCli); its command line has --threads.
-  const std::vector<std::string> study = {"study", (sourceDir() / "studies/tiny.toml").string(), "-o", out};
+  const std::vector<std::string> study = {"study", (sourceDir() / "scenes/studies/tiny.toml").string(), "-o", out};
   all.push_back({study, "--threads", {"nan", "4097"}});
   all.push_back({fit, "--starts", with(nonFinite, {"0", "1e308"})});
   all.push_back({fit, "--max-iterations", with(nonFinite, {"0", "1e308"})});
