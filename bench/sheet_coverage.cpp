@@ -4,6 +4,8 @@
 // (half-width / 1.96); for HDR-ꟻLIP, whose interval is the noise's spread at this spp, the same against the
 // figure's mean over the seeds. The panels' replicates are cached per seed (--cache), so that a change to
 // the estimator (comparison.cpp) is measured again on the same renders without rendering them again.
+// COVERAGE_DEBUG_PANEL=k prints analytic panel k's figures seed by seed; the last column counts the seeds
+// whose r* interval has fewer than COVERAGE_DOF (default 10) degrees of freedom, and how many of those cover.
 #include "materials/merl/merl_table.h"
 #include "materials/nbrdf/neural_brdf.h"
 #include "renderer/sheet/sheet.h"
@@ -53,7 +55,7 @@ Render fromSheet(const Sheet& sheet) {
   return r;
 }
 
-void save(const Render& r, const std::filesystem::path& path, int size) {
+void save(const Render& r, const std::filesystem::path& path) {
   std::ofstream o(path.string() + ".tmp", std::ios::binary);
   const uint64_t panels = r.panels.size(), k = r.panels.front().size();
   o.write(reinterpret_cast<const char*>(&panels), sizeof panels);
@@ -63,7 +65,6 @@ void save(const Render& r, const std::filesystem::path& path, int size) {
   put(o, r.mask), put(o, r.flip), put(o, r.flipLo), put(o, r.flipHi);
   o.close();
   std::filesystem::rename(path.string() + ".tmp", path);
-  (void)size;
 }
 
 Render load(const std::filesystem::path& path, int size) {
@@ -136,7 +137,7 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     const Render r = fromSheet(renderSheet(scene, m, measured, "", s));
     renderSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    save(r, path, size);
+    save(r, path);
     return r;
   };
 
@@ -146,7 +147,6 @@ int main(int argc, char** argv) {
   std::vector<int> rCover(n), lCover(n), fewDof(n), fewDofCovered(n);
   const double dofWarning = std::getenv("COVERAGE_DOF") ? std::atof(std::getenv("COVERAGE_DOF")) : 10.0;
   std::vector<std::vector<double>> flips(n), flipLo(n), flipHi(n);
-  int closestWhileNoisy = 0;
   for (int seed = 1; seed <= seeds; ++seed) {
     const Render render = get(spp, uint32_t(seed));
     const Comparison c = compare(render);
@@ -170,7 +170,6 @@ int main(int argc, char** argv) {
         flips[p].push_back(render.flip[p]), flipLo[p].push_back(render.flipLo[p]), flipHi[p].push_back(render.flipHi[p]);
       }
     }
-    (void)closestWhileNoisy;
   }
   std::printf("%s %d² %d spp, %d seeds, converged %d spp (render %.0f s)\n", material.c_str(), size, spp, seeds, convergedSpp,
               renderSeconds);
