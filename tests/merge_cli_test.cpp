@@ -130,11 +130,21 @@ TEST(MergeCli, SheetsFiguresInOneTable) {
                  (tmp / "out/errors.json").string()});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = readCsv(tmp / "out/errors.csv");
-  ASSERT_EQ(rows.size(), 14u) << "2 sheets × 7 panels";
+  ASSERT_EQ(rows.size(), 16u) << "2 sheets × (7 panels + the noise floor)";
   const report::SheetRecord chrome = report::readSheetRecord(tmp / "sheets/chrome.exr");
   size_t checked = 0;
+  std::string warning;
+  for (const std::string& w : chrome.warnings) warning.append(warning.empty() ? "" : "; ").append(w);
+  ASSERT_FALSE(warning.empty()) << "8 spp on 16² panels: noise swamps the figures, the sheet warns";
+  ASSERT_TRUE(chrome.noiseFloor);
   for (const auto& row : rows) {
-    if (row.at("material") != "chrome" || row.at("panel") == "measured") continue;
+    if (row.at("material") != "chrome") continue;
+    EXPECT_EQ(row.at("warning"), warning);
+    if (row.at("panel") == "noise_floor") {
+      EXPECT_EQ(std::stod(row.at("relative_rmse_noisy")), *chrome.noiseFloor->relativeRmseNoisy);
+      EXPECT_EQ(std::stod(row.at("flip")), *chrome.noiseFloor->flip.value);
+    }
+    if (row.at("panel") == "measured" || row.at("panel") == "noise_floor") continue;
     const report::PanelRecord* p = chrome.panel(row.at("panel"));
     ASSERT_TRUE(p);
     ASSERT_TRUE(p->relativeRmse.value);
@@ -146,12 +156,14 @@ TEST(MergeCli, SheetsFiguresInOneTable) {
   EXPECT_EQ(checked, 6u);
   // The verdict, the last column, names several models in a tie: quoted, as CSV quotes a field with commas.
   const std::string verdict = chrome.verdict.find(',') == std::string::npos ? chrome.verdict : "\"" + chrome.verdict + "\"";
-  EXPECT_NE(readText(tmp / "out/errors.csv").find(",0," + verdict + "\n"), std::string::npos) << chrome.verdict;
+  EXPECT_NE(readText(tmp / "out/errors.csv").find(",0," + verdict + ","), std::string::npos) << chrome.verdict;
   const nlohmann::json doc = nlohmann::json::parse(readText(tmp / "out/errors.json"));
   ASSERT_EQ(doc["sheets"].size(), 2u);
   EXPECT_EQ(doc["sheets"][1]["material"], "chrome");
   EXPECT_EQ(doc["sheets"][1]["panels"].size(), 7u);
   EXPECT_EQ(doc["sheets"][1]["verdict"], chrome.verdict);
+  EXPECT_EQ(doc["sheets"][1]["warnings"], chrome.warnings);
+  EXPECT_EQ(doc["sheets"][1]["noise_floor"]["relative_rmse_noisy"], *chrome.noiseFloor->relativeRmseNoisy);
   EXPECT_TRUE(doc["sheets"][1]["panels"][0]["relative_rmse"].is_null()) << "the measured panel has no error figure";
 }
 

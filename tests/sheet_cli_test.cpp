@@ -4,6 +4,7 @@
 #include "renderer/image/colour_maps.h"
 #include "renderer/image/exr_image.h"
 #include "renderer/sheet/error_maps.h"
+#include "renderer/sheet/sheet.h"
 #include "materials/params/material_file.h"
 #include "tests/support/test_support.h"
 
@@ -134,7 +135,8 @@ TEST(CliSheet, ErrorMapsAreTheRelativeDifferenceOfThePanelsShownInThePngsSecondR
   const RgbImage png = readRgbImage(tmp / "alum-bronze.png");
   ASSERT_EQ(png.width, 7 * w);
   ASSERT_GT(png.height, 2 * h) << "the panels, their labels, and the row of maps";
-  const int mapTop = png.height - h;
+  ASSERT_EQ(png.height, sheetPngSize(w, h, 7).heightWithMaps);
+  const int mapTop = sheetPngSize(w, h, 7).height;  // the maps' row, under the labels and above the note strip
   size_t checked = 0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {

@@ -123,10 +123,12 @@ int runMergeSheets(const MergeOptions& o) {
 
   std::string csv =
       "material,panel,label,fit,empty,spp,relative_rmse,relative_rmse_lo,relative_rmse_hi,luminance_ratio,luminance_ratio_lo,"
-      "luminance_ratio_hi,flip,flip_lo,flip_hi,relative_rmse_noisy,E1,E2,closest,verdict\n";
+      "luminance_ratio_hi,flip,flip_lo,flip_hi,relative_rmse_noisy,E1,E2,closest,verdict,warning\n";
   nlohmann::json doc = {{"sheets", nlohmann::json::array()}};
   for (const report::SheetRecord& s : sheets) {
     const std::vector<std::string> closest = s.closestLayers();
+    std::string warning;  // the sheet's warnings on one line
+    for (const std::string& w : s.warnings) warning.append(warning.empty() ? "" : "; ").append(w);
     nlohmann::json panels = nlohmann::json::array();
     for (const report::PanelRecord& p : s.panels) {
       const bool isClosest = std::find(closest.begin(), closest.end(), p.layer) != closest.end();
@@ -135,7 +137,7 @@ int runMergeSheets(const MergeOptions& o) {
              number(p.relativeRmse.hi) + "," + number(p.luminanceRatio.value) + "," + number(p.luminanceRatio.lo) + "," +
              number(p.luminanceRatio.hi) + "," + number(p.flip.value) + "," + number(p.flip.lo) + "," + number(p.flip.hi) + "," +
              number(p.relativeRmseNoisy) + "," + number(p.e1) + "," + number(p.e2) + "," + (isClosest ? "1" : "0") + "," +
-             csvField(s.verdict) + "\n";
+             csvField(s.verdict) + "," + csvField(warning) + "\n";
       panels.push_back({{"panel", p.layer},
                         {"label", p.label},
                         {"fit", p.fit},
@@ -151,8 +153,25 @@ int runMergeSheets(const MergeOptions& o) {
                         {"E2", jsonNumber(p.e2)},
                         {"closest", isClosest}});
     }
-    doc["sheets"].push_back({{"material", s.name}, {"verdict", s.verdict}, {"measured", s.measured}, {"spp", s.spp},
-                             {"scene", s.scene}, {"env", s.env}, {"panels", std::move(panels)}});
+    // The noise-floor row: the measured panel against an independent render of itself (docs/sheets.md).
+    nlohmann::json floor = nullptr;
+    if (const auto& f = s.noiseFloor) {
+      csv += csvField(s.name) + ",noise_floor,noise floor,measured,0," + csvField(s.spp) + "," + number(f->relativeRmse.value) + "," +
+             number(f->relativeRmse.lo) + "," + number(f->relativeRmse.hi) + "," + number(f->luminanceRatio.value) + "," +
+             number(f->luminanceRatio.lo) + "," + number(f->luminanceRatio.hi) + "," + number(f->flip.value) + "," +
+             number(f->flip.lo) + "," + number(f->flip.hi) + "," + number(f->relativeRmseNoisy) + ",0,0,0," + csvField(s.verdict) +
+             "," + csvField(warning) + "\n";
+      floor = {{"relative_rmse", jsonNumber(f->relativeRmse.value)},
+               {"relative_rmse_ci", f->relativeRmse.lo ? nlohmann::json{*f->relativeRmse.lo, *f->relativeRmse.hi} : nlohmann::json(nullptr)},
+               {"luminance_ratio", jsonNumber(f->luminanceRatio.value)},
+               {"luminance_ratio_ci", f->luminanceRatio.lo ? nlohmann::json{*f->luminanceRatio.lo, *f->luminanceRatio.hi} : nlohmann::json(nullptr)},
+               {"flip", jsonNumber(f->flip.value)},
+               {"flip_ci", f->flip.lo ? nlohmann::json{*f->flip.lo, *f->flip.hi} : nlohmann::json(nullptr)},
+               {"relative_rmse_noisy", jsonNumber(f->relativeRmseNoisy)}};
+    }
+    doc["sheets"].push_back({{"material", s.name}, {"verdict", s.verdict}, {"warnings", s.warnings}, {"measured", s.measured},
+                             {"spp", s.spp}, {"scene", s.scene}, {"env", s.env}, {"panels", std::move(panels)},
+                             {"noise_floor", std::move(floor)}});
   }
   for (const auto& [path, text] : {std::pair{o.csv, csv}, std::pair{o.json, doc.dump(1) + "\n"}}) {
     if (path.empty()) continue;

@@ -308,6 +308,14 @@ with its interval (flip, flip_ci). A figure the sheet cannot give is None.
       .def_property_readonly("flip_noise_floor", [](const PySheet& x) {
              return optionalNumber(x.made.sheet.flipNoiseFloor >= 0.0, x.made.sheet.flipNoiseFloor);
            }, "ꟻLIP between the halves of the measured panel's samples: what noise alone scores.")
+      .def_property_readonly("noise_floor", [](const PySheet& x) {
+             const PanelRender& floor = x.made.sheet.noiseFloor;
+             return floor.empty ? py::object(py::none()) : py::object(panelFigures(x.made.sheet, floor));
+           }, "The noise-floor row: the measured panel against an independent render of itself (another seed, the same "
+              "samples), with every figure of `figures`; None without a measured panel.")
+      .def_property_readonly("warnings", [](const PySheet& x) { return x.made.sheet.warnings; },
+                             "What makes the figures less than they seem (e.g. the intervals may be too narrow); while one "
+                             "stands, the verdict names no model closest.")
       .def("save", [](const PySheet& x, const py::object& path) {
              guarded([&] {
                const std::string p = pathText(path);

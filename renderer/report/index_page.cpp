@@ -149,7 +149,9 @@ std::string indexPage(const std::vector<SheetRecord>& sheets) {
     else
       h << "<td class=\"thumb\">–</td>";
     h << "<td class=\"name\" data-value=\"" << escapeHtml(s.name) << "\" title=\"" << escapeHtml(withoutFolders(s.measured)) << "\"><a href=\"" << page << "\">" << escapeHtml(s.name) << "</a></td>";
-    h << "<td class=\"text verdict\">" << escapeHtml(s.verdict.empty() ? "–" : s.verdict) << "</td>";
+    h << "<td class=\"text verdict\">" << escapeHtml(s.verdict.empty() ? "–" : s.verdict);
+    for (const std::string& w : s.warnings) h << "<br><span class=\"warning\">warning: " << escapeHtml(w) << "</span>";
+    h << "</td>";
     const std::vector<std::string> closest = s.closestLayers();
     for (const std::string& layer : layers) {
       const PanelRecord* p = s.panel(layer);

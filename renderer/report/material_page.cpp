@@ -47,7 +47,9 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
     h << "<a href=\"" << kRoot << layout::materialPage(previous->name) << "\" rel=\"prev\">← " << escapeHtml(previous->name) << "</a>";
   if (next) h << "<a href=\"" << kRoot << layout::materialPage(next->name) << "\" rel=\"next\">" << escapeHtml(next->name) << " →</a>";
   h << "</nav>\n<h1>" << escapeHtml(s.name) << "</h1>\n<p class=\"verdict\">" << escapeHtml(s.verdict.empty() ? "no verdict" : s.verdict)
-    << "</p>\n<dl class=\"meta\">\n";
+    << "</p>\n";
+  for (const std::string& w : s.warnings) h << "<p class=\"warning\">Warning: " << escapeHtml(w) << "</p>\n";
+  h << "<dl class=\"meta\">\n";
   metaRow(h, "measured data", withoutFolders(s.measured));
   fileRow(h, "material file", s.materialFile);
   fileRow(h, "scene", s.scene);
@@ -133,6 +135,11 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
       << withInterval(p.luminanceRatio) << "</td><td>" << withInterval(p.flip) << "</td><td>" << shortNumber(p.e1) << "</td><td>"
       << shortNumber(p.e2) << "</td><td class=\"note\">" << escapeHtml(note) << "</td></tr>\n";
   }
+  if (const auto& f = s.noiseFloor)
+    h << "<tr class=\"noise-floor\"><th class=\"text\" scope=\"row\">noise floor</th><td>" << withInterval(f->relativeRmse) << "</td><td>"
+      << shortNumber(f->relativeRmseNoisy) << "</td><td>" << withInterval(f->luminanceRatio) << "</td><td>" << withInterval(f->flip)
+      << "</td><td></td><td></td><td class=\"note\">the measured panel against an independent render of itself: what noise alone "
+         "shows</td></tr>\n";
   h << "</tbody>\n</table></div>\n<p class=\"muted\">Over the object's pixels. rel. RMSE has the render noise taken out (from "
        "independent replicates), the noisy one keeps it; \xEA\x9F\xBBLIP includes the noise, which raises it, and its interval is the "
        "noise's spread";

@@ -45,6 +45,16 @@ class Header {
     if (v && !std::isfinite(*v)) v.reset();
     return v;
   }
+  // Text of several lines, each made printable; no lines when absent.
+  std::vector<std::string> lines(const std::string& name) const {
+    std::vector<std::string> out;
+    const OIIO::ParamValue* p = spec_.find_attribute(name);
+    if (!p) return out;
+    std::istringstream in(p->get_string());
+    for (std::string line; std::getline(in, line) && out.size() < 100;)
+      if (const std::string l = printableLine(line, 2000); !l.empty()) out.push_back(l);
+    return out;
+  }
   // "lo hi"; nullopt unless both are finite numbers.
   std::optional<std::pair<double, double>> interval(const std::string& name) const {
     std::istringstream in(text(name));
@@ -226,6 +236,10 @@ SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::file
   r.pngExposure = h.number("glossy:pngExposure").value_or(0.0);
   if (std::abs(r.pngExposure) > 64.0) h.fail("glossy:pngExposure out of range");
   r.flipNoiseFloor = h.number("glossy:flipNoiseFloor");
+  r.warnings = h.lines("glossy:warnings");
+  if (const std::optional<double> noisy = h.number("glossy:noiseFloor.relativeRmseNoisy"))
+    r.noiseFloor = NoiseFloorRecord{h.figure("glossy:noiseFloor.relativeRmse"), h.figure("glossy:noiseFloor.luminanceRatio"),
+                                    h.figure("glossy:noiseFloor.flip"), noisy};
   r.settings = sheetSettings(spec);
 
   const std::vector<std::string> layers = split(names, ',');

@@ -34,6 +34,13 @@ struct PanelRecord {
   bool isMeasured() const { return fit == "measured"; }
 };
 
+// The sheet's noise-floor row (glossy:noiseFloor.*): the measured panel against an independent render of
+// itself, what each figure shows of noise alone.
+struct NoiseFloorRecord {
+  Figure relativeRmse, luminanceRatio, flip;
+  std::optional<double> relativeRmseNoisy;
+};
+
 // One setting a sheet was made with, as the report compares and shows it.
 struct SheetSetting {
   std::string key, label, value;  // "size", "panel size", "256x256"
@@ -51,6 +58,11 @@ struct SheetRecord {
   std::string env, scene, spp;
   double pngExposure = 0.0;
   std::optional<double> flipNoiseFloor;  // glossy:flipNoiseFloor: the ꟻLIP render noise alone gives
+  std::optional<NoiseFloorRecord> noiseFloor;  // absent in sheets before it (and without a measured panel)
+  // glossy:warnings, one per line: what makes the figures less than they seem (e.g. "noise is up to 93 % of
+  // the noisy figure's square: the intervals may be too narrow; …"). While one stands the verdict names no
+  // model closest. Empty: none (or a sheet from before warnings were stored).
+  std::vector<std::string> warnings;
   std::vector<PanelRecord> panels;  // in grid order
   // What its pixels depend on besides the material (glossy:settings): scene, lighting, panel size, spp,
   // seed, ... — the figures of two sheets compare only when these agree.

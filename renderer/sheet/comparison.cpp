@@ -32,6 +32,28 @@ double twoSidedQuantile(double confidence) {
   return 0.5 * (lo + hi);
 }
 
+// The same for Student's t with ν (real, ≥ 1) degrees of freedom: P(|T| ≤ t) from its density integrated by
+// Simpson's rule from 0, then bisection. Beyond 1000 degrees of freedom the normal's.
+double studentQuantile(double confidence, double nu) {
+  const double z = twoSidedQuantile(confidence);
+  if (!(nu < 1000.0)) return z;
+  const double logNorm = std::lgamma(0.5 * (nu + 1.0)) - std::lgamma(0.5 * nu) - 0.5 * std::log(nu * std::numbers::pi);
+  const auto density = [&](double t) { return std::exp(logNorm - 0.5 * (nu + 1.0) * std::log1p(t * t / nu)); };
+  const auto central = [&](double t) {  // P(|T| ≤ t)
+    constexpr int n = 2000;
+    const double h = t / n;
+    double sum = density(0.0) + density(t);
+    for (int i = 1; i < n; ++i) sum += (i % 2 ? 4.0 : 2.0) * density(i * h);
+    return 2.0 * sum * h / 3.0;
+  };
+  double lo = z, hi = 1000.0;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (central(mid) < confidence ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 // Sums over the compared pixels of per-pixel statistics. Series 0 is the measured panel, series 1 + f the
 // f-th panel that has images: its difference from the measured panel in the U-statistics, the panel itself
 // in the luminance sums.
@@ -39,13 +61,14 @@ struct Totals {
   size_t series;
   std::vector<double> u;         // Σ U: B, then each A
   std::vector<double> ratioVar;  // Σ Var((U_s − R_s U_0) / B) per pixel, clamped at 0 (K ≥ 4, second pass)
+  std::vector<double> jack, jackSquared;  // Σ v, Σ v² of the same per-pixel variances by the jackknife (v ≥ 0)
   std::vector<double> diffVar;   // Σ Var(U_s − U_t) per pixel, clamped at 0, series × series (likewise)
   std::vector<double> squared;   // Σ |m̄|², then each Σ |p̄ − m̄|²
   std::vector<double> lum;       // Σ lum(m̄), then each Σ lum(p̄)
   std::vector<double> lumVar;    // Σ Var lum(·̄), in the same order
   std::vector<double> lumCov;    // Σ Cov(lum(·̄), lum(m̄)), in the same order
   explicit Totals(size_t s)
-      : series(s), u(s), ratioVar(s), diffVar(s * s), squared(s), lum(s), lumVar(s), lumCov(s) {}
+      : series(s), u(s), ratioVar(s), jack(s), jackSquared(s), diffVar(s * s), squared(s), lum(s), lumVar(s), lumCov(s) {}
   double diff(size_t s, size_t t) const { return diffVar[s * series + t]; }
 };
 
@@ -74,13 +97,17 @@ class PixelReplicates {
 
   // Second pass, once the totals give each ratio R_s = A_s / B (K ≥ 4): the variances the intervals and
   // the verdict need, each a quadratic form of the pixel's covariance estimate, added to the pixel's block
-  // (block: its ratioVar and diffVar, laid out as Totals').
-  void addVariances(const Totals& t, double* ratioVar, double* diffVar) {
+  // (block: its ratioVar and diffVar, laid out as Totals'); and the ratio's variance by the jackknife,
+  // never negative, for its degrees of freedom (t.jack, t.jackSquared).
+  void addVariances(Totals& t, double* ratioVar, double* diffVar) {
     computeUStatistics();
     const double b = t.u[0];
     for (size_t s = 1; s < series_; ++s) {
       const double r = t.u[s] / b;
       ratioVar[s] += (cov(s, s) - 2.0 * r * cov(s, 0) + r * r * cov(0, 0)) / (b * b);
+      const double v = (jackknifeCov(s, s) - 2.0 * r * jackknifeCov(s, 0) + r * r * jackknifeCov(0, 0)) / (b * b);
+      t.jack[s] += v;
+      t.jackSquared[s] += v * v;
       for (size_t q = s + 1; q < series_; ++q) {
         const double v = cov(s, s) + cov(q, q) - 2.0 * cov(s, q);
         diffVar[s * series_ + q] += v;
@@ -148,6 +175,19 @@ class PixelReplicates {
     }
     const double products = total_[s] * total_[r] - 4.0 * rows + 2.0 * pairs;
     return u_[s] * u_[r] - products / quadruples;
+  }
+
+  // The delete-one-replicate jackknife's (co)variance of U_s and U_r: biased up where noise dominates, but
+  // positive semi-definite, so its quadratic forms weigh each pixel's share of a variance. U without
+  // replicate a is (F − 2 F_a) / ((K − 1)(K − 2)), F the sum over ordered pairs and F_a replicate a's row.
+  double jackknifeCov(size_t s, size_t r) const {
+    const double k = k_, norm = (k - 1.0) * (k - 2.0);
+    const auto without = [&](size_t q, int a) { return (total_[q] - 2.0 * rowSum_[q * k_ + a]) / norm; };
+    double meanS = 0.0, meanR = 0.0;
+    for (int a = 0; a < k_; ++a) meanS += without(s, a) / k, meanR += without(r, a) / k;
+    double sum = 0.0;
+    for (int a = 0; a < k_; ++a) sum += (without(s, a) - meanS) * (without(r, a) - meanR);
+    return (k - 1.0) / k * sum;
   }
 
   double& gram(size_t s, int j, int i) { return gram_[(s * k_ + j) * k_ + i]; }
@@ -310,7 +350,12 @@ Comparison compareToMeasured(const std::vector<std::vector<RgbImage>>& panels, c
 
     fig.hasCi = k >= 4;
     if (!fig.hasCi) continue;
-    const double halfRatio = z * std::sqrt(totals.ratioVar[s]);
+    // Welch–Satterthwaite: a sum of per-pixel variances, each from K − 1 degrees of freedom, has
+    // ν = (K − 1) (Σ v)² / Σ v² of them, few when a handful of pixels carry the variance (a sharp highlight
+    // a few pixels wide, a rare bright path): the interval then takes Student's t for ν, not the normal z.
+    fig.relativeRmseDof = totals.jackSquared[s] > 0.0 ? (k - 1.0) * totals.jack[s] * totals.jack[s] / totals.jackSquared[s]
+                                                      : std::numeric_limits<double>::infinity();
+    const double halfRatio = studentQuantile(confidence, fig.relativeRmseDof) * std::sqrt(totals.ratioVar[s]);
     fig.relativeRmseCi = {std::sqrt(std::max(0.0, ratio - halfRatio)), std::sqrt(std::max(0.0, ratio + halfRatio))};
     const double l = fig.luminanceRatio, lumTotal = totals.lum[0];
     const double varL = (totals.lumVar[s] - 2.0 * l * totals.lumCov[s] + l * l * totals.lumVar[0]) / (lumTotal * lumTotal);

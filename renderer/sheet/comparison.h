@@ -23,7 +23,10 @@
 // variance each interval and each verdict comparison needs is summed over 16 × 16-pixel blocks and each
 // block's sum clamped at 0 (comparison.cpp says why blocks), which can only widen the intervals.
 // Intervals follow by the delta method on the ratios (R = A / B: Var R ≈ (Var A − 2R Cov(A, B) + R² Var B) / B²;
-// the r* interval is the square root of R's, clamped at 0, so it is asymmetric).
+// the r* interval is the square root of R's, clamped at 0, so it is asymmetric). R's takes Student's t with
+// the Welch–Satterthwaite degrees of freedom of its sum over pixels (each pixel's share weighed by the
+// jackknife, which is never negative): where one sharp highlight's few pixels carry the variance, the
+// estimate of that variance rests on a few times K − 1 values and z would understate the spread.
 //
 // Verdict: all panels share B, so the smallest A is the smallest r*. That model is named closest only if
 // every other model's A exceeds it by more than z standard errors of the difference (estimated per pixel
@@ -56,6 +59,9 @@ struct PanelFigures {
 
   bool hasCi = false;               // available and K ≥ 4
   Interval relativeRmseCi, luminanceRatioCi;
+  // The r* interval's degrees of freedom (Welch–Satterthwaite over the pixels); few say that a handful of
+  // pixels carry its variance and that the interval may be too narrow (set with hasCi).
+  double relativeRmseDof = 0.0;
 };
 
 struct Verdict {

@@ -117,6 +117,26 @@ std::string paramsText(const Fit& fit) {
 
 }  // namespace
 
+std::vector<std::string> figureWarnings(const std::vector<PanelFigures>& figures) {
+  std::vector<std::string> warnings;
+  if (const double share = noiseShare(figures); share > kNoiseDominates)
+    warnings.push_back(formatted("noise is up to %.0f %% of the noisy figure's square: the intervals may be too narrow; render more samples",
+                                 100.0 * share));
+  return warnings;
+}
+
+Verdict verdictUnderWarnings(Verdict verdict, const std::vector<std::string>& warnings) {
+  // A tie claims no model; one model named closest rests on intervals a warning says may be too narrow.
+  if (warnings.empty() || verdict.models.size() != 1) return verdict;
+  return {{}, "no verdict: the intervals may be too narrow (warning: " + warnings.front() + ")"};
+}
+
+uint32_t noiseFloorSeed(uint32_t seed) {
+  // A fixed odd multiplier and offset: a bijection, so distinct sheets' seeds give distinct floors' seeds,
+  // and none is its own.
+  return seed * 0x9E3779B1u + 0x7F4A7C15u;
+}
+
 const PanelRender* Sheet::measured() const {
   for (const PanelRender& p : panels)
     if (p.panel.fit.empty()) return &p;
@@ -146,6 +166,7 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
                   const std::string& measuredNote, const SheetSettings& settings) {
   Sheet sheet;
   sheet.material = material.name;
+  sheet.seed = settings.seed;
   const int w = settings.width, h = settings.height;
 
   sheet.objectMask.resize(size_t(w) * size_t(h));
@@ -209,8 +230,10 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     figures = m && !m->empty ? compareToMeasured(analytic, m->replicates, sheet.objectMask) : Comparison{};
     widest = figures.widestHalfWidth();
   };
+  // The scene of the measured panel, rendered once more for the noise-floor row.
+  const auto measuredScene = std::find_if(rendered.begin(), rendered.end(), [&](size_t k) { return sheet.panels[k].panel.fit.empty(); });
   if (settings.control && settings.secondsPerPanel <= 0.0 && settings.targetError <= 0.0 && !scenes.empty())
-    settings.control->total = uint64_t(sheet.replicates) * renderTiles(w, h);
+    settings.control->total = uint64_t(sheet.replicates) * renderTiles(w, h) * (measuredScene != rendered.end() ? 2 : 1);
   for (int n; !scenes.empty() && (n = plan.next(done, sheet.seconds, lastPass, widest, noisy())) > 0;) {
     const auto passStart = std::chrono::steady_clock::now();
     for (int j = 0; j < sheet.replicates; ++j) {
@@ -246,7 +269,29 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
   sheet.widestHalfWidth = widest;
   sheet.spp = sheet.replicates * done;
   sheet.objectShare = sheet.spp > 0 ? double(objectPaths) / (double(sheet.spp) * w * h) : 0.0;
-  sheet.verdict = figures.verdict;
+  sheet.warnings = figureWarnings(figures.panels);
+  sheet.verdict = verdictUnderWarnings(figures.verdict, sheet.warnings);
+
+  // The noise-floor row: the measured panel again, from another seed, with the samples of each replicate.
+  if (measuredScene != rendered.end() && done > 0) {
+    PanelRender& floor = sheet.noiseFloor;
+    floor.panel = sheet.panels[*measuredScene].panel;
+    floor.panel.label = "noise floor";
+    floor.note = "the measured panel against an independent render of itself";
+    floor.empty = false;
+    floor.brdfE1 = floor.brdfE2 = 0.0;  // the measured BRDF against itself
+    floor.image = RgbImage(w, h);
+    const std::vector<RenderScene> alone = {scenes[size_t(measuredScene - rendered.begin())]};
+    for (int j = 0; j < sheet.replicates; ++j) {
+      RenderSettings r = settings;
+      r.seed = noiseFloorSeed(settings.seed), r.spp = done, r.firstSample = j * done, r.progress = false;
+      RenderStats stats;
+      floor.replicates.push_back(std::move(renderPanels(alone, *scene.camera, r, stats).front()));
+      if (settings.control && settings.control->cancelRequested()) throw Cancelled();
+    }
+    const Comparison self = compareToMeasured({floor.replicates}, sheet.panels[*measuredScene].replicates, sheet.objectMask);
+    floor.figures = self.panels.front();
+  }
   sheet.skippedPixels = figures.skippedPixels;
 
   // Panel images; the figures go to the analytic panels in order, the verdict's indices to the grid's.
@@ -273,6 +318,14 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     });
     if (std::any_of(sheet.panels.begin(), sheet.panels.end(), [](const PanelRender& p) { return p.maps.available; }))
       sheet.flipNoiseFloor = flipNoiseFloor(m->replicates, sheet.objectMask);
+    if (!sheet.noiseFloor.empty && sheet.noiseFloor.figures.compared)
+      sheet.noiseFloor.maps = errorMaps(sheet.noiseFloor.replicates, m->replicates, sheet.objectMask);
+  }
+
+  for (size_t i = 0; i < sheet.noiseFloor.image.pixels.size(); ++i) {
+    double sum = 0.0;
+    for (const RgbImage& r : sheet.noiseFloor.replicates) sum += r.pixels[i];
+    sheet.noiseFloor.image.pixels[i] = float(sum / double(sheet.noiseFloor.replicates.size()));
   }
 
   sheet.grid = RgbImage(w * int(sheet.panels.size()), h);
@@ -349,6 +402,28 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
                                  "panel's samples, what noise alone shows",
                                  kRelativeDifferenceRange, FlipSettings{}.pixelsPerDegree)});
   if (sheet.flipNoiseFloor >= 0.0) metadata.push_back({"glossy:flipNoiseFloor", float(sheet.flipNoiseFloor)});
+  // The noise-floor row, keyed like a panel's figures.
+  if (const PanelRender& floor = sheet.noiseFloor; !floor.empty && floor.figures.compared) {
+    const PanelFigures& f = floor.figures;
+    metadata.push_back({"glossy:noiseFloor.seed", formatted("%u", noiseFloorSeed(sheet.seed))});
+    metadata.push_back({"glossy:noiseFloor.relativeRmseNoisy", float(f.noisyRelativeRmse)});
+    metadata.push_back({"glossy:noiseFloor.luminanceRatio", float(f.luminanceRatio)});
+    if (f.available) metadata.push_back({"glossy:noiseFloor.relativeRmse", float(f.relativeRmse)});
+    if (f.hasCi) {
+      metadata.push_back({"glossy:noiseFloor.relativeRmseCi", formatted("%.6g %.6g", f.relativeRmseCi.lo, f.relativeRmseCi.hi)});
+      metadata.push_back({"glossy:noiseFloor.luminanceRatioCi", formatted("%.6g %.6g", f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)});
+    }
+    if (floor.maps.available) {
+      metadata.push_back({"glossy:noiseFloor.flip", float(floor.maps.flip)});
+      if (floor.maps.hasFlipCi)
+        metadata.push_back({"glossy:noiseFloor.flipCi", formatted("%.6g %.6g", floor.maps.flipCi.lo, floor.maps.flipCi.hi)});
+    }
+  }
+  if (!sheet.warnings.empty()) {
+    std::string text;
+    for (const std::string& w : sheet.warnings) text.append(text.empty() ? "" : "\n").append(w);
+    metadata.push_back({"glossy:warnings", text});
+  }
   metadata.push_back({"glossy:verdict", verdictText(sheet)});
   metadata.push_back({"glossy:replicates", sheet.replicates});
   metadata.push_back({"glossy:passes", sheet.passes});
@@ -360,19 +435,22 @@ namespace {
 
 int labelFontSize(int panelWidth) { return std::clamp(panelWidth / 13, 9, 16); }
 int labelStrip(int panelWidth) { return 4 * labelFontSize(panelWidth) + labelFontSize(panelWidth) / 2 + 10; }
+int smallFontSize(int panelWidth) { return std::max(8, labelFontSize(panelWidth) - 2); }
+// Under the error maps: the noise floor's line and the warnings' line.
+int noteStrip(int panelWidth) { return 2 * (smallFontSize(panelWidth) + 4) + 6; }
 
 }  // namespace
 
 SheetPngSize sheetPngSize(int panelWidth, int panelHeight, int panels) {
   const int plain = panelHeight + labelStrip(panelWidth);
-  return {panelWidth * panels, plain, plain + panelHeight};
+  return {panelWidth * panels, plain, plain + panelHeight + noteStrip(panelWidth)};
 }
 
 void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double exposure, const std::string& fontPath) {
   const int w = sheet.panels.front().image.width, h = sheet.panels.front().image.height;
   const int n = int(sheet.panels.size());
   const int fontSize = labelFontSize(w);
-  const int small = std::max(8, fontSize - 2);
+  const int small = smallFontSize(w);
   const int strip = labelStrip(w);
   const bool mapRow = sheet.hasMeasured();
   const SheetPngSize size = sheetPngSize(w, h, n);
@@ -467,6 +545,27 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
         }
     }
   }
+  // The strip under the maps: what noise alone shows, and the warnings, across the whole width.
+  if (mapRow) {
+    const int top = h + strip + h;
+    const PanelRender& floor = sheet.noiseFloor;
+    std::string line = "noise floor (measured vs. an independent render of itself): ";
+    if (floor.empty || !floor.figures.compared)
+      line += "none";
+    else {
+      const PanelFigures& f = floor.figures;
+      line += f.hasCi ? formatted("rRMSE %.3f [%.3f, %.3f]  lum x%.3f [%.3f, %.3f]", f.relativeRmse, f.relativeRmseCi.lo,
+                                  f.relativeRmseCi.hi, f.luminanceRatio, f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)
+                      : formatted("rRMSE %.3f  lum x%.3f", f.relativeRmse, f.luminanceRatio);
+      if (floor.maps.available) line += formatted("  FLIP %.3f", floor.maps.flip);
+    }
+    text(line, 3, top + small + 2, small, grey, size.width - 6);
+    const float orange[3] = {1.0f, 0.6f, 0.2f};
+    std::string warnings;
+    for (const std::string& w : sheet.warnings) warnings.append(warnings.empty() ? "warning: " : "; ").append(w);
+    text(warnings.empty() ? std::string("no warnings") : warnings, 3, top + 2 * small + 8, small,
+         warnings.empty() ? OIIO::cspan<float>(grey) : OIIO::cspan<float>(orange), size.width - 6);
+  }
   if (buf.has_error()) std::fprintf(stderr, "glossy: %s: labels not drawn: %s\n", path.string().c_str(), buf.geterror().c_str());
   std::vector<unsigned char> rgb(size_t(w * n) * size_t(height) * 3);
   if (!buf.get_pixels(buf.roi(), OIIO::TypeDesc::UINT8, rgb.data())) throw std::runtime_error(path.string() + ": " + buf.geterror());
@@ -495,16 +594,8 @@ std::string errorTable(const Sheet& sheet) {
   for (const PanelRender& p : sheet.panels) w = std::max(w, int(p.panel.label.size()));
   s << formatted("  %-*s   rel. RMSE, noise-free [95 %%]   luminance ratio [95 %%]    HDR-FLIP [95 %%]            noisy rRMSE   BRDF E1   BRDF E2\n", w, "panel");
   bool clamped = false;
-  for (const PanelRender& p : sheet.panels) {
+  const auto row = [&](const PanelRender& p) {
     const PanelFigures& f = p.figures;
-    if (p.empty) {
-      s << formatted("  %-*s   %s\n", w, p.panel.label.c_str(), p.note.c_str());
-      continue;
-    }
-    if (!f.compared) {
-      s << formatted("  %-*s   %s\n", w, p.panel.label.c_str(), p.panel.fit.empty() ? "(the reference)" : "-");
-      continue;
-    }
     const std::string r = !f.available ? "-"
                           : f.hasCi    ? formatted("%.4f [%.4f, %.4f]%s", f.relativeRmse, f.relativeRmseCi.lo, f.relativeRmseCi.hi,
                                                    f.clamped ? "*" : "")
@@ -517,14 +608,23 @@ std::string errorTable(const Sheet& sheet) {
     clamped = clamped || f.clamped;
     s << formatted("  %-*s   %-29s  %-24s  %-25s  %11.4f   %7.4f   %7.4f\n", w, p.panel.label.c_str(), r.c_str(), l.c_str(),
                    flip.c_str(), f.noisyRelativeRmse, p.brdfE1, p.brdfE2);
+  };
+  for (const PanelRender& p : sheet.panels) {
+    if (p.empty) {
+      s << formatted("  %-*s   %s\n", w, p.panel.label.c_str(), p.note.c_str());
+      continue;
+    }
+    if (!p.figures.compared) {
+      s << formatted("  %-*s   %s\n", w, p.panel.label.c_str(), p.panel.fit.empty() ? "(the reference)" : "-");
+      continue;
+    }
+    row(p);
   }
+  // What an exact model would score: the floor under every column's figure.
+  if (!sheet.noiseFloor.empty && sheet.noiseFloor.figures.compared) row(sheet.noiseFloor);
   if (clamped) s << "  * the estimate of the squared error came out negative (the model is within the noise): shown as 0\n";
   // Say so rather than let a narrow interval pass for a precise one.
-  std::vector<PanelFigures> figures;
-  for (const PanelRender& p : sheet.panels) figures.push_back(p.figures);
-  if (const double share = noiseShare(figures); share > kNoiseDominates)
-    s << formatted("  noise is up to %.0f %% of the noisy figure's square: the intervals may be too narrow; render more samples\n",
-                   100.0 * share);
+  for (const std::string& warning : sheet.warnings) s << "  warning: " << warning << "\n";
   if (sheet.skippedPixels > 0) s << "  " << sheet.skippedPixels << " object pixels left out: not finite in some panel\n";
   if (sheet.flipNoiseFloor >= 0.0)
     s << formatted("  HDR-FLIP includes render noise, which raises it; the [95 %%] is the noise's spread. Noise alone gives "

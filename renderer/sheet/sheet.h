@@ -30,8 +30,8 @@ namespace glossy {
 constexpr int kReplicates = 4;
 
 // What a sheet file holds, as a number: it goes up when sheets gain layers or figures (2: the error maps and
-// HDR-ꟻLIP), so that glossy sheets renders again a sheet made before, rather than resume past it.
-constexpr int kSheetFormat = 2;
+// HDR-ꟻLIP; 3: the warnings and the noise-floor row), so that glossy sheets renders again a sheet made before, rather than resume past it.
+constexpr int kSheetFormat = 3;  // 3: warnings, the noise-floor row
 
 // A render's settings (width and height per panel; spp split evenly among the replicates, rounded up to fill
 // them; control: the tiles of every pass, its total set when the passes are known up front, a fixed --spp;
@@ -96,11 +96,29 @@ struct Sheet {
   double objectShare = 0.0;         // of the paths: reached the object, where the panels part ways
   Verdict verdict;                  // indices into panels
   size_t skippedPixels = 0;         // object pixels left out of the figures: not finite
+  uint32_t seed = 0;                // the render's (settings.seed)
   double flipNoiseFloor = -1.0;     // ꟻLIP of the measured panel's two halves (error_maps.h); < 0: none
+  // The measured panel against an independent render of itself (seed noiseFloorSeed, the same samples per
+  // replicate): every figure of a model that is exactly the measured BRDF, i.e. what noise alone shows.
+  // empty when there is no measured panel.
+  PanelRender noiseFloor;
+  // What makes the figures or the verdict less than they seem ("noise is up to 93 % …: the intervals may be
+  // too narrow; render more samples"); while one stands, no model is named closest (glossy:warnings).
+  std::vector<std::string> warnings;
   double widestHalfWidth = 0.0;     // the widest relative-RMSE interval's half-width; Inf: no interval (no measured panel)
   const PanelRender* measured() const;  // null when the grid has no measured panel
   bool hasMeasured() const { return measured() && !measured()->empty; }
 };
+
+// The warnings the figures call for: noise above 80 % of a plain figure's square, where the intervals were
+// seen to run narrow (docs/sheets.md, "Where the intervals hold").
+std::vector<std::string> figureWarnings(const std::vector<PanelFigures>& figures);
+// The verdict a sheet states: while a warning stands, no model is named closest ("no verdict: …"); a tie
+// or no verdict stays as it is.
+Verdict verdictUnderWarnings(Verdict verdict, const std::vector<std::string>& warnings);
+
+// The seed of the noise-floor row's render: another sequence than the sheet's, fixed by it.
+uint32_t noiseFloorSeed(uint32_t seed);
 
 // `measured` may be null (its panel is then empty, with `measuredNote` saying why).
 Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::shared_ptr<const MerlTable> measured,
@@ -117,14 +135,15 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
 // fontPath empty: OIIO's default font search.
 void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double exposure, const std::string& fontPath);
 // The size of that PNG for `panels` panels of w × h: its width, and its height without and with the row of
-// error maps (there when the sheet has a measured panel).
+// error maps and the strip under them (the noise floor and the warnings) (there when the sheet has a
+// measured panel).
 struct SheetPngSize {
   int width, height, heightWithMaps;
 };
 SheetPngSize sheetPngSize(int panelWidth, int panelHeight, int panels);
 // "closest: Smooth E2", "tie: Smooth E2, Microfacet E2" or why there is no verdict.
 std::string verdictText(const Sheet& sheet);
-// The error table for stdout.
+// The error table for stdout, with the noise-floor row and the warnings.
 std::string errorTable(const Sheet& sheet);
 
 }  // namespace glossy

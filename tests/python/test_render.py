@@ -157,6 +157,14 @@ def test_sheet_is_the_cli_sheet(tmp_path):
     assert sheet.figures["measured"]["relative_rmse"] is None
     assert set(sheet.maps["cook_torrance_E2"]) == {"reldiff", "flip"} and sheet.maps["cook_torrance_E2"]["flip"].shape == (32, 32)
     assert sheet.spp == 8 and sheet.verdict
+    # The noise-floor row and the warnings, as the EXR has them (glossy:noiseFloor.*, glossy:warnings).
+    floor = sheet.noise_floor
+    assert floor["label"] == "noise floor" and floor["relative_rmse_noisy"] > 0
+    assert floor["relative_rmse_ci"][0] <= floor["relative_rmse"] <= floor["relative_rmse_ci"][1]
+    assert floor["flip"] < ct["flip"]
+    assert sheet.warnings and all("intervals may be too narrow" in w for w in sheet.warnings)
+    assert not sheet.verdict.startswith("closest: ")
+    assert "noise floor" in sheet.table
     saved = tmp_path / "py.exr"
     sheet.save(saved)
     assert saved.with_suffix(".png").exists()

@@ -129,11 +129,21 @@ std::string readText(const std::filesystem::path& path) {
 std::vector<std::map<std::string, std::string>> readCsv(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path.string());
+  // RFC 4180 fields on one line: a quoted field may hold commas, and "" in it is one quote.
   auto split = [](const std::string& line) {
-    std::vector<std::string> cells;
-    std::stringstream s(line);
-    std::string c;
-    while (std::getline(s, c, ',')) cells.push_back(c);
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (size_t i = 0; i < line.size(); ++i) {
+      const char c = line[i];
+      if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+        cells.back() += '"', ++i;
+      else if (c == '"')
+        quoted = !quoted;
+      else if (c == ',' && !quoted)
+        cells.emplace_back();
+      else
+        cells.back() += c;
+    }
     return cells;
   };
   std::string line;
