@@ -124,3 +124,16 @@ TEST(StudyRows, TheClassComesFromThePerceptualData) {
   for (const study::StudyRow& row : study::readStudyRows(tmp / "out")) EXPECT_EQ(row.materialClass, "Metal") << row.material;
   for (const study::StudyRow& row : study::readStudyRows(studyDir())) EXPECT_EQ(row.materialClass, "") << "no perceptual folder, no class";
 }
+
+// A row carries the sheet's stored warnings (glossy:warnings) and, without a verdict, why there is none.
+TEST(StudyRows, TheWarningIsTheSheetsStoredWarnings) {
+  report::SheetRecord sheet;
+  sheet.verdict = "tie: Microfacet E2, Smooth E2";
+  EXPECT_EQ(study::sheetWarning(sheet), "");
+  sheet.warnings = {"noise is up to 93 % of a plain figure's square: the intervals may be too narrow", "second"};
+  EXPECT_EQ(study::sheetWarning(sheet), sheet.warnings[0] + "; second");
+  sheet.verdict = "no verdict: the measured panel is below its noise";
+  EXPECT_EQ(study::sheetWarning(sheet), sheet.warnings[0] + "; second; " + sheet.verdict);
+  sheet.warnings.clear();
+  EXPECT_EQ(study::sheetWarning(sheet), sheet.verdict);
+}

@@ -40,10 +40,13 @@ std::string fitSource(const FitId& id, const std::optional<MaterialFile>& file) 
 }  // namespace
 
 std::string sheetWarning(const report::SheetRecord& sheet) {
-  // A sheet without a verdict says why ("no verdict: the measured panel is below its noise"); that is the
-  // only warning a sheet records today. The sheet's own warning attribute, once it has one, goes here too.
-  if (sheet.verdict.starts_with("closest: ") || sheet.verdict.starts_with("tie: ")) return "";
-  return sheet.verdict;
+  // The sheet's warnings (glossy:warnings), then, for a sheet without a verdict, why it has none ("no
+  // verdict: the measured panel is below its noise").
+  std::string out;
+  for (const std::string& w : sheet.warnings) out += (out.empty() ? "" : "; ") + w;
+  if (!sheet.verdict.starts_with("closest: ") && !sheet.verdict.starts_with("tie: ") && out.find(sheet.verdict) == std::string::npos)
+    out += (out.empty() ? "" : "; ") + sheet.verdict;
+  return out;
 }
 
 std::vector<StudyRow> sheetRows(const report::SheetRecord& sheet, const PlannedMaterial& material, const std::string& lighting,

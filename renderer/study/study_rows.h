@@ -13,8 +13,8 @@
 
 namespace glossy::study {
 
-// The warning a sheet stands under, as its rows carry it (StudyRow::warning); "" when none. The one place
-// that decides it from what a sheet records.
+// The warning a sheet stands under, as its rows carry it (StudyRow::warning): its stored warnings and,
+// without a verdict, why there is none, joined by "; "; "" when none.
 std::string sheetWarning(const report::SheetRecord& sheet);
 
 // The rows of one sheet: its non-empty analytic panels in grid order. `material`, `lighting` and `scene`
