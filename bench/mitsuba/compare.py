@@ -352,6 +352,8 @@ def efficiency_cell(a, ctx, lighting, material):
         gltf, extra, bsdf = out / "eff-ct.gltf", ("--measured", ctx["merl"]), measured.bsdf_dict(ctx["merl"], ct_fit)
     if a.light_samples is not None:
         extra = (*extra, "--light-samples", a.light_samples)
+    if a.fixed_light_samples:
+        extra = (*extra, "--fixed-light-samples")
     glossy = Glossy(ctx["glossy"], gltf, env, a.size, a.max_depth, extra)
     mts = mitsuba_scene(out, a.size, a.max_depth, bsdf, a.sampler, emitter)
 
@@ -460,7 +462,9 @@ def main():
     p.add_argument("--seed", type=int, default=100, help="efficiency: first seed (render i has seed SEED + i)")
     p.add_argument("--spp", type=int, default=64, help="efficiency: samples per pixel of every render")
     p.add_argument("--light-samples", type=int, default=None,
-                   help="efficiency: glossy's light samples at the first vertex (default: glossy's own default)")
+                   help="efficiency: glossy's light samples at the first vertex, at most (default: glossy's own default)")
+    p.add_argument("--fixed-light-samples", action="store_true",
+                   help="efficiency: glossy takes --light-samples at every first vertex, whatever the BRDF")
     p.add_argument("--studio", type=Path, default=None,
                    help="efficiency: the studio map (default ROOT/../shared/envmaps/studio_small_09_1k.hdr)")
     p.add_argument("--merl", type=Path, default=None,
