@@ -31,7 +31,7 @@ struct RenderSettings {
   // Light samples at a camera path's first vertex (path_vertex.h), at most, 1 … kMaxLightSamples; one at
   // the others. With lightSamplesPerBrdf each BRDF takes its own count up to this (light_count.h), else
   // every first vertex takes this many.
-  int lightSamples = 8;
+  int lightSamples = 4;
   bool lightSamplesPerBrdf = true;
   uint32_t seed = 0;
   int threads = 0;        // 0 = all cores
