@@ -24,6 +24,7 @@
 #include "renderer/util/atomic_file.h"
 #include "materials/merl/merl_table.h"
 #include "renderer/image/exr_image.h"
+#include "renderer/integrator/light_count.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/lights/default_sky.h"
 #include "renderer/scene/material_binding.h"
@@ -90,8 +91,10 @@ int main(int argc, char** argv) {
   app.add_option("--max-depth", maxDepth, "Path segments at most (3 = one indirect bounce)")->capture_default_str();
   app.add_option("--write-sky", skyOut, "Write the built-in procedural sky as an EXR and exit");
   int lightSamples = RenderSettings{}.lightSamples;
-  app.add_option("--light-samples", lightSamples, "Light samples at a path's first vertex")
+  app.add_option("--light-samples", lightSamples, "Light samples at a path's first vertex, at most (each BRDF takes its own)")
       ->capture_default_str()->check(CLI::Range(1, kMaxLightSamples));
+  bool fixedLightSamples = false;
+  app.add_flag("--fixed-light-samples", fixedLightSamples, "Every first vertex takes --light-samples, whatever its BRDF");
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -112,6 +115,9 @@ int main(int argc, char** argv) {
     const Camera& camera = description.cameras.at(0);
     std::string bound;
     for (const auto& b : binding.bindings) bound += (bound.empty() ? "" : "; ") + b;
+    for (const Brdf& brdf : scene.brdfs)
+      bound += "; light samples " + std::to_string(fixedLightSamples ? lightSamples : lightSamplesFor(brdf, lightSamples)) +
+               " (share " + std::to_string(lightCarriedShare(brdf)) + ")";
     std::cout << "ready " << (bound.empty() ? "scene base colours" : bound) << std::endl;
 
     RenderSettings base;
@@ -119,6 +125,7 @@ int main(int argc, char** argv) {
     base.height = height;
     base.maxDepth = maxDepth;
     base.lightSamples = lightSamples;
+    base.lightSamplesPerBrdf = !fixedLightSamples;
     base.progress = false;
 
     std::string line;

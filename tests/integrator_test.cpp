@@ -2,6 +2,7 @@
 // environment (constant, or a map of bright panels) and emitters together match their irradiance (both
 // sides of MIS, the emitter hiding part of the sky); the light chooser draws by power; a scene renders
 // alike at 1e-3 and 1e3 of its size; a light 1e-5 above a surface lights it.
+#include "renderer/integrator/light_count.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/lights/light_set.h"
 #include "tests/support/image_regression.h"
@@ -138,6 +139,7 @@ TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
     const Environment* environment;
     int maxDepth, rouletteDepth;
     int lightSamples = RenderSettings{}.lightSamples;
+    bool perBrdf = true;
   };
   const Case cases[] = {
       {"environment only", cookTorrance, false, &sky, 8, 100},
@@ -148,6 +150,8 @@ TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
       {"max depth 1", cookTorrance, true, &sky, 1, 100},
       {"one light sample", cookTorrance, true, &sky, 8, 100, 1},
       {"three light samples", cookTorrance, true, &sky, 8, 100, 3},
+      {"three light samples everywhere", cookTorrance, true, &sky, 8, 100, 3, false},
+      {"a sharp sphere on a diffuse floor", Brdf(CookTorrance{Rgb(0.02), Rgb(0.2), 0.0125, 1.7}), true, &sky, 8, 100},
   };
   const Camera camera = perspective({0, 1.5, 5}, {0, 0, 0}, 0.7);
   for (const Case& c : cases) {
@@ -156,6 +160,7 @@ TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
     settings.maxDepth = c.maxDepth;
     settings.rouletteDepth = c.rouletteDepth;
     settings.lightSamples = c.lightSamples;
+    settings.lightSamplesPerBrdf = c.perBrdf;
     const RgbImage wave = renderScene(stage.description, stage.brdfs, c.environment, camera, settings);
     settings.reference = true;
     const RgbImage reference = renderScene(stage.description, stage.brdfs, c.environment, camera, settings);
@@ -246,6 +251,60 @@ TEST_P(LightSamples, AMapOfBrightPanelsAndAnOccludingEmitterGiveTheirIrradiance)
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrator, LightSamples, ::testing::Values(1, 3, RenderSettings{}.lightSamples));
+
+// The light samples a first vertex takes follow its BRDF: all of them for a Lambertian one, one for a lobe
+// a few milliradians wide, counts between for lobes between; and always one of the few levels.
+TEST(LightCount, BroadLobesTakeMoreLightSamplesThanSharpOnes) {
+  EXPECT_EQ(lightCountLevels(8), 0b10001011u);  // 1, 2, 4, 8
+  EXPECT_EQ(lightCountLevels(3), 0b111u);       // 1, 2, 3
+  EXPECT_EQ(lightCountLevels(1), 1u);
+  EXPECT_NEAR(lightCarriedShare(Lambertian{Rgb(0.5)}), 0.5, 1e-9);
+  EXPECT_EQ(lightSamplesFor(Lambertian{Rgb(0.5)}, 8), 8);
+  EXPECT_EQ(lightSamplesFor(Lambertian{Rgb(0.5)}, 3), 3);
+  const Brdf sharp = CookTorrance{Rgb(0.02), Rgb(0.2), 0.0125, 1.7};  // a polished metal (steel's E2 fit)
+  EXPECT_EQ(lightSamplesFor(sharp, 8), 1);
+  int last = 8;
+  for (const double m : {0.5, 0.2, 0.1, 0.05, 0.02}) {  // a plastic: the lobe narrows, the count does not rise
+    const int k = lightSamplesFor(CookTorrance{Rgb(0.1), Rgb(0.4), m, 1.5}, 8);
+    EXPECT_LE(k, last) << "m " << m;
+    last = k;
+  }
+  EXPECT_LT(last, 8);
+}
+
+// The bias a wrong count would bring shows where a vertex takes fewer light samples than the most: a glossy
+// floor under the lamp and a constant sky, rendered with its own count (between 1 and the most) and with
+// the most everywhere, converges to the same image. MIS must weigh the light samples and the BSDF sample
+// by the count taken at that vertex; weighing either by another count biases the lamp's highlight.
+TEST(LightCount, AVertexsOwnCountLeavesTheImageUnbiased) {
+  const Rgb emission(10.0, 5.0, 2.0);
+  LampOverFloor stage(emission);
+  stage.brdfs[0] = CookTorrance{Rgb(0.1), Rgb(0.4), 0.3, 1.5};  // two light samples of the eight
+  const int own = lightSamplesFor(stage.brdfs[0], kMaxLightSamples);
+  ASSERT_GT(own, 1);
+  ASSERT_LT(own, kMaxLightSamples);
+  const Environment environment = Environment::constant(Rgb(0.3, 0.6, 0.9));
+  const Camera camera = perspective({0, 2.5, 3}, {0, 0, 0}, 0.9);  // the lamp's highlight on the floor
+  RenderSettings settings = quiet(LampOverFloor::kSize, LampOverFloor::kSize, 512, 1);
+  settings.maxDepth = 2;
+  settings.lightSamples = kMaxLightSamples;
+  const auto image = [&](bool perBrdf, uint32_t seed) {
+    settings.lightSamplesPerBrdf = perBrdf;
+    settings.seed = seed;
+    return renderScene(stage.description, stage.brdfs, &environment, camera, settings);
+  };
+  const RgbImage a1 = image(true, 1), a2 = image(true, 2), b1 = image(false, 3), b2 = image(false, 4);
+  for (int c = 0; c < 3; ++c) {
+    double difference = 0.0, variance = 0.0;
+    for (int y = 0; y < a1.height; ++y)
+      for (int x = 0; x < a1.width; ++x) {
+        const double ha = 0.5 * (a1.at(x, y)[c] - a2.at(x, y)[c]), hb = 0.5 * (b1.at(x, y)[c] - b2.at(x, y)[c]);
+        difference += 0.5 * (a1.at(x, y)[c] + a2.at(x, y)[c]) - 0.5 * (b1.at(x, y)[c] + b2.at(x, y)[c]);
+        variance += ha * ha + hb * hb;
+      }
+    EXPECT_LT(std::abs(difference) / std::sqrt(variance), 4.0) << "channel " << c;
+  }
+}
 
 TEST(Integrator, TheLightChooserDrawsByPower) {
   SceneDescription description;

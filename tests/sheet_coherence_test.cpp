@@ -2,11 +2,13 @@
 // the same paths with the same draws, summed per pixel in another order only where paths stop at the object.
 // Where no path meets the object, every panel holds the same bits.
 #include "renderer/camera/camera_rays.h"
+#include "renderer/integrator/light_count.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/sheet/sheet.h"
 #include "tests/support/test_support.h"
 
 #include <cmath>
+#include <set>
 
 namespace glossy::test {
 
@@ -56,6 +58,11 @@ RenderSettings smallSettings() {
 TEST(CoherentPanels, EachPanelIsItsSoloRender) {
   const std::vector<RenderScene> scenes = panelScenes();
   const RenderSettings settings = smallSettings();
+  // The panels take different light-sample counts at the object (light_count.h), so the object vertex
+  // draws a set for each and each panel must find its own.
+  std::set<int> counts;
+  for (const RenderScene& scene : scenes) counts.insert(lightSamplesFor(scene.defaultBrdf, settings.lightSamples));  // withObject: the object's
+  EXPECT_GE(counts.size(), 2u);
   RenderStats stats;
   const std::vector<RgbImage> together = renderPanels(scenes, stage().description.cameras.front(), settings, stats);
   ASSERT_EQ(together.size(), scenes.size());

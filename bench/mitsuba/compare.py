@@ -15,7 +15,9 @@ between one emitter sample and one BSDF sample per vertex, the environment visib
     - lightings: studio (../shared/envmaps/studio_small_09_1k.hdr, loaded by both), sky (glossy's procedural
       default sky written as one float EXR both load), constant (radiance 1: Mitsuba's `constant` emitter,
       glossy's Environment::constant through glossy_compare --env-constant);
-    - materials: ct (blue-rubber's Cook-Torrance E1 fit; Mitsuba: cook_torrance.py), microfacet (aluminium's
+    - materials: ct (blue-rubber's Cook-Torrance E1 fit; Mitsuba: cook_torrance.py), ct-metal (steel's
+      Cook-Torrance E2 fit, m = 0.0125: a sharp metal lobe; cook_torrance.py, which samples the Beckmann lobe
+      or the cosine in proportion to the lobes' albedos), microfacet (aluminium's
       Microfacet E2 fit, B = 2.2e5: a heavy-tailed lobe; microfacet.py), measured (the MERL-format
       blue-rubber table, an NBRDF reconstruction: glossy_compare --measured with glossy's tabulated sampler;
       Mitsuba: measured.py, the same nearest-bin lookup, sampled by the CT E1 fit's mixture). The plugins'
@@ -293,8 +295,12 @@ def noise_of_mean(a, b):
 
 # ---------------------------------------------------------------------------------------------- efficiency
 LIGHTINGS = {"studio": "studio HDR", "sky": "smooth sky", "constant": "constant 1"}
-MATERIALS = {"ct": "Cook-Torrance E1, blue-rubber", "microfacet": "Microfacet E2, aluminium",
+MATERIALS = {"ct": "Cook-Torrance E1, blue-rubber", "ct-metal": "Cook-Torrance E2, steel (m = 0.0125)",
+             "microfacet": "Microfacet E2, aluminium",
              "measured": "MERL blue-rubber (NBRDF reconstruction)"}
+
+# The sharp metal lobe: the published fit, the first of its kind in the file.
+SHARP_METAL = ("materials/library/merl/steel.toml", "E2")
 
 
 def fit_of(material_file, model, metric):
@@ -336,6 +342,9 @@ def efficiency_cell(a, ctx, lighting, material):
     ct_fit = fit_of(root / "materials/library/merl/blue-rubber.toml", "cook-torrance", "E1")
     if material == "ct":
         gltf, extra, bsdf = out / "eff-ct.gltf", (), cook_torrance.bsdf_dict(ct_fit)
+    elif material == "ct-metal":
+        gltf, extra = out / "eff-ct-metal.gltf", ()
+        bsdf = cook_torrance.bsdf_dict(fit_of(root / SHARP_METAL[0], "cook-torrance", SHARP_METAL[1]))
     elif material == "microfacet":
         gltf, extra = out / "eff-microfacet.gltf", ()
         bsdf = microfacet.bsdf_dict(fit_of(root / "materials/library/merl/aluminium.toml", "microfacet", "E2"))
@@ -343,6 +352,8 @@ def efficiency_cell(a, ctx, lighting, material):
         gltf, extra, bsdf = out / "eff-ct.gltf", ("--measured", ctx["merl"]), measured.bsdf_dict(ctx["merl"], ct_fit)
     if a.light_samples is not None:
         extra = (*extra, "--light-samples", a.light_samples)
+    if a.fixed_light_samples:
+        extra = (*extra, "--fixed-light-samples")
     glossy = Glossy(ctx["glossy"], gltf, env, a.size, a.max_depth, extra)
     mts = mitsuba_scene(out, a.size, a.max_depth, bsdf, a.sampler, emitter)
 
@@ -446,12 +457,14 @@ def main():
     p.add_argument("--lighting", type=csv_of(tuple(LIGHTINGS)), default=list(LIGHTINGS),
                    help="efficiency: lightings, comma-separated: studio, sky, constant (default all)")
     p.add_argument("--material", type=csv_of(tuple(MATERIALS)), default=list(MATERIALS),
-                   help="efficiency: materials, comma-separated: ct, microfacet, measured (default all)")
+                   help="efficiency: materials, comma-separated: ct, ct-metal, microfacet, measured (default all)")
     p.add_argument("--seeds", type=int, default=4, help="efficiency: seed pairs per renderer and cell (median reported)")
     p.add_argument("--seed", type=int, default=100, help="efficiency: first seed (render i has seed SEED + i)")
     p.add_argument("--spp", type=int, default=64, help="efficiency: samples per pixel of every render")
     p.add_argument("--light-samples", type=int, default=None,
-                   help="efficiency: glossy's light samples at the first vertex (default: glossy's own default)")
+                   help="efficiency: glossy's light samples at the first vertex, at most (default: glossy's own default)")
+    p.add_argument("--fixed-light-samples", action="store_true",
+                   help="efficiency: glossy takes --light-samples at every first vertex, whatever the BRDF")
     p.add_argument("--studio", type=Path, default=None,
                    help="efficiency: the studio map (default ROOT/../shared/envmaps/studio_small_09_1k.hdr)")
     p.add_argument("--merl", type=Path, default=None,
@@ -490,6 +503,8 @@ def main():
         raise SystemExit("compare.py: the rays and agreement sections take cook-torrance fits only")
     triangles = bench_scene.write_scene(out, a.size, a.size, material_file, a.sphere_fit)
     bench_scene.write_sphere_gltf(out / "eff-ct.gltf", root / "materials/library/merl/blue-rubber.toml", "cook-torrance:E1", a.size, a.size)
+    bench_scene.write_sphere_gltf(out / "eff-ct-metal.gltf", root / SHARP_METAL[0], f"cook-torrance:{SHARP_METAL[1]}",
+                                  a.size, a.size)
     bench_scene.write_sphere_gltf(out / "eff-microfacet.gltf", root / "materials/library/merl/aluminium.toml", "microfacet:E2",
                                   a.size, a.size)
     subprocess.run([str(exe), "--write-sky", str(out / "sky.exr")], check=True)

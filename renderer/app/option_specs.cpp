@@ -33,7 +33,7 @@ const OptionSpec kExposure{"exposure", "sheet, sheets", false, -64, 64, false, s
 const OptionSpec kSeed{"seed", "render, sheet, sheets", true, 0, 4294967295.0, false, double(kRender.seed), "Random seed (a sheet's panels share it)", "glossy:seed", "seed"};
 const OptionSpec kThreads{"threads", "render, sheet, sheets, study, fit", true, 0, kMaxThreads, false, double(kRender.threads), "Threads (0 = all cores)", "", ""};
 const OptionSpec kMaxDepth{"max-depth", "render, sheet, sheets", true, 1, 1000, false, double(kRender.maxDepth), "Path segments at most (1 = emitters only, 3 = one indirect bounce)", "glossy:maxDepth", "maxDepth"};
-const OptionSpec kLightSamples{"light-samples", "render, sheet, sheets", true, 1, kMaxLightSamples, false, double(kRender.lightSamples), "Light samples at a path's first vertex (more: less noise from the lights at less than a path's cost)", "glossy:lightSamples", "lightSamples"};
+const OptionSpec kLightSamples{"light-samples", "render, sheet, sheets", true, 1, kMaxLightSamples, false, double(kRender.lightSamples), "Light samples at a path's first vertex, at most: each BRDF takes its own count, fewer for sharper lobes (more: less noise from the lights at less than a path's cost)", "glossy:lightSamples", "lightSamples"};
 // The environment's rotation reaches a sheet's settings line through its description (env=).
 const OptionSpec kEnvRotate{"env-rotate", "render, sheet, sheets", false, -360, 360, false, 0.0, "Rotate the environment about +Y, degrees", "", ""};
 const OptionSpec kStarts{"starts", "fit", true, 1, 64, false, double(kFit.refinedStarts), "Lobe widths refined from the coarse scan", "", ""};

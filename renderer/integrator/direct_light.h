@@ -49,15 +49,18 @@ inline bool toLight(const ShadingPoint& sp, const ChosenLight& chosen, const Lig
   return true;
 }
 
-// The light samples of a vertex with their shadow rays' verdicts.
+// The light samples a vertex drew (VertexDraws::lightSets, a set per count its panels take) with their
+// shadow rays' verdicts.
 struct VertexLight {
-  int count = 0;
-  LightPath path[kMaxLightSamples];
-  bool visible[kMaxLightSamples] = {};  // the sample arrived from above the surface and nothing blocks it
+  uint32_t sets = 1;
+  int count = 0;  // lightDraws(sets)
+  LightPath path[kMaxLightDraws];
+  bool visible[kMaxLightDraws] = {};  // the sample arrived from above the surface and nothing blocks it
 };
 inline VertexLight sampleLight(const PathContext& context, const ShadingPoint& sp, const VertexDraws& u) {
   VertexLight v;
-  v.count = u.lightSamples;
+  v.sets = u.lightSets;
+  v.count = lightDraws(u.lightSets);
   for (int k = 0; k < v.count; ++k)
     if (const ChosenLight chosen = context.lights.choose(u.lightChoice[k]))
       v.visible[k] = toLight(sp, chosen, chosen.light->sample(receiver(sp), u.light[k]), v.path[k]) &&
@@ -75,13 +78,15 @@ inline bool lightContribution(const LightPath& light, int count, const BrdfValue
   return true;
 }
 
-// The vertex's light samples weighed by its BRDF, added to radiance with the path's throughput.
+// The vertex's light samples weighed by its BRDF, added to radiance with the path's throughput: the set
+// of sp.lightSamples of them.
 inline void addDirectLight(const RenderSettings& settings, const ShadingPoint& sp, const VertexLight& light,
                            const Rgb& throughput, Rgb& radiance) {
-  for (int k = 0; k < light.count; ++k) {
+  const int first = lightOffset(light.sets, sp.lightSamples);
+  for (int k = first; k < first + sp.lightSamples; ++k) {
     Rgb contribution;
     if (light.visible[k] &&
-        lightContribution(light.path[k], light.count, valueToward(settings, sp, light.path[k].wiLocal), contribution))
+        lightContribution(light.path[k], sp.lightSamples, valueToward(settings, sp, light.path[k].wiLocal), contribution))
       radiance += throughput * contribution;
   }
 }

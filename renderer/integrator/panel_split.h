@@ -40,6 +40,7 @@ inline Rgb traceToObject(const PathContext& context, Ray ray, CmjSampler& sample
 
 inline Rgb continueFromObject(const PathContext& panel, ObjectVertex stop) {
   stop.vertex.point.brdf = &panel.scene.brdfOf(stop.vertex.mesh);
+  stop.vertex.point.lightSamples = panel.lightSamplesAt(stop.vertex.mesh, stop.depth);
   Ray ray;
   if (reflect(panel, stop.depth, stop.vertex, stop.path, stop.radiance, ray))
     finishPath(panel, ray, stop.sampler, stop.path, stop.depth + 1, stop.radiance);

@@ -1,6 +1,6 @@
 // The reference path tracer: one path, top to bottom, as pbrt-v4's PathIntegrator::Li. Unidirectional path
-// tracing with next-event estimation (RenderSettings::lightSamples light samples at a camera path's first
-// vertex, one at each deeper one, each of a light chosen by power) combined with BSDF sampling by multiple
+// tracing with next-event estimation (light samples at a camera path's first vertex as many as its BRDF
+// takes, light_count.h, one at each deeper one, each of a light chosen by power) combined with BSDF sampling by multiple
 // importance sampling (power heuristic), and Russian roulette. The wave (wave_tracer.h) is this, batched;
 // a test holds the two to the same image bit for bit.
 //
@@ -25,6 +25,7 @@ bool nextVertex(const PathContext& context, const Ray& ray, CmjSampler& sampler,
   if (!arrive(context, ray, hit, depth, path, radiance, vertex.point)) return false;
   vertex.mesh = hit.mesh;
   const int lane = 0;
+  vertex.draws.lightSets = context.lightSetsAt(hit.mesh, depth);
   drawVertices(&sampler, &lane, 1, DrawsUsed(context, depth), &vertex.draws);
   vertex.light = sampleLight(context, vertex.point, vertex.draws);
   return true;

@@ -3,6 +3,7 @@
 #include "renderer/integrator/path_tracer.h"
 
 #include "renderer/camera/camera_rays.h"
+#include "renderer/integrator/light_count.h"
 #include "renderer/integrator/panel_split.h"
 #include "renderer/util/progress.h"
 
@@ -97,6 +98,18 @@ class TileRenderer {
   Ray rays_[kWaveSize];
 };
 
+// The panel's own light samples per material at a first vertex (light_count.h), each drawn as its one set.
+LightCounts lightCounts(const RenderScene& scene, const RenderSettings& settings) {
+  const int most = std::clamp(settings.lightSamples, 1, kMaxLightSamples);
+  LightCounts counts;
+  for (size_t m = 0; m <= scene.brdfs.size(); ++m) {
+    const Brdf& brdf = m == 0 ? scene.defaultBrdf : scene.brdfs[m - 1];
+    counts.taken.push_back(settings.lightSamplesPerBrdf ? lightSamplesFor(brdf, most) : most);
+    counts.drawn.push_back(1u << (counts.taken.back() - 1));
+  }
+  return counts;
+}
+
 }  // namespace
 
 uint64_t renderTiles(int width, int height) {
@@ -113,7 +126,12 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
   std::vector<RgbImage> images(panels.size(), RgbImage(settings.width, settings.height));
   const LightSet lights(LightSources{*panels.front().description, panels.front().environment, panels.front().bvh->boundsRadius()});
   std::vector<PathContext> contexts;
-  for (const RenderScene& panel : panels) contexts.push_back({panel, settings, lights});
+  for (const RenderScene& panel : panels) contexts.push_back({panel, settings, lights, lightCounts(panel, settings)});
+  for (size_t m = 0; m < contexts[0].counts.drawn.size(); ++m) {  // every panel draws the sets all of them take
+    uint32_t drawn = 0;
+    for (const PathContext& c : contexts) drawn |= c.counts.drawn[m];
+    for (PathContext& c : contexts) c.counts.drawn[m] = drawn;
+  }
   const CameraRays cameraRays(camera, settings.width, settings.height);
   const CmjPattern pattern(uint32_t(std::max(1, settings.spp)), uint32_t(std::clamp(settings.lightSamples, 1, kMaxLightSamples)));
   tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers(

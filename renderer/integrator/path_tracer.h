@@ -17,8 +17,10 @@
 
 namespace glossy {
 
-// The most light samples a vertex takes (RenderSettings::lightSamples).
+// The most light samples a vertex takes (RenderSettings::lightSamples), and the most it draws: a sheet's
+// object vertex draws the sets of 1, 2, 4 and 8 that its panels take (light_count.h).
 constexpr int kMaxLightSamples = 8;
+constexpr int kMaxLightDraws = 1 + 2 + 4 + 8;
 
 struct RenderSettings {
   int width = 512, height = 512;
@@ -26,8 +28,11 @@ struct RenderSettings {
   int firstSample = 0;    // samples of each pixel before this pass: seeds a progressive pass's own pattern
   int maxDepth = 8;
   int rouletteDepth = 4;  // Russian roulette from this depth on
-  // Light samples at a camera path's first vertex (path_vertex.h), 1 … kMaxLightSamples; one at the others.
+  // Light samples at a camera path's first vertex (path_vertex.h), at most, 1 … kMaxLightSamples; one at
+  // the others. With lightSamplesPerBrdf each BRDF takes its own count up to this (light_count.h), else
+  // every first vertex takes this many.
   int lightSamples = 4;
+  bool lightSamplesPerBrdf = true;
   uint32_t seed = 0;
   int threads = 0;        // 0 = all cores
   bool progress = true;
@@ -63,11 +68,28 @@ struct RenderScene {
   bool isObject(uint32_t mesh) const { return mesh < objectMeshes.size() && objectMeshes[mesh]; }
 };
 
+// The light samples of a camera path's first vertex per scene material (index + 1; 0 the default BRDF):
+// those this panel takes, and the sets drawn there (bit k − 1: k samples), the union over a sheet's panels
+// (the same in each), so that they share the draws and the shadow rays.
+struct LightCounts {
+  std::vector<int> taken;
+  std::vector<uint32_t> drawn;
+};
+
 // What a path tracer works from.
 struct PathContext {
   const RenderScene& scene;
   const RenderSettings& settings;
   const LightSet& lights;
+  LightCounts counts = {};
+
+  // The light samples a vertex on the mesh at this depth takes in this panel, and the sets it draws.
+  int lightSamplesAt(uint32_t mesh, int depth) const {
+    return depth == 1 ? counts.taken[size_t(scene.description->meshes[mesh].material + 1)] : 1;
+  }
+  uint32_t lightSetsAt(uint32_t mesh, int depth) const {
+    return depth == 1 ? counts.drawn[size_t(scene.description->meshes[mesh].material + 1)] : 1u;
+  }
 };
 
 struct RenderStats {

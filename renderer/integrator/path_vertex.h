@@ -36,7 +36,9 @@ inline bool arrive(const PathContext& context, const Ray& ray, const Hit& hit, i
     addEmission(path, emitted, light.probability * pdf, radiance);
     return false;
   }
-  return depth < context.settings.maxDepth && shade(context.scene, ray, hit, sp);
+  if (depth >= context.settings.maxDepth || !shade(context.scene, ray, hit, sp)) return false;
+  sp.lightSamples = context.lightSamplesAt(hit.mesh, depth);
+  return true;
 }
 
 // The BSDF sample s continues the path: the next ray, the throughput and pdf it carries. False ends it.
@@ -47,7 +49,7 @@ inline bool continuePath(int depth, const RenderSettings& settings, const Shadin
   if (glm::dot(wi, sp.ng) <= 0.0) return false;  // below the geometric surface: no leaking through it
   path.throughput *= s.weight;
   path.bsdfPdf = s.pdf;
-  path.lightSamples = u.lightSamples;
+  path.lightSamples = sp.lightSamples;
   path.from = receiver(sp);
   if (depth >= settings.rouletteDepth) {
     const double survive = std::min(0.95, maxComponent(path.throughput));

@@ -46,6 +46,7 @@ void WaveTracer::resume(const ObjectVertex* vertices, int n, Rgb* radiance) {
     radiance[i] = v.radiance;
     point_[i] = v.vertex.point;
     point_[i].brdf = &context_.scene.brdfOf(v.vertex.mesh);
+    point_[i].lightSamples = context_.lightSamplesAt(v.vertex.mesh, v.depth);
     draws_[i] = v.vertex.draws;
     light_[i] = v.vertex.light;
     resumeSamplers_[i] = v.sampler;
@@ -83,6 +84,7 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
     }
     // Resumed paths share what the panels draw alike; the paths before the object are traced once anyway.
     SharedDraws* shared = stops ? nullptr : shared_;
+    for (const int i : shading) draws_[i].lightSets = context_.lightSetsAt(hit_[i].mesh, depth);
     if (shared)
       shared->draw(depth, samplers, shading, DrawsUsed(context_, depth), draws_);
     else
@@ -100,7 +102,8 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
 void WaveTracer::sampleLights(int depth, const Lanes& lanes, SharedDraws* shared) {
   int most = 0;
   for (const int i : lanes) {
-    light_[i].count = draws_[i].lightSamples;
+    light_[i].sets = draws_[i].lightSets;
+    light_[i].count = lightDraws(draws_[i].lightSets);
     most = std::max(most, light_[i].count);
     from_[i] = receiver(point_[i]);
   }
@@ -142,17 +145,20 @@ void WaveTracer::reflectAll(int depth, const Lanes& lanes, Ray* rays, bool* aliv
   forEachGroup(lanes, [&](int i) { return point_[i].brdf; },
                [&](const Brdf* brdf, const int* group, int n) { sampleBrdf(*brdf, group, n); });
   int most = 0;
-  for (const int i : lanes) most = std::max(most, light_[i].count);
-  // The light samples in the reference's order: the j-th of every lane, j = 0, 1, ….
+  for (const int i : lanes) {
+    most = std::max(most, point_[i].lightSamples);
+    firstLight_[i] = lightOffset(light_[i].sets, point_[i].lightSamples);
+  }
+  // The light samples in the reference's order: the j-th of every lane's set, j = 0, 1, ….
   for (int j = 0; j < most; ++j) {
     Lanes lit;
     for (const int i : lanes)
-      if (j < light_[i].count && light_[i].visible[j]) lit.add(i);
+      if (j < point_[i].lightSamples && light_[i].visible[firstLight_[i] + j]) lit.add(i);
     forEachGroup(lit, [&](int i) { return point_[i].brdf; },
                  [&](const Brdf* brdf, const int* group, int n) { evalBrdf(*brdf, j, group, n); });
     for (const int i : lit) {
       Rgb contribution;
-      if (lightContribution(light_[i].path[j], light_[i].count, value_[i], contribution))
+      if (lightContribution(light_[i].path[firstLight_[i] + j], point_[i].lightSamples, value_[i], contribution))
         radiance[i] += path_[i].throughput * contribution;
     }
   }
@@ -180,17 +186,17 @@ void WaveTracer::sampleBrdf(const Brdf& brdf, const int* lanes, int n) {
   for (int k = 0; k < n; ++k) bsdfSample_[lanes[k]] = samples[k];
 }
 
-// value_ of the lanes: valueToward their j-th light samples, as one batch.
+// value_ of the lanes: valueToward the j-th light samples of their sets, as one batch.
 void WaveTracer::evalBrdf(const Brdf& brdf, int j, const int* lanes, int n) {
   if (context_.settings.cosineBrdfSampling) {
     for (int k = 0; k < n; ++k)
-      value_[lanes[k]] = valueToward(context_.settings, point_[lanes[k]], light_[lanes[k]].path[j].wiLocal);
+      value_[lanes[k]] = valueToward(context_.settings, point_[lanes[k]], light_[lanes[k]].path[firstLight_[lanes[k]] + j].wiLocal);
     return;
   }
   Vec3 wi[kWaveSize] = {}, wo[kWaveSize] = {};  // zeroed for GCC, as in sampleBrdf
   BrdfValue values[kWaveSize];
   for (int k = 0; k < n; ++k) {
-    wi[k] = light_[lanes[k]].path[j].wiLocal;
+    wi[k] = light_[lanes[k]].path[firstLight_[lanes[k]] + j].wiLocal;
     wo[k] = point_[lanes[k]].woLocal;
   }
   evalPdfBatch(brdf, wi, wo, values, n);

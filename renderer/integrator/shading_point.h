@@ -15,6 +15,7 @@ struct ShadingPoint {
   Frame frame{Vec3(0.0, 0.0, 1.0)};
   Vec3 woLocal{0.0};
   const Brdf* brdf = nullptr;
+  int lightSamples = 1;  // that the vertex takes (PathContext::lightSamplesAt): its BRDF's, at the first vertex
 };
 
 // The shading point of a hit that is not a light; false where the path cannot reflect there.

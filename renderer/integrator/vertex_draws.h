@@ -5,14 +5,17 @@
 // is skipped, not computed: a value depends only on its dimension's index, so skipping gives every other
 // dimension what drawing would.
 //
-// The first vertex of a camera path takes RenderSettings::lightSamples light samples, drawn from the pixel's
-// pattern of spp × lightSamples points (CmjSampler::getSplit2D), and deeper vertices one: what the first
+// The first vertex of a camera path takes K light samples, K set by its BRDF (light_count.h), drawn from
+// the pixel's pattern of spp × K points (CmjSampler::getSplits2D), and deeper vertices one: what the first
 // vertex's light brings is most of the image, and its extra samples share the camera ray and the BSDF
-// sample, while a whole extra path would trace both again.
+// sample, while a whole extra path would trace both again. A sheet's object vertex draws one such set per
+// count its panels take, all from the same dimensions, so each panel gets the draws it would get alone.
 #pragma once
 
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/sampling/cmj_sampler.h"
+
+#include <cstdint>
 
 namespace glossy {
 
@@ -23,46 +26,66 @@ struct VertexDraws {
   // The draws in the sampler's order, declared once: drawVertices takes them in this order, and their
   // count is the dimensions a vertex owns.
   enum Slot { kLightChoice, kLight, kLobe, kBsdf, kRoulette, kDimensions };
-  int lightSamples = 1;
-  double lightChoice[kMaxLightSamples] = {};  // which light (LightSet::choose), per light sample
-  Vec2 light[kMaxLightSamples] = {};          // where on it (Light::sample)
+  uint32_t lightSets = 1;  // the sets of light samples drawn (bit k − 1: k of them), set before drawing
+  double lightChoice[kMaxLightDraws] = {};  // which light (LightSet::choose), per light sample, set after set
+  Vec2 light[kMaxLightDraws] = {};          // where on it (Light::sample)
   double lobe = 0.0;         // which of the BRDF's lobes
   Vec2 bsdf{0.0};            // the direction in that lobe
   double roulette = 0.0;     // whether the path survives Russian roulette
 };
 
-// Which of the skippable draws a vertex at this depth uses, and its light samples.
-struct DrawsUsed {
-  bool lightChoice, roulette;
-  int lightSamples;
-  DrawsUsed(const PathContext& context, int depth)
-      : lightChoice(context.lights.hasChoice()), roulette(depth >= context.settings.rouletteDepth),
-        lightSamples(depth == 1 ? context.settings.lightSamples : 1) {}
+// Where the set of `count` light samples starts among a vertex's draws of `sets`: after the smaller sets.
+inline int lightOffset(uint32_t sets, int count) {
+  int offset = 0;
+  for (int k = 1; k < count; ++k) offset += (sets >> (k - 1) & 1u) ? k : 0;
+  return offset;
+}
+inline int lightDraws(uint32_t sets) { return lightOffset(sets, kMaxLightSamples + 1); }
+
+// A list of a wave's lanes.
+struct Lanes {
+  int lane[kWaveSize];
+  int n = 0;
+  void add(int i) { lane[n++] = i; }
+  static Lanes first(int n) { Lanes l; while (l.n < n) l.add(l.n); return l; }  // 0, 1, …, n − 1
+  const int* begin() const { return lane; }
+  const int* end() const { return lane + n; }
 };
 
-// The draws of a vertex for samplers[lanes[k]], k < n, into out[lanes[k]] (lanes < kWaveSize), slot by
-// slot, each a batch draw (cmj_sampler.h), which gives one sampler (n = 1, the reference) the values of
-// its scalar draws. The light slots give
-// split draws (as many as the sampler's pattern splits, which is RenderSettings::lightSamples) at the
-// first vertex, one elsewhere.
+// Which of the skippable draws a vertex at this depth uses.
+struct DrawsUsed {
+  bool lightChoice, roulette;
+  DrawsUsed(const PathContext& context, int depth)
+      : lightChoice(context.lights.hasChoice()), roulette(depth >= context.settings.rouletteDepth) {}
+};
+
+// The draws of a vertex for samplers[lanes[k]], k < n, into out[lanes[k]] (lanes < kWaveSize), whose
+// lightSets the caller has set, slot by slot, each a batch draw (cmj_sampler.h), which gives one sampler
+// (n = 1, the reference) the values of its scalar draws. The light slots of a lane that draws more than one
+// light sample take its sets of split draws (CmjSampler::getSplits2D) instead.
 inline void drawVertices(CmjSampler* samplers, const int* lanes, int n, DrawsUsed used, VertexDraws* out) {
   double x[kWaveSize];
   Vec2 xy[kWaveSize];
-  const bool split = n > 0 && used.lightSamples > 1 && samplers[lanes[0]].splits() > 1;
-  for (int k = 0; k < n; ++k) out[lanes[k]].lightSamples = split ? int(samplers[lanes[k]].splits()) : 1;
+  Lanes all, single, split;
+  for (int k = 0; k < n; ++k) {
+    all.add(lanes[k]);
+    (out[lanes[k]].lightSets == 1u ? single : split).add(lanes[k]);
+  }
   for (int slot = 0; slot < VertexDraws::kDimensions; ++slot) {
     if ((slot == VertexDraws::kLightChoice && !used.lightChoice) || (slot == VertexDraws::kRoulette && !used.roulette)) {
       // Left as it was: the choice has one outcome (one light has all the power), roulette is not played.
       for (int k = 0; k < n; ++k) samplers[lanes[k]].skip(1);
-    } else if (split && slot == VertexDraws::kLightChoice) {
-      for (int k = 0; k < n; ++k) samplers[lanes[k]].getSplit1D(out[lanes[k]].lightChoice);
-    } else if (split && slot == VertexDraws::kLight) {
-      for (int k = 0; k < n; ++k) samplers[lanes[k]].getSplit2D(out[lanes[k]].light);
     } else {
+      const bool light = slot == VertexDraws::kLightChoice || slot == VertexDraws::kLight;
+      const Lanes& batch = light ? single : all;
+      if (light)
+        for (const int i : split) {
+          if (slot == VertexDraws::kLight) samplers[i].getSplits2D(out[i].lightSets, out[i].light);
+          else samplers[i].getSplits1D(out[i].lightSets, out[i].lightChoice);
+        }
       const bool is2D = slot == VertexDraws::kLight || slot == VertexDraws::kBsdf;
-      if (is2D) CmjSampler::get2D(samplers, lanes, n, xy); else CmjSampler::get1D(samplers, lanes, n, x);
-      for (int k = 0; k < n; ++k) {
-        const int i = lanes[k];
+      if (is2D) CmjSampler::get2D(samplers, batch.lane, batch.n, xy); else CmjSampler::get1D(samplers, batch.lane, batch.n, x);
+      for (const int i : batch) {
         VertexDraws& d = out[i];
         switch (slot) {
           case VertexDraws::kLightChoice: d.lightChoice[0] = x[i]; break;

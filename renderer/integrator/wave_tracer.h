@@ -7,16 +7,6 @@
 
 namespace glossy {
 
-// A list of a wave's lanes.
-struct Lanes {
-  int lane[kWaveSize];
-  int n = 0;
-  void add(int i) { lane[n++] = i; }
-  static Lanes first(int n) { Lanes l; while (l.n < n) l.add(l.n); return l; }  // 0, 1, …, n − 1
-  const int* begin() const { return lane; }
-  const int* end() const { return lane + n; }
-};
-
 class SharedDraws;
 struct ObjectVertex;  // panel_split.h
 
@@ -54,6 +44,7 @@ class WaveTracer {
   LightSample lightSample_[kWaveSize];
   BrdfSample bsdfSample_[kWaveSize];
   VertexLight light_[kWaveSize];
+  int firstLight_[kWaveSize];  // where each lane's own set of light samples starts in light_ (lightOffset)
   BrdfValue value_[kWaveSize];
   Ray shadow_[kWaveSize];
   bool shadowed_[kWaveSize], occluded_[kWaveSize];

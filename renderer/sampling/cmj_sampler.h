@@ -18,6 +18,7 @@
 #include <bit>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace glossy {
 
@@ -91,11 +92,11 @@ inline double belowOne(double x) { return x < 1.0 ? x : 0x1.fffffffffffffp-1; }
 // Thin columns are 1/N wide everywhere; thin rows split a column's cells among the columns of its height.
 class CmjPattern {
  public:
-  // splits > 1: the pattern also holds one of count · splits points, from which a sample may take that
-  // many draws of one dimension (CmjSampler::getSplit2D).
+  // splits > 1: the pattern also holds one of count · k points for each k ≤ splits, from which a sample
+  // may take k draws of one dimension (CmjSampler::getSplit2D, getSplits2D).
   explicit CmjPattern(uint32_t count, uint32_t splits = 1) : count_(count == 0 ? 1 : count) {
-    if (splits > 1) split_ = std::make_shared<const CmjPattern>(count_ * splits);
     splits_ = splits > 1 ? splits : 1;
+    for (uint32_t k = 2; k <= splits_; ++k) splitBy_.push_back(std::make_shared<const CmjPattern>(count_ * k));
     uint32_t root = 1;
     while ((root + 1) * (root + 1) <= count_) ++root;
     // A full grid if there is one (N < 4 has only 1 × N), else ⌊√N⌋ columns.
@@ -122,7 +123,9 @@ class CmjPattern {
   uint32_t wideColumns() const { return bands_[0].columns; }  // the first r columns hold rows() + 1 cells
   uint32_t splits() const { return splits_; }
   // The pattern of count() · splits() points; this one when splits() is 1.
-  const CmjPattern& split() const { return split_ ? *split_ : *this; }
+  const CmjPattern& split() const { return split(splits_); }
+  // The pattern of count() · k points, 1 ≤ k ≤ splits(); this one when k is 1.
+  const CmjPattern& split(uint32_t k) const { return k <= 1 ? *this : *splitBy_[k - 2]; }
 
  private:
   friend class CmjSampler;
@@ -138,7 +141,7 @@ class CmjPattern {
     double perThinRow = 1.0;  // 1 / (height · columns): a thin row's height
   };
   uint32_t count_, columns_ = 1, rows_ = 1, splits_ = 1;
-  std::shared_ptr<const CmjPattern> split_;
+  std::vector<std::shared_ptr<const CmjPattern>> splitBy_;  // [k − 2]: the pattern of count · k points
   Band bands_[2];  // the wide columns (possibly none), then the narrow ones
   cmj_detail::PermutationRange countRange_;
   double perCount_ = 1.0;  // 1 / N
@@ -208,6 +211,21 @@ class CmjSampler {
     for (uint32_t j = 0; j < k; ++j) out[j] = point1D(pattern_->split(), p, index_ * k + j);
   }
   uint32_t splits() const { return pattern_->splits(); }
+  // Several sets of split draws of the next dimension: for each k whose bit k − 1 is set in `sets`
+  // (k ≤ splits()), in increasing k, k draws from the pattern of N·k points, as getSplit2D with that many
+  // splits would give them; each set is stratified on its own. A set of one is get2D()'s value.
+  void getSplits2D(uint32_t sets, Vec2* out) {
+    const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
+    for (uint32_t k = 1; sets != 0; ++k, sets >>= 1)
+      if (sets & 1u)
+        for (uint32_t j = 0; j < k; ++j) *out++ = point2D(pattern_->split(k), p, index_ * k + j);
+  }
+  void getSplits1D(uint32_t sets, double* out) {
+    const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
+    for (uint32_t k = 1; sets != 0; ++k, sets >>= 1)
+      if (sets & 1u)
+        for (uint32_t j = 0; j < k; ++j) *out++ = point1D(pattern_->split(k), p, index_ * k + j);
+  }
 
   // The same draws for many samplers at once: out[lanes[k]] = samplers[lanes[k]].get2D() (get1D), for
   // k < n, the same values. The lanes' hashes and permutations are computed stage by stage for all of them
