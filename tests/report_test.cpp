@@ -55,13 +55,6 @@ std::vector<fs::path> pages(const fs::path& site) {
   return out;
 }
 
-// Every src= and href= of a page, as written.
-std::vector<std::string> references(const std::string& html) {
-  std::vector<std::string> refs;
-  static const std::regex ref(R"([ ](?:src|href|data-src|data-measured-src)="([^"]*)\")");
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), ref); it != std::sregex_iterator(); ++it) refs.push_back((*it)[1]);
-  return refs;
-}
 
 }  // namespace
 
@@ -80,7 +73,7 @@ TEST(ReportCli, EveryImageAndLinkOfEveryPageIsInTheSite) {
     const std::string html = readText(page);
     EXPECT_EQ(html.find("http://"), std::string::npos) << page;  // nothing from the network
     EXPECT_EQ(html.find("https://"), std::string::npos) << page;
-    for (const std::string& ref : references(html)) {
+    for (const std::string& ref : htmlReferences(html)) {
       if (ref.starts_with("data:")) continue;
       EXPECT_EQ(ref.find(".."), ref.starts_with("../../") ? 0u : std::string::npos) << page << ": " << ref;
       const fs::path target = (page.parent_path() / ref).lexically_normal();

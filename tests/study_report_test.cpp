@@ -40,12 +40,6 @@ resamples = 100
   return dir;
 }
 
-std::vector<std::string> references(const std::string& html) {
-  std::vector<std::string> refs;
-  static const std::regex ref(R"([ ](?:src|href|data-src|data-measured-src)="([^"]*)\")");
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), ref); it != std::sregex_iterator(); ++it) refs.push_back((*it)[1]);
-  return refs;
-}
 
 }  // namespace
 
@@ -87,7 +81,7 @@ TEST(StudyReport, EveryRowLinksToItsSheetsPageAndEveryLinkIsInTheSite) {
   for (const auto& e : fs::recursive_directory_iterator(site)) {
     if (e.path().extension() != ".html") continue;
     const std::string html = readText(e.path());
-    for (const std::string& ref : references(html)) {
+    for (const std::string& ref : htmlReferences(html)) {
       if (ref.starts_with("data:")) continue;
       const fs::path target = (e.path().parent_path() / ref).lexically_normal();
       EXPECT_TRUE(fs::is_regular_file(target)) << e.path() << " refers to " << ref << ", which is not in the site";

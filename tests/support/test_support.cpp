@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 #include <random>
+#include <regex>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -223,6 +224,13 @@ std::pair<Vec3, Vec3> fromHalfDiff(double thetaH, double thetaD, double phiD, do
   const double hl = L.x * H.x + L.y * H.y + L.z * H.z;
   const Vec3 V = 2.0 * hl * H - L;
   return {L, V};
+}
+
+std::vector<std::string> htmlReferences(const std::string& html) {
+  std::vector<std::string> refs;
+  static const std::regex ref(R"([ ](?:src|href|data-src|data-measured-src)="([^"]*)\")");
+  for (auto it = std::sregex_iterator(html.begin(), html.end(), ref); it != std::sregex_iterator(); ++it) refs.push_back((*it)[1]);
+  return refs;
 }
 
 }  // namespace glossy::test

@@ -69,6 +69,8 @@ std::string readText(const std::filesystem::path& path);
 
 // Rows of a CSV file with a header line, as maps from column name to text.
 std::vector<std::map<std::string, std::string>> readCsv(const std::filesystem::path& path);
+// Every src=, href=, data-src= and data-measured-src= of an HTML page, as written.
+std::vector<std::string> htmlReferences(const std::string& html);
 
 // The bytes of a MERL .binary whose stored (unscaled) value at bin (θh, θd, φd) is f(θh, θd, φd).
 using MerlFiller = std::function<Rgb(int thetaH, int thetaD, int phiD)>;
