@@ -37,7 +37,10 @@ constexpr int kSheetFormat = 3;  // 3: warnings, the noise-floor row
 // them; control: the tiles of every pass, its total set when the passes are known up front, a fixed --spp;
 // cancelled, renderSheet stops between tiles and throws Cancelled), and how the passes end.
 struct SheetSettings : RenderSettings {
-  SheetSettings() { width = height = 256; }
+  // Every panel takes the same light samples at the object (--light-samples), not its BRDF's own count: the
+  // panels then share those samples as well as the paths, their noise cancels in the differences against
+  // the measured panel, and the intervals stay narrow (docs/sheets.md, "The panels are rendered together").
+  SheetSettings() { width = height = 256; lightSamplesPerBrdf = false; }
   // > 0: render in passes until this wall-clock budget per panel (so × the panels rendered) is spent.
   double secondsPerPanel = 0.0;
   // > 0: render in passes until every analytic panel's relative-RMSE interval has at most this half-width,
