@@ -25,6 +25,15 @@ std::string formatted(const char* format, T... values) {
 // quoting a binary file stays one readable line while names in any language pass.
 std::string printableLine(const std::string& text, size_t maxLength = 300);
 
+// `text` as one CSV field (RFC 4180): quoted, with its quotes doubled, when it holds a comma, a quote or a
+// line break.
+inline std::string csvField(std::string_view text) {
+  if (text.find_first_of(",\"\n\r") == std::string_view::npos) return std::string(text);
+  std::string q = "\"";
+  for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
 // `text` for an error message: at most 40 characters, so a 309-digit number does not fill the screen.
 inline std::string shortened(std::string_view text) {
   return text.size() <= 40 ? std::string(text) : std::string(text.substr(0, 37)) + "...";

@@ -160,8 +160,7 @@ BatchSheet renderBatchSheet(const Stage& stage, const std::filesystem::path& mat
 }
 
 // A measured panel, with its table's loading, its sampler and the error figures it brings, costs about
-// kMeasuredPanelCost analytic panels (alum-bronze's default sheet: 25.3 CPU seconds with it, 17.8 without;
-// docs/cluster.md).
+// kMeasuredPanelCost analytic panels (measured in docs/cluster.md, "Expected cost").
 constexpr double kMeasuredPanelCost = 2.5;
 
 double sheetCost(const MaterialFile& m, const SheetJob& job) {

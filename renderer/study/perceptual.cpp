@@ -1,10 +1,10 @@
 #include "renderer/study/perceptual.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/input_file.h"
 #include "materials/core/text.h"
 
 #include <cmath>
-#include <fstream>
 #include <set>
 #include <sstream>
 
@@ -16,13 +16,9 @@ namespace {
 constexpr std::uintmax_t kMaxBytes = 4u << 20;
 
 std::vector<std::string> readLines(const std::filesystem::path& file) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(file, ec);
-  if (ec) throw InputError(file.string() + ": cannot read the perceptual data: " + ec.message());
-  if (size > kMaxBytes) throw InputError(file.string() + ": " + std::to_string(size) + " bytes, more than a perceptual table holds");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string() + ": cannot open the perceptual data");
+  const std::string text = readInputFile(file, kMaxBytes, "perceptual table");
   std::vector<std::string> lines;
+  std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     lines.push_back(line);

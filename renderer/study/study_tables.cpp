@@ -14,32 +14,60 @@ using Opt = std::optional<double>;
 
 Json num(const Opt& v) { return v ? Json(*v) : Json(nullptr); }
 
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
+// A row's fields in the files' order, declared once: the CSV's column, the JSON's key, the value.
+struct Column {
+  const char* csv;
+  const char* json;
+  Json (*value)(const StudyRow&);
+};
 
-std::string csvNum(const Opt& v) { return v ? formatted("%.17g", *v) : ""; }
+const Column kColumns[] = {
+    {"material", "material", [](const StudyRow& r) { return Json(r.material); }},
+    {"database", "database", [](const StudyRow& r) { return Json(r.database); }},
+    {"material_class", "materialClass", [](const StudyRow& r) { return Json(r.materialClass); }},
+    {"lighting", "lighting", [](const StudyRow& r) { return Json(r.lighting); }},
+    {"scene", "scene", [](const StudyRow& r) { return Json(r.scene); }},
+    {"layer", "layer", [](const StudyRow& r) { return Json(r.layer); }},
+    {"label", "label", [](const StudyRow& r) { return Json(r.label); }},
+    {"fit", "fit", [](const StudyRow& r) { return Json(r.fit); }},
+    {"fit_metric", "fitMetric", [](const StudyRow& r) { return Json(r.fitMetric); }},
+    {"fit_source", "fitSource", [](const StudyRow& r) { return Json(r.fitSource); }},
+    {"e1", "e1", [](const StudyRow& r) { return num(r.e1); }},
+    {"e2", "e2", [](const StudyRow& r) { return num(r.e2); }},
+    {"rrmse", "rrmse", [](const StudyRow& r) { return num(r.rrmse); }},
+    {"rrmse_lo", "rrmseLo", [](const StudyRow& r) { return num(r.rrmseLo); }},
+    {"rrmse_hi", "rrmseHi", [](const StudyRow& r) { return num(r.rrmseHi); }},
+    {"flip", "flip", [](const StudyRow& r) { return num(r.flip); }},
+    {"flip_lo", "flipLo", [](const StudyRow& r) { return num(r.flipLo); }},
+    {"flip_hi", "flipHi", [](const StudyRow& r) { return num(r.flipHi); }},
+    {"luminance_ratio", "luminanceRatio", [](const StudyRow& r) { return num(r.luminanceRatio); }},
+    {"closest", "closest", [](const StudyRow& r) { return Json(r.closest); }},
+    {"tied", "tied", [](const StudyRow& r) { return Json(r.tied); }},
+    {"warning", "warning", [](const StudyRow& r) { return Json(r.warning); }},
+    {"sheet", "sheet", [](const StudyRow& r) { return Json(r.sheet); }},
+    {"width", "width", [](const StudyRow& r) { return Json(r.width); }},
+    {"height", "height", [](const StudyRow& r) { return Json(r.height); }},
+    {"spp", "spp", [](const StudyRow& r) { return Json(r.spp); }},
+    {"seed", "seed", [](const StudyRow& r) { return Json(r.seed); }},
+};
+
+// A value as its CSV field: a figure in full (%.17g), absent as an empty field, a flag as 1 or 0.
+std::string csvCell(const Json& v) {
+  if (v.is_null()) return "";
+  if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
+  if (v.is_number_float()) return formatted("%.17g", v.get<double>());
+  if (v.is_number()) return v.dump();
+  return csvField(v.get<std::string>());
+}
 
 }  // namespace
 
 std::string rowsCsv(std::span<const StudyRow> rows) {
-  std::string out =
-      "material,database,material_class,lighting,scene,layer,label,fit,fit_metric,fit_source,e1,e2,rrmse,rrmse_lo,rrmse_hi,"
-      "flip,flip_lo,flip_hi,luminance_ratio,closest,tied,warning,sheet,width,height,spp,seed\n";
+  std::string out;
+  for (const Column& c : kColumns) out.append(out.empty() ? "" : ",").append(c.csv);
+  out += '\n';
   for (const StudyRow& r : rows) {
-    const std::vector<std::string> f = {r.material, r.database, r.materialClass, r.lighting, r.scene, r.layer, r.label,
-                                        r.fit, r.fitMetric, r.fitSource, csvNum(r.e1), csvNum(r.e2), csvNum(r.rrmse),
-                                        csvNum(r.rrmseLo), csvNum(r.rrmseHi), csvNum(r.flip), csvNum(r.flipLo),
-                                        csvNum(r.flipHi), csvNum(r.luminanceRatio), r.closest ? "1" : "0",
-                                        r.tied ? "1" : "0", r.warning, r.sheet, std::to_string(r.width),
-                                        std::to_string(r.height), std::to_string(r.spp), std::to_string(r.seed)};
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      if (i) out += ',';
-      out += csvField(f[i]);
-    }
+    for (const Column& c : kColumns) out.append(&c == kColumns ? "" : ",").append(csvCell(c.value(r)));
     out += '\n';
   }
   return out;
@@ -49,34 +77,8 @@ nlohmann::ordered_json rowsJson(std::span<const StudyRow> rows) {
   Json out = Json::array();
   for (const StudyRow& r : rows) {
     Json j;
-    j["material"] = r.material;
-    j["database"] = r.database;
-    j["materialClass"] = r.materialClass;
-    j["lighting"] = r.lighting;
-    j["scene"] = r.scene;
-    j["layer"] = r.layer;
-    j["label"] = r.label;
-    j["fit"] = r.fit;
-    j["fitMetric"] = r.fitMetric;
-    j["fitSource"] = r.fitSource;
-    j["e1"] = num(r.e1);
-    j["e2"] = num(r.e2);
-    j["rrmse"] = num(r.rrmse);
-    j["rrmseLo"] = num(r.rrmseLo);
-    j["rrmseHi"] = num(r.rrmseHi);
-    j["flip"] = num(r.flip);
-    j["flipLo"] = num(r.flipLo);
-    j["flipHi"] = num(r.flipHi);
-    j["luminanceRatio"] = num(r.luminanceRatio);
-    j["closest"] = r.closest;
-    j["tied"] = r.tied;
-    j["warning"] = r.warning;
-    j["sheet"] = r.sheet;
-    j["width"] = r.width;
-    j["height"] = r.height;
-    j["spp"] = r.spp;
-    j["seed"] = r.seed;
-    out.push_back(j);
+    for (const Column& c : kColumns) j[c.json] = c.value(r);
+    out.push_back(std::move(j));
   }
   return out;
 }
