@@ -48,6 +48,7 @@ TEST(StudyReport, EveryRowLinksToItsSheetsPageAndEveryLinkIsInTheSite) {
   const fs::path site = tmp / "site";
   const RunResult r = runGlossy({"report", studyDir().string(), "-o", site.string()});
   ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("4 sheets of 2 materials"), std::string::npos) << "each material under two lightings: " << r.err;
   const std::string index = readText(site / "index.html");
   const std::vector<study::StudyRow> rows = study::readStudyRows(studyDir());
   ASSERT_EQ(rows.size(), 2u * 2u * 2u);

@@ -1,5 +1,6 @@
 // glossy report: a static, offline HTML site over a folder of sheets and their plots
 // (renderer/report/report_site.h; docs/report.md).
+#include "materials/core/text.h"
 #include "renderer/util/output_lock.h"
 #include "renderer/app/destination.h"
 #include "renderer/cli/command.h"
@@ -29,8 +30,9 @@ int runReport(const ReportCliOptions& o) {
   checkOutputFolder(o.site, "-o");
   const OutputLock lock(o.site, "-o");
   const report::ReportResult r = report::writeReport(options);
-  std::fprintf(stderr, "glossy: wrote %s/index.html: %zu materials, %zu images, %zu plot files\n", o.site.c_str(), r.materials, r.images,
-               r.plots);
+  const std::string sheets = r.sheets == r.materials.size() ? formatted("%zu materials", r.sheets)
+                                                             : formatted("%zu sheets of %zu materials", r.sheets, r.materials.size());
+  std::fprintf(stderr, "glossy: wrote %s/index.html: %s, %zu images, %zu plot files\n", o.site.c_str(), sheets.c_str(), r.images, r.plots);
   return 0;
 }
 

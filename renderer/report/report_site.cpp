@@ -109,7 +109,8 @@ void addSheetSiteFiles(const SheetSite& s, const std::string& prefix, std::vecto
 
 void writeSheetSite(const SheetSite& s, const fs::path& root, const ReportOptions& options, ReportResult& result) {
   const std::vector<SheetRecord>& sheets = s.sheets;
-  result.materials += sheets.size();
+  result.sheets += sheets.size();
+  for (const SheetRecord& sheet : sheets) result.materials.insert(sheet.name);
   std::set<fs::path> written;
   for (size_t k = 0; k < sheets.size(); ++k) {
     const SheetRecord& sheet = sheets[k];

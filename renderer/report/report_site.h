@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ struct ReportOptions {
 };
 
 struct ReportResult {
-  size_t materials = 0, images = 0, plots = 0;
+  size_t sheets = 0, images = 0, plots = 0;
+  std::set<std::string> materials;  // a study has a sheet of each under every lighting and scene
 };
 
 // Throws InputError (naming the file or option) for bad input: SHEETS_DIR missing or without sheets, a sheet
