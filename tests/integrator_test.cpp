@@ -392,4 +392,30 @@ TEST(Integrator, ALightJustAboveASurfaceStillLightsIt) {
   EXPECT_NEAR(img.at(0, 0)[0], want, 0.01 * want);
 }
 
+// A pixel mask (a sheet's noise-floor row renders only the object's pixels): the marked pixels are the
+// full render's, each its own samples in order (up to rounding where a wave's paths rejoin their sums),
+// the others stay black and cost nothing.
+TEST(Integrator, APixelMaskRendersOnlyItsPixels) {
+  const Environment sky = Environment::makeDefault();
+  const Stage stage(CookTorrance{Rgb(0.1, 0.08, 0.05), Rgb(0.8, 0.6, 0.4), 0.12, 1.6}, true);
+  const Camera camera = perspective({0, 1.5, 5}, {0, 0, 0}, 0.7);
+  RenderSettings settings = quiet(40, 32, 9);
+  const RgbImage whole = renderScene(stage.description, stage.brdfs, &sky, camera, settings);
+  std::vector<char> mask(size_t(40 * 32));
+  for (size_t i = 0; i < mask.size(); ++i) mask[i] = (i / 3 + i / 40) % 2;  // stripes, across tile edges
+  settings.pixels = &mask;
+  const RgbImage part = renderScene(stage.description, stage.brdfs, &sky, camera, settings);
+  size_t lit = 0;
+  for (int y = 0; y < 32; ++y)
+    for (int x = 0; x < 40; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const float want = mask[size_t(y * 40 + x)] ? whole.at(x, y)[c] : 0.0f;
+        EXPECT_NEAR(part.at(x, y)[c], want, 1e-5f * std::max(1.0f, whole.at(x, y)[c])) << x << "," << y;
+        lit += want > 0.0f;
+      }
+  EXPECT_GT(lit, 1000u);
+  mask.pop_back();
+  EXPECT_THROW(renderScene(stage.description, stage.brdfs, &sky, camera, settings), std::invalid_argument);
+}
+
 }  // namespace glossy::test

@@ -16,6 +16,7 @@
 #include <chrono>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 namespace glossy {
@@ -64,9 +65,14 @@ class TileRenderer {
   int nextWave() {
     const int64_t spp = settings_.spp;
     int lanes = 0;
-    for (; lanes < kWaveSize && next_ < count_ * spp; ++lanes, ++next_) {
-      lanePixel_[lanes] = int(next_ / spp);
-      samplers_[lanes] = CmjSampler(pattern_, pixels_[size_t(lanePixel_[lanes])], uint32_t(next_ % spp));
+    while (lanes < kWaveSize && next_ < count_ * spp) {
+      const int p = int(next_ / spp);
+      if (settings_.pixels && !(*settings_.pixels)[size_t(y0_ + p / width_) * size_t(settings_.width) + size_t(x0_ + p % width_)]) {
+        next_ = int64_t(p + 1) * spp;  // not traced: its samples are skipped
+        continue;
+      }
+      lanePixel_[lanes] = p;
+      samplers_[lanes++] = CmjSampler(pattern_, pixels_[size_t(p)], uint32_t(next_++ % spp));
     }
     CmjSampler::get2D(samplers_, Lanes::first(lanes).lane, lanes, film_);
     for (int i = 0; i < lanes; ++i)
@@ -123,6 +129,8 @@ RgbImage render(const RenderScene& scene, const Camera& camera, const RenderSett
 std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Camera& camera, const RenderSettings& settings,
                                    RenderStats& stats) {
   const auto start = std::chrono::steady_clock::now();
+  if (settings.pixels && settings.pixels->size() != size_t(settings.width) * size_t(settings.height))
+    throw std::invalid_argument("renderPanels: the pixel mask is not width × height");
   std::vector<RgbImage> images(panels.size(), RgbImage(settings.width, settings.height));
   const LightSet lights(LightSources{*panels.front().description, panels.front().environment, panels.front().bvh->boundsRadius()});
   std::vector<PathContext> contexts;

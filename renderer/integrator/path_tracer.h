@@ -41,6 +41,9 @@ struct RenderSettings {
   bool cosineBrdfSampling = false;
   // One path at a time (path_reference.cpp) instead of waves: the same image, bit for bit, more slowly.
   bool reference = false;
+  // Optional, width × height: only the pixels marked here are traced (the others stay black), for a render
+  // whose figures look at part of the image (a sheet's noise-floor row: the object's pixels).
+  const std::vector<char>* pixels = nullptr;
   // Optional: counts each finished tile in `done` and stops early, leaving the image unfinished, when
   // cancelled. The caller owns it and sets its total (renderTiles).
   JobControl* control = nullptr;

@@ -272,7 +272,10 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
   sheet.warnings = figureWarnings(figures.panels);
   sheet.verdict = verdictUnderWarnings(figures.verdict, sheet.warnings);
 
-  // The noise-floor row: the measured panel again, from another seed, with the samples of each replicate.
+  // The noise-floor row: the measured panel again, from another seed, with the samples of each replicate,
+  // over the object's pixels, where its figures look. Off the object it keeps the measured panel's pixels,
+  // as every panel does (a path that never meets the object is the same in all), so that ꟻLIP's filters
+  // see at the object's edge what they see in a model's panel.
   if (measuredScene != rendered.end() && done > 0) {
     PanelRender& floor = sheet.noiseFloor;
     floor.panel = sheet.panels[*measuredScene].panel;
@@ -285,8 +288,12 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     for (int j = 0; j < sheet.replicates; ++j) {
       RenderSettings r = settings;
       r.seed = noiseFloorSeed(settings.seed), r.spp = done, r.firstSample = j * done, r.progress = false;
+      r.pixels = &sheet.objectMask;
       RenderStats stats;
       floor.replicates.push_back(std::move(renderPanels(alone, *scene.camera, r, stats).front()));
+      const RgbImage& measured = sheet.panels[*measuredScene].replicates[size_t(j)];
+      for (size_t i = 0; i < sheet.objectMask.size(); ++i)
+        if (!sheet.objectMask[i]) std::copy_n(&measured.pixels[3 * i], 3, &floor.replicates.back().pixels[3 * i]);
       if (settings.control && settings.control->cancelRequested()) throw Cancelled();
     }
     const Comparison self = compareToMeasured({floor.replicates}, sheet.panels[*measuredScene].replicates, sheet.objectMask);
