@@ -1,8 +1,12 @@
-// Next-event estimation, the direct-light step of a vertex: its light samples (a light chosen by power,
-// a point on it, the shadow ray), then each weighed by the vertex's BRDF and by multiple importance
-// sampling against the BRDF's own sampling (the power heuristic with sample counts; weight 1 for a delta
-// light, which no BSDF sample finds). The samples and their shadow rays do not depend on the BRDF, so a
-// sheet's panels share them (panel_split.h); the BRDF's weighing is each panel's.
+// Next-event estimation, the direct-light step of a vertex, as pbrt-v4's PathIntegrator::SampleLd: its
+// light samples (a light chosen by power, a point on it, the shadow ray), then each weighed by the
+// vertex's BRDF and by multiple importance sampling against the BRDF's own sampling (the power heuristic
+// with sample counts; weight 1 for a delta light, which no BSDF sample finds). Written once, for a set of
+// vertices (lanes.h): the reference's one vertex (sampleLight, addDirectLight) or a wave's, each stage one
+// batch over the set (the lights' samples, the shadow rays, the BRDF's values), the k-th light samples of
+// all its vertices at a time, so a vertex gets the same numbers either way. The samples and their shadow
+// rays do not depend on the BRDF, so a sheet's panels share them (panel_split.h); the weighing is each
+// panel's.
 #pragma once
 
 #include "renderer/integrator/shading_point.h"
@@ -57,38 +61,110 @@ struct VertexLight {
   LightPath path[kMaxLightDraws];
   bool visible[kMaxLightDraws] = {};  // the sample arrived from above the surface and nothing blocks it
 };
+
+// The samples of one light for a group of lanes, from their points and draws: Light::sample, unless a
+// store of samples already made stands in front of it (SharedDraws::sampleLight).
+inline void drawLightSamples(const Light* light, const Receiver* at, const Vec2* u, const Lanes& group, LightSample* out) {
+  light->sample(at, u, group.lane, group.n, out);
+}
+
+// The step for the vertices of a set of lanes below N, with their scratch: a wave's tracer keeps one, the
+// reference makes one of a lane per vertex.
+template <int N>
+class DirectLight {
+ public:
+  // light[i] for the lanes: the light samples of draws[i] at sp[i] and their shadow rays' verdicts. A
+  // group's samples of one light are drawn by draw (drawLightSamples' signature); the shadow rays are
+  // traced as Embree packets where N is whole packets (a wave's), else one at a time.
+  template <class Draw>
+  void sample(const PathContext& context, const Lanes& lanes, const ShadingPoint* sp, const VertexDraws* draws,
+              VertexLight* light, Draw&& draw) {
+    int most = 0;
+    for (const int i : lanes) {
+      light[i].sets = draws[i].lightSets;
+      light[i].count = lightDraws(draws[i].lightSets);
+      most = std::max(most, light[i].count);
+      from_[i] = receiver(sp[i]);
+    }
+    for (int k = 0; k < most; ++k) {
+      Lanes chosen;
+      for (const int i : lanes) {
+        if (k >= light[i].count) continue;
+        light[i].visible[k] = false;
+        chosen_[i] = context.lights.choose(draws[i].lightChoice[k]);
+        u_[i] = draws[i].light[k];
+        if (chosen_[i]) chosen.add(i);
+      }
+      forEachGroup(chosen, [&](int i) { return chosen_[i].light; },
+                   [&](const Light* l, const Lanes& group) { draw(l, from_, u_, group, sample_); });
+      std::fill(traced_, traced_ + N, false);
+      for (const int i : chosen) {
+        traced_[i] = toLight(sp[i], chosen_[i], sample_[i], light[i].path[k]);
+        shadow_[i] = light[i].path[k].shadow;
+      }
+      if constexpr (N % kPacketSize == 0)
+        for (int p = 0; p < N; p += kPacketSize) context.scene.bvh->occluded(traced_ + p, shadow_ + p, occluded_ + p);
+      else
+        for (const int i : chosen) occluded_[i] = traced_[i] && context.scene.bvh->occluded(shadow_[i]);
+      for (const int i : chosen) light[i].visible[k] = traced_[i] && !occluded_[i];
+    }
+  }
+
+  // Each lane's own set of its light samples (sp[i].lightSamples of them, light_count.h) weighed by its
+  // BRDF, a batch per BRDF, and added to radiance[i] with the path's throughput.
+  void add(const RenderSettings& settings, const Lanes& lanes, const ShadingPoint* sp, const VertexLight* light,
+           const Rgb* throughput, Rgb* radiance) {
+    int most = 0;
+    for (const int i : lanes) {
+      most = std::max(most, sp[i].lightSamples);
+      first_[i] = lightOffset(light[i].sets, sp[i].lightSamples);
+    }
+    for (int k = 0; k < most; ++k) {
+      Lanes lit;
+      for (const int i : lanes)
+        if (k < sp[i].lightSamples && light[i].visible[first_[i] + k]) lit.add(i);
+      forEachGroup(lit, [&](int i) { return sp[i].brdf; }, [&](const Brdf* brdf, const Lanes& group) {
+        for (int g = 0; g < group.n; ++g) {
+          wi_[g] = light[group.lane[g]].path[first_[group.lane[g]] + k].wiLocal;
+          wo_[g] = sp[group.lane[g]].woLocal;
+        }
+        if (settings.cosineBrdfSampling)
+          for (int g = 0; g < group.n; ++g) value_[g] = valueToward(settings, sp[group.lane[g]], wi_[g]);
+        else
+          evalPdfBatch(*brdf, wi_, wo_, value_, group.n);
+        for (int g = 0; g < group.n; ++g) {
+          const int i = group.lane[g];
+          const LightPath& l = light[i].path[first_[i] + k];
+          if (maxComponent(value_[g].f) <= 0.0) continue;
+          const double pdf = sp[i].lightSamples * l.pdf;
+          const double w = l.delta ? 1.0 : powerHeuristic(pdf, value_[g].pdf);
+          radiance[i] += throughput[i] * (value_[g].f * l.radiance * (l.wiLocal.z * w / pdf));
+        }
+      });
+    }
+  }
+
+ private:
+  Receiver from_[N];
+  ChosenLight chosen_[N];
+  Vec2 u_[N];
+  LightSample sample_[N];
+  Ray shadow_[N];
+  bool traced_[N], occluded_[N];
+  int first_[N];  // where each lane's own set starts among its light samples (lightOffset)
+  Vec3 wi_[N], wo_[N];  // the BRDF's batch, packed
+  BrdfValue value_[N];
+};
+
+// The step for one vertex, the reference's: its light samples, then their light weighed by its BRDF.
 inline VertexLight sampleLight(const PathContext& context, const ShadingPoint& sp, const VertexDraws& u) {
-  VertexLight v;
-  v.sets = u.lightSets;
-  v.count = lightDraws(u.lightSets);
-  for (int k = 0; k < v.count; ++k)
-    if (const ChosenLight chosen = context.lights.choose(u.lightChoice[k]))
-      v.visible[k] = toLight(sp, chosen, chosen.light->sample(receiver(sp), u.light[k]), v.path[k]) &&
-                     !context.scene.bvh->occluded(v.path[k].shadow);
-  return v;
+  VertexLight light;
+  DirectLight<1>().sample(context, Lanes::first(1), &sp, &u, &light, drawLightSamples);
+  return light;
 }
-
-// What one of a vertex's `count` light samples brings if nothing blocks it, MIS-weighted, before the
-// path's throughput. False when that is nothing.
-inline bool lightContribution(const LightPath& light, int count, const BrdfValue& value, Rgb& contribution) {
-  if (maxComponent(value.f) <= 0.0) return false;
-  const double pdf = count * light.pdf;
-  const double w = light.delta ? 1.0 : powerHeuristic(pdf, value.pdf);
-  contribution = value.f * light.radiance * (light.wiLocal.z * w / pdf);
-  return true;
-}
-
-// The vertex's light samples weighed by its BRDF, added to radiance with the path's throughput: the set
-// of sp.lightSamples of them.
 inline void addDirectLight(const RenderSettings& settings, const ShadingPoint& sp, const VertexLight& light,
                            const Rgb& throughput, Rgb& radiance) {
-  const int first = lightOffset(light.sets, sp.lightSamples);
-  for (int k = first; k < first + sp.lightSamples; ++k) {
-    Rgb contribution;
-    if (light.visible[k] &&
-        lightContribution(light.path[k], sp.lightSamples, valueToward(settings, sp, light.path[k].wiLocal), contribution))
-      radiance += throughput * contribution;
-  }
+  DirectLight<1>().add(settings, Lanes::first(1), &sp, &light, &throughput, &radiance);
 }
 
 }  // namespace glossy

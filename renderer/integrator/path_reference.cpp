@@ -1,8 +1,8 @@
 // The reference path tracer: one path, top to bottom, as pbrt-v4's PathIntegrator::Li. Unidirectional path
-// tracing with next-event estimation (light samples at a camera path's first vertex as many as its BRDF
-// takes, light_count.h, one at each deeper one, each of a light chosen by power) combined with BSDF sampling by multiple
-// importance sampling (power heuristic), and Russian roulette. The wave (wave_tracer.h) is this, batched;
-// a test holds the two to the same image bit for bit.
+// tracing with next-event estimation (direct_light.h: at a camera path's first vertex as many light samples
+// as its BRDF takes, light_count.h, one at each deeper one, each of a light chosen by power) combined with
+// BSDF sampling by multiple importance sampling (power heuristic), and Russian roulette. The wave
+// (wave_tracer.h) is this, batched; a test holds the two to the same image bit for bit.
 //
 // Depth follows Mitsuba 3: maxDepth counts path segments, so 1 shows only directly visible emitters, 2 adds
 // direct lighting, 3 one indirect bounce, and so on.
@@ -24,9 +24,8 @@ bool nextVertex(const PathContext& context, const Ray& ray, CmjSampler& sampler,
   }
   if (!arrive(context, ray, hit, depth, path, radiance, vertex.point)) return false;
   vertex.mesh = hit.mesh;
-  const int lane = 0;
   vertex.draws.lightSets = context.lightSetsAt(hit.mesh, depth);
-  drawVertices(&sampler, &lane, 1, DrawsUsed(context, depth), &vertex.draws);
+  drawVertices(&sampler, Lanes::first(1), DrawsUsed(context, depth), &vertex.draws);
   vertex.light = sampleLight(context, vertex.point, vertex.draws);
   return true;
 }

@@ -1,31 +1,14 @@
-// The wave (wave_tracer.h). Rays go to Embree as packets of kPacketSize lanes; the sampler's draws, the lights' samples and the
-// BRDFs' samples and values are batch calls, whose long chains of arithmetic and cache misses overlap
-// across lanes. Every lane takes the steps the reference takes, in its order, with the same draws, so
-// each lane's radiance is the reference's bit for bit.
+// The wave (wave_tracer.h). Rays go to Embree as packets of kPacketSize lanes; the sampler's draws, the
+// direct-light step (direct_light.h) and the BRDFs' samples are batch calls, whose long chains of
+// arithmetic and cache misses overlap across lanes. Every lane takes the steps the reference takes, in
+// its order, with the same draws, so each lane's radiance is the reference's bit for bit.
 #include "renderer/integrator/panel_split.h"
 
 #include <algorithm>
 
 namespace glossy {
 
-namespace {
-
 static_assert(kWaveSize % kPacketSize == 0, "a wave is whole Embree packets");
-
-// f(key, lanes, count) for each distinct key(i) among the lanes, its lanes in increasing order. A wave
-// mostly has one BRDF and one or two lights, so this is one or two passes.
-template <class Key, class F>
-void forEachGroup(const Lanes& lanes, Key key, F&& f) {
-  for (Lanes rest = lanes; rest.n > 0;) {
-    const auto k0 = key(rest.lane[0]);
-    Lanes group, others;
-    for (const int i : rest) (key(i) == k0 ? group : others).add(i);
-    f(k0, group.lane, group.n);
-    rest = others;
-  }
-}
-
-}  // namespace
 
 void WaveTracer::trace(Ray* rays, CmjSampler* samplers, int n, Rgb* radiance, ObjectVertex* stops) {
   bool alive[kWaveSize];
@@ -88,88 +71,32 @@ void WaveTracer::walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, R
     if (shared)
       shared->draw(depth, samplers, shading, DrawsUsed(context_, depth), draws_);
     else
-      drawVertices(samplers, shading.lane, shading.n, DrawsUsed(context_, depth), draws_);
-    sampleLights(depth, shading, shared);
+      drawVertices(samplers, shading, DrawsUsed(context_, depth), draws_);
+    direct_.sample(context_, shading, point_, draws_, light_,
+                   [&](const Light* light, const Receiver* at, const Vec2* u, const Lanes& group, LightSample* out) {
+                     if (shared) shared->sampleLight(depth, light, at, u, group, out);
+                     else drawLightSamples(light, at, u, group, out);
+                   });
     for (const int i : shading)
       if (stopping[i]) stops[i] = ObjectVertex{depth, path_[i], radiance[i], {hit_[i].mesh, point_[i], draws_[i], light_[i]}, samplers[i]};
     reflectAll(depth, reflecting, rays, alive, radiance);
   }
 }
 
-// light_ of the lanes: sampleLight, the j-th light samples of all lanes at a time, as batches per light and
-// shadow-ray packets; distant lights' first samples from `shared` where it keeps them (deeper vertices,
-// the only ones shared, take one).
-void WaveTracer::sampleLights(int depth, const Lanes& lanes, SharedDraws* shared) {
-  int most = 0;
-  for (const int i : lanes) {
-    light_[i].sets = draws_[i].lightSets;
-    light_[i].count = lightDraws(draws_[i].lightSets);
-    most = std::max(most, light_[i].count);
-    from_[i] = receiver(point_[i]);
-  }
-  for (int j = 0; j < most; ++j) {
-    Lanes sampled, drawn;
-    for (const int i : lanes) {
-      if (j >= light_[i].count) continue;
-      light_[i].visible[j] = false;
-      chosen_[i] = context_.lights.choose(draws_[i].lightChoice[j]);
-      if (!chosen_[i]) continue;
-      sampled.add(i);
-      uLight_[i] = draws_[i].light[j];
-      const Light* light = chosen_[i].light;
-      const LightSample* kept =
-          shared && light->distant() ? shared->find(depth, i, light, from_[i].normal, uLight_[i]) : nullptr;
-      if (kept)
-        lightSample_[i] = *kept;
-      else
-        drawn.add(i);
-    }
-    forEachGroup(drawn, [&](int i) { return chosen_[i].light; },
-                 [&](const Light* light, const int* group, int n) { light->sample(from_, uLight_, group, n, lightSample_); });
-    if (shared)
-      for (const int i : drawn)
-        if (chosen_[i].light->distant()) shared->keep(depth, i, chosen_[i].light, from_[i].normal, uLight_[i], lightSample_[i]);
-    std::fill(shadowed_, shadowed_ + kWaveSize, false);
-    for (const int i : sampled) {
-      shadowed_[i] = toLight(point_[i], chosen_[i], lightSample_[i], light_[i].path[j]);
-      shadow_[i] = light_[i].path[j].shadow;
-    }
-    for (int p = 0; p < kWaveSize; p += kPacketSize) context_.scene.bvh->occluded(shadowed_ + p, shadow_ + p, occluded_ + p);
-    for (const int i : sampled) light_[i].visible[j] = shadowed_[i] && !occluded_[i];
-  }
-}
-
-// reflect for the lanes: the BSDF samples and the BRDF's values toward the visible light samples, a batch
-// per BRDF; then the paths go on (alive).
+// reflect for the lanes: the direct light, then the BSDF samples, a batch per BRDF; then the paths go on
+// (alive).
 void WaveTracer::reflectAll(int depth, const Lanes& lanes, Ray* rays, bool* alive, Rgb* radiance) {
-  forEachGroup(lanes, [&](int i) { return point_[i].brdf; },
-               [&](const Brdf* brdf, const int* group, int n) { sampleBrdf(*brdf, group, n); });
-  int most = 0;
-  for (const int i : lanes) {
-    most = std::max(most, point_[i].lightSamples);
-    firstLight_[i] = lightOffset(light_[i].sets, point_[i].lightSamples);
-  }
-  // The light samples in the reference's order: the j-th of every lane's set, j = 0, 1, ….
-  for (int j = 0; j < most; ++j) {
-    Lanes lit;
-    for (const int i : lanes)
-      if (j < point_[i].lightSamples && light_[i].visible[firstLight_[i] + j]) lit.add(i);
-    forEachGroup(lit, [&](int i) { return point_[i].brdf; },
-                 [&](const Brdf* brdf, const int* group, int n) { evalBrdf(*brdf, j, group, n); });
-    for (const int i : lit) {
-      Rgb contribution;
-      if (lightContribution(light_[i].path[firstLight_[i] + j], point_[i].lightSamples, value_[i], contribution))
-        radiance[i] += path_[i].throughput * contribution;
-    }
-  }
+  for (const int i : lanes) throughput_[i] = path_[i].throughput;
+  direct_.add(context_.settings, lanes, point_, light_, throughput_, radiance);
+  forEachGroup(lanes, [&](int i) { return point_[i].brdf; }, [&](const Brdf* brdf, const Lanes& group) { sampleBrdf(*brdf, group); });
   for (const int i : lanes)
     alive[i] = continuePath(depth, context_.settings, point_[i], bsdfSample_[i], draws_[i], path_[i], rays[i]);
 }
 
-// bsdfSample_ of the lanes: sampleBsdf, as one batch.
-void WaveTracer::sampleBrdf(const Brdf& brdf, const int* lanes, int n) {
+// bsdfSample_ of a group of one BRDF: sampleBsdf, as one batch.
+void WaveTracer::sampleBrdf(const Brdf& brdf, const Lanes& group) {
   if (context_.settings.cosineBrdfSampling) {
-    for (int k = 0; k < n; ++k) bsdfSample_[lanes[k]] = sampleBsdf(context_.settings, point_[lanes[k]], draws_[lanes[k]]);
+    for (const int i : group) bsdfSample_[i] = sampleBsdf(context_.settings, point_[i], draws_[i]);
     return;
   }
   // Zeroed only because GCC cannot see that the batch reads the n lanes written.
@@ -177,30 +104,13 @@ void WaveTracer::sampleBrdf(const Brdf& brdf, const int* lanes, int n) {
   double uLobe[kWaveSize] = {};
   Vec2 u[kWaveSize] = {};
   BrdfSample samples[kWaveSize];
-  for (int k = 0; k < n; ++k) {
-    wo[k] = point_[lanes[k]].woLocal;
-    uLobe[k] = draws_[lanes[k]].lobe;
-    u[k] = draws_[lanes[k]].bsdf;
+  for (int g = 0; g < group.n; ++g) {
+    wo[g] = point_[group.lane[g]].woLocal;
+    uLobe[g] = draws_[group.lane[g]].lobe;
+    u[g] = draws_[group.lane[g]].bsdf;
   }
-  sampleBatch(brdf, wo, uLobe, u, samples, n);
-  for (int k = 0; k < n; ++k) bsdfSample_[lanes[k]] = samples[k];
-}
-
-// value_ of the lanes: valueToward the j-th light samples of their sets, as one batch.
-void WaveTracer::evalBrdf(const Brdf& brdf, int j, const int* lanes, int n) {
-  if (context_.settings.cosineBrdfSampling) {
-    for (int k = 0; k < n; ++k)
-      value_[lanes[k]] = valueToward(context_.settings, point_[lanes[k]], light_[lanes[k]].path[firstLight_[lanes[k]] + j].wiLocal);
-    return;
-  }
-  Vec3 wi[kWaveSize] = {}, wo[kWaveSize] = {};  // zeroed for GCC, as in sampleBrdf
-  BrdfValue values[kWaveSize];
-  for (int k = 0; k < n; ++k) {
-    wi[k] = light_[lanes[k]].path[firstLight_[lanes[k]] + j].wiLocal;
-    wo[k] = point_[lanes[k]].woLocal;
-  }
-  evalPdfBatch(brdf, wi, wo, values, n);
-  for (int k = 0; k < n; ++k) value_[lanes[k]] = values[k];
+  sampleBatch(brdf, wo, uLobe, u, samples, group.n);
+  for (int g = 0; g < group.n; ++g) bsdfSample_[group.lane[g]] = samples[g];
 }
 
 }  // namespace glossy

@@ -27,7 +27,7 @@ class SharedDraws {
   void draw(int depth, CmjSampler* samplers, const Lanes& lanes, DrawsUsed used, VertexDraws* out) {
     Lanes fresh;
     for (const int i : lanes) {
-      Entry& e = at(depth, i);
+      Entry& e = entry(depth, i);
       const CmjSampler::Key key = samplers[i].key();
       if (e.sampler == key) {
         out[i] = e.draws;
@@ -37,33 +37,37 @@ class SharedDraws {
         fresh.add(i);
       }
     }
-    drawVertices(samplers, fresh.lane, fresh.n, used, out);
-    for (const int i : fresh) at(depth, i).draws = out[i];
+    drawVertices(samplers, fresh, used, out);
+    for (const int i : fresh) entry(depth, i).draws = out[i];
   }
 
-  // The sample the distant `light` made toward `normal` from draw u for the lane at depth, if one is kept.
-  const LightSample* find(int depth, int lane, const Light* light, const Vec3& normal, Vec2 u) {
-    const Entry& e = at(depth, lane);
-    return e.light == light && e.normal == normal && e.u == u ? &e.sample : nullptr;
-  }
-  void keep(int depth, int lane, const Light* light, const Vec3& normal, Vec2 u, const LightSample& sample) {
-    Entry& e = at(depth, lane);
-    e.light = light;
-    e.normal = normal;
-    e.u = u;
-    e.sample = sample;
+  // drawLightSamples for the lanes at depth: a distant light's samples copied where the lane's kept sample
+  // is of the same light, normal and draw, drawn and kept elsewhere.
+  void sampleLight(int depth, const Light* light, const Receiver* at, const Vec2* u, const Lanes& group, LightSample* out) {
+    Lanes fresh;
+    for (const int i : group) {
+      const Kept& kept = entry(depth, i).kept;
+      if (light->distant() && kept.light == light && kept.normal == at[i].normal && kept.u == u[i]) out[i] = kept.sample;
+      else fresh.add(i);
+    }
+    drawLightSamples(light, at, u, fresh, out);
+    if (light->distant())
+      for (const int i : fresh) entry(depth, i).kept = {light, at[i].normal, u[i], out[i]};
   }
 
  private:
-  struct Entry {
-    CmjSampler::Key sampler;  // the state draws were drawn from (a default key matches no sampler)
-    VertexDraws draws;
+  struct Kept {
     const Light* light = nullptr;  // of sample; null: none kept
     Vec3 normal{0.0};
     Vec2 u{0.0};
     LightSample sample;
   };
-  Entry& at(int depth, int lane) { return entries_[size_t(std::min(depth, depths_ - 1)) * kWaveSize + size_t(lane)]; }
+  struct Entry {
+    CmjSampler::Key sampler;  // the state draws were drawn from (a default key matches no sampler)
+    VertexDraws draws;
+    Kept kept;
+  };
+  Entry& entry(int depth, int lane) { return entries_[size_t(std::min(depth, depths_ - 1)) * kWaveSize + size_t(lane)]; }
 
   int depths_;
   std::vector<Entry> entries_;  // [depth][lane]

@@ -12,15 +12,13 @@
 // count its panels take, all from the same dimensions, so each panel gets the draws it would get alone.
 #pragma once
 
+#include "renderer/integrator/lanes.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/sampling/cmj_sampler.h"
 
 #include <cstdint>
 
 namespace glossy {
-
-// Paths traced together by the wave, and the most lanes a batch draw takes.
-constexpr int kWaveSize = 128;
 
 struct VertexDraws {
   // The draws in the sampler's order, declared once: drawVertices takes them in this order, and their
@@ -42,16 +40,6 @@ inline int lightOffset(uint32_t sets, int count) {
 }
 inline int lightDraws(uint32_t sets) { return lightOffset(sets, kMaxLightSamples + 1); }
 
-// A list of a wave's lanes.
-struct Lanes {
-  int lane[kWaveSize];
-  int n = 0;
-  void add(int i) { lane[n++] = i; }
-  static Lanes first(int n) { Lanes l; while (l.n < n) l.add(l.n); return l; }  // 0, 1, …, n − 1
-  const int* begin() const { return lane; }
-  const int* end() const { return lane + n; }
-};
-
 // Which of the skippable draws a vertex at this depth uses.
 struct DrawsUsed {
   bool lightChoice, roulette;
@@ -59,25 +47,22 @@ struct DrawsUsed {
       : lightChoice(context.lights.hasChoice()), roulette(depth >= context.settings.rouletteDepth) {}
 };
 
-// The draws of a vertex for samplers[lanes[k]], k < n, into out[lanes[k]] (lanes < kWaveSize), whose
-// lightSets the caller has set, slot by slot, each a batch draw (cmj_sampler.h), which gives one sampler
-// (n = 1, the reference) the values of its scalar draws. The light slots of a lane that draws more than one
-// light sample take its sets of split draws (CmjSampler::getSplits2D) instead.
-inline void drawVertices(CmjSampler* samplers, const int* lanes, int n, DrawsUsed used, VertexDraws* out) {
+// The draws of a vertex for samplers[i] into out[i], i in lanes, whose lightSets the caller has set, slot by
+// slot, each a batch draw (cmj_sampler.h), which gives one sampler (a set of one, the reference) the values
+// of its scalar draws. The light slots of a lane that draws more than one light sample take its sets of
+// split draws (CmjSampler::getSplits2D) instead.
+inline void drawVertices(CmjSampler* samplers, const Lanes& lanes, DrawsUsed used, VertexDraws* out) {
   double x[kWaveSize];
   Vec2 xy[kWaveSize];
-  Lanes all, single, split;
-  for (int k = 0; k < n; ++k) {
-    all.add(lanes[k]);
-    (out[lanes[k]].lightSets == 1u ? single : split).add(lanes[k]);
-  }
+  Lanes single, split;
+  for (const int i : lanes) (out[i].lightSets == 1u ? single : split).add(i);
   for (int slot = 0; slot < VertexDraws::kDimensions; ++slot) {
     if ((slot == VertexDraws::kLightChoice && !used.lightChoice) || (slot == VertexDraws::kRoulette && !used.roulette)) {
       // Left as it was: the choice has one outcome (one light has all the power), roulette is not played.
-      for (int k = 0; k < n; ++k) samplers[lanes[k]].skip(1);
+      for (const int i : lanes) samplers[i].skip(1);
     } else {
       const bool light = slot == VertexDraws::kLightChoice || slot == VertexDraws::kLight;
-      const Lanes& batch = light ? single : all;
+      const Lanes& batch = light ? single : lanes;
       if (light)
         for (const int i : split) {
           if (slot == VertexDraws::kLight) samplers[i].getSplits2D(out[i].lightSets, out[i].light);

@@ -23,10 +23,8 @@ class WaveTracer {
 
  private:
   void walk(int depth, Ray* rays, CmjSampler* samplers, bool* alive, Rgb* radiance, ObjectVertex* stops);
-  void sampleLights(int depth, const Lanes& lanes, SharedDraws* shared);
   void reflectAll(int depth, const Lanes& lanes, Ray* rays, bool* alive, Rgb* radiance);
-  void sampleBrdf(const Brdf& brdf, const int* lanes, int n);
-  void evalBrdf(const Brdf& brdf, int j, const int* lanes, int n);
+  void sampleBrdf(const Brdf& brdf, const Lanes& group);
 
   const PathContext& context_;
   SharedDraws* shared_;
@@ -38,16 +36,11 @@ class WaveTracer {
   double pdf_[kWaveSize];
   ShadingPoint point_[kWaveSize];
   VertexDraws draws_[kWaveSize];
-  ChosenLight chosen_[kWaveSize];
-  Receiver from_[kWaveSize];  // the escaped rays' vertices; the shading points as their lights see them
-  Vec2 uLight_[kWaveSize];
-  LightSample lightSample_[kWaveSize];
-  BrdfSample bsdfSample_[kWaveSize];
+  Receiver from_[kWaveSize];  // the escaped rays' vertices
   VertexLight light_[kWaveSize];
-  int firstLight_[kWaveSize];  // where each lane's own set of light samples starts in light_ (lightOffset)
-  BrdfValue value_[kWaveSize];
-  Ray shadow_[kWaveSize];
-  bool shadowed_[kWaveSize], occluded_[kWaveSize];
+  DirectLight<kWaveSize> direct_;
+  Rgb throughput_[kWaveSize];
+  BrdfSample bsdfSample_[kWaveSize];
   Ray resumeRays_[kWaveSize];
   CmjSampler resumeSamplers_[kWaveSize];
 };
