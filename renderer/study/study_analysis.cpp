@@ -813,8 +813,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
     summary += formatted("Friedman χ² = %.3f (df %d), p = %.3g", t.friedman->chiSquare, t.friedman->treatments - 1, t.friedman->pChiSquare);
     if (t.friedman->pF) summary += formatted("; Iman–Davenport F p = %.3g", *t.friedman->pF);
     summary += " over " + std::to_string(t.complete.size()) + " materials.\n";
-    std::string groups;
-    for (const Json& c : cliques) groups += (groups.empty() ? "" : "; ") + c.dump();
+    const std::string groups = joined(cliques, "; ", [](const Json& c) { return c.dump(); });
     summary += "Not significantly different (Holm–Wilcoxon, α = 0.05): " + (groups.empty() ? std::string("none") : groups) + ".\n";
   } else {
     summary += "Friedman test: none (" + t.friedmanReason + ").\n";
