@@ -39,14 +39,8 @@ struct SheetOptions : SheetJob {
 void addRenderOptions(CLI::App* app, SheetOptions& o) {
   app->add_option("--merl-dir", o.merlDir, "Folder with MERL tables (else $GLOSSY_MERL_DIR)");
   addSceneOptions(app, o.scene);
-  SheetSettings& s = o.settings;
-  o.spp = addOption(app, options::kSheetSpp, s.spp);
-  addOption(app, options::kTime, s.secondsPerPanel);
-  addOption(app, options::kTargetError, s.targetError);
-  addOption(app, options::kSheetWidth, s.width);
-  addOption(app, options::kSheetHeight, s.height);
-  addTracerOptions(app, s);
-  addOption(app, options::kExposure, o.exposure);
+  for (const OptionField& f : sheetOptionFields(o)) addOption(app, f);
+  o.spp = app->get_option("--spp");
   o.panelsOption = app->add_option("--panels", o.panels,
                                    "The panels, a comma list of measured and MODEL:METRIC fits of any model glossy knows, "
                                    "in order; default: " + panelList(sheetPanels()));
@@ -152,10 +146,8 @@ int runSheets(const SheetOptions& options) {
 
 Command addSheetCommand(CLI::App& parent) {
   auto o = std::make_shared<SheetOptions>();
-  std::string grid;
-  for (const SheetPanel& p : sheetPanels()) grid.append(grid.empty() ? "" : " | ").append(p.label);
   CLI::App* app = parent.add_subcommand(
-      "sheet", "Render a material's comparison sheet: " + grid +
+      "sheet", "Render a material's comparison sheet: " + joined(sheetPanels(), " | ", [](const SheetPanel& p) { return p.label; }) +
                    ", into one layered EXR and a labelled PNG beside it, and print each model's error against the measured panel.");
   app->add_option("--material", o->material, "Material parameter file (TOML)")->required();
   app->add_option("--measured", o->measured, "MERL .binary (or .binary.xz) or .nbrdf network for the measured panel; default: "
