@@ -13,22 +13,10 @@ namespace glossy::cli {
 
 namespace {
 
-struct ReportCliOptions {
-  std::string sheetsDir, plotsDir, site = "out/report";
-  std::vector<std::string> plotKinds;
-  bool plotData = false;
-};
-
-int runReport(const ReportCliOptions& o) {
-  report::ReportOptions options;
-  options.sheetsDir = o.sheetsDir;
-  if (!o.plotsDir.empty()) options.plotsDir = std::filesystem::path(o.plotsDir);
-  options.site = o.site;
-  options.plotKinds = o.plotKinds;
-  options.plotData = o.plotData;
+int runReport(const report::ReportOptions& o) {
   checkOutputFolder(o.site, "-o");
   const OutputLock lock(o.site, "-o");
-  const report::ReportResult r = report::writeReport(options);
+  const report::ReportResult r = report::writeReport(o);
   std::fprintf(stderr, "glossy: wrote %s/index.html: %zu materials, %zu images, %zu plot files\n", o.site.c_str(), r.materials, r.images,
                r.plots);
   return 0;
@@ -37,7 +25,8 @@ int runReport(const ReportCliOptions& o) {
 }  // namespace
 
 Command addReportCommand(CLI::App& parent) {
-  auto o = std::make_shared<ReportCliOptions>();
+  auto o = std::make_shared<report::ReportOptions>();
+  o->site = "out/report";
   CLI::App* app = parent.add_subcommand("report",
       "Make a static HTML site of a folder of sheets (from glossy sheets) and optionally their plots (from glossy plot): "
       "an index of every material and model's error figures, sortable and filterable, and a page per material with its "
