@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,6 +33,14 @@ inline std::string csvField(std::string_view text) {
   std::string q = "\"";
   for (char c : text) q += c == '"' ? std::string("\"\"") : std::string(1, c);
   return q + "\"";
+}
+
+// The items' text — text(item), the item itself by default — joined by `separator`: "a, b, c".
+template <class Items, class Text = std::identity>
+std::string joined(const Items& items, std::string_view separator, Text text = {}) {
+  std::string out;
+  for (const auto& item : items) out.append(out.empty() ? "" : separator).append(std::string_view(text(item)));
+  return out;
 }
 
 // `text` for an error message: at most 40 characters, so a 309-digit number does not fill the screen.

@@ -7,6 +7,7 @@
 
 #include <toml++/toml.h>
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -21,6 +22,13 @@ inline toml::table parseToml(std::string_view text, const std::string& source) {
     throw InputError(source + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.column) +
                      ": TOML syntax error: " + std::string(e.description()));
   }
+}
+
+// A number, integer or floating point; nullopt for anything else.
+inline std::optional<double> tomlNumber(const toml::node& node) {
+  if (const auto* i = node.as_integer()) return double(i->get());
+  if (const auto* f = node.as_floating_point()) return f->get();
+  return std::nullopt;
 }
 
 // "FILE:LINE: " for a node with a known position, else "FILE: ".

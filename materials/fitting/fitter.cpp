@@ -1,6 +1,7 @@
 #include "materials/fitting/fitter.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 #include "materials/models/common_params.h"
 #include "materials/models/registry.h"
 
@@ -320,11 +321,7 @@ std::vector<std::string_view> fittableModels() {
   return names;
 }
 
-std::string fittableModelNames() {
-  std::string names;
-  for (std::string_view n : fittableModels()) names.append(names.empty() ? "" : ", ").append(n);
-  return names;
-}
+std::string fittableModelNames() { return joined(fittableModels(), ", "); }
 
 void requireFittable(std::string_view model) {
   if (!canFit(BuiltinModels{}, model))

@@ -56,13 +56,11 @@ std::vector<double> requireNumbers(const toml::table& t, std::string_view name, 
   std::vector<double> out;
   out.reserve(count);
   for (const toml::node& v : *a) {
-    double x;
-    if (auto f = v.as_floating_point()) x = f->get();
-    else if (auto i = v.as_integer()) x = double(i->get());
-    else throw InputError(place.key(v, name) + " must hold numbers only");
-    if (!std::isfinite(x)) throw InputError(place.key(v, name) + " holds a non-finite number");
+    const std::optional<double> x = tomlNumber(v);
+    if (!x) throw InputError(place.key(v, name) + " must hold numbers only");
+    if (!std::isfinite(*x)) throw InputError(place.key(v, name) + " holds a non-finite number");
     // The networks are float32; a weight that is not one was not converted from one.
-    out.push_back(double(float(x)));
+    out.push_back(double(float(*x)));
   }
   return out;
 }

@@ -1,6 +1,7 @@
 #include "materials/params/material_file.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 #include "materials/core/input_file.h"
 #include "materials/core/toml_input.h"
 #include "materials/models/registry.h"
@@ -23,11 +24,7 @@ void checkMetric(const std::string& metric, const std::string& what) {
   if (metric != "E1" && metric != "E2") throw InputError(what + " must be E1 or E2, got '" + metric + "'");
 }
 
-std::string quoteList(std::span<const std::string_view> items) {
-  std::string s;
-  for (auto i : items) s += (s.empty() ? "" : ", ") + std::string(i);
-  return s;
-}
+std::string quoteList(std::span<const std::string_view> items) { return joined(items, ", "); }
 
 size_t modelRank(const std::string& model) {
   const auto& models = analyticModels();
@@ -74,12 +71,6 @@ std::string quoteToml(std::string_view s) {
   return out + "\"";
 }
 
-std::optional<double> asNumber(const toml::node& node) {
-  if (auto i = node.as_integer()) return static_cast<double>(i->get());
-  if (auto f = node.as_floating_point()) return f->get();
-  return std::nullopt;
-}
-
 // "fit 2 (cook-torrance:E1)", with as much of the id as is known.
 std::string fitLabel(size_t index, const FitId& id) {
   std::string s = "fit " + std::to_string(index + 1);
@@ -124,7 +115,7 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
       continue;
     }
     if (key == "error") {
-      auto v = asNumber(node);
+      auto v = tomlNumber(node);
       if (!v || !std::isfinite(*v) || *v < 0.0) throw InputError(here + ": must be a finite number ≥ 0");
       fit.error = *v;
       continue;
@@ -138,7 +129,7 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
     }
     switch (spec->kind) {
       case ParamKind::Scalar: {
-        auto v = asNumber(node);
+        auto v = tomlNumber(node);
         if (!v) throw InputError(here + ": must be a number");
         fit.params.set(key, *v);
         break;
@@ -148,7 +139,7 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
         if (!arr || arr->size() != 3) throw InputError(here + ": must be an array of 3 numbers [R, G, B]");
         Rgb rgb;
         for (int c = 0; c < 3; ++c) {
-          auto v = asNumber(*arr->get(size_t(c)));
+          auto v = tomlNumber(*arr->get(size_t(c)));
           if (!v) throw InputError(here + ": must be an array of 3 numbers [R, G, B]");
           rgb[c] = *v;
         }

@@ -75,6 +75,27 @@ std::string OptionSpec::refusal(std::string_view text) const {
          shortened(std::string(text)) + "'";
 }
 
+namespace {
+
+std::vector<OptionField> withTracerFields(std::vector<OptionField> fields, RenderSettings& s) {
+  fields.insert(fields.end(), {{&kSeed, &s.seed}, {&kThreads, &s.threads}, {&kMaxDepth, &s.maxDepth}, {&kLightSamples, &s.lightSamples}});
+  return fields;
+}
+
+}  // namespace
+
+std::vector<OptionField> renderOptionFields(RenderSettings& s) {
+  return withTracerFields({{&kSpp, &s.spp}, {&kWidth, &s.width}, {&kHeight, &s.height}}, s);
+}
+
+std::vector<OptionField> sheetOptionFields(SheetJob& job) {
+  SheetSettings& s = job.settings;
+  std::vector<OptionField> fields = withTracerFields({{&kSheetSpp, &s.spp}, {&kTime, &s.secondsPerPanel}, {&kTargetError, &s.targetError},
+                                                      {&kSheetWidth, &s.width}, {&kSheetHeight, &s.height}}, s);
+  fields.push_back({&kExposure, &job.exposure});
+  return fields;
+}
+
 ImageAttribute seedAttribute(uint32_t seed) {
   const std::string name(options::kSeed.attribute);
   return seed <= uint32_t(INT32_MAX) ? ImageAttribute{name, int(seed)} : ImageAttribute{name, std::to_string(seed)};

@@ -11,6 +11,13 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace glossy {
+struct RenderSettings;
+}
 
 namespace glossy::app {
 
@@ -48,6 +55,24 @@ extern const OptionSpec kSeed, kThreads, kMaxDepth, kLightSamples, kEnvRotate;
 // glossy fit and glossy.fit(); glossy sample -n and glossy.uniforms()
 extern const OptionSpec kStarts, kMaxIterations, kSamples;
 }  // namespace options
+
+// An option bound to the field of a job it sets: one list of them serves the command line's options, Python's
+// keywords and a study file's settings.
+struct OptionField {
+  const OptionSpec* spec;
+  std::variant<int*, uint32_t*, double*> field;
+
+  void set(double value) const {
+    std::visit([value](auto* f) { *f = std::remove_pointer_t<decltype(f)>(value); }, field);
+  }
+};
+
+struct SheetJob;
+// glossy render's (--spp, --width, --height, then the path tracer's: --seed, --threads, --max-depth,
+// --light-samples) and glossy sheet's (--spp, --time, --target-error, --width, --height, the path tracer's,
+// --exposure), in the order --help lists them.
+std::vector<OptionField> renderOptionFields(RenderSettings& s);
+std::vector<OptionField> sheetOptionFields(SheetJob& job);
 
 // --seed's attribute: EXR has no unsigned one, so a seed beyond int's range is written as its decimal text.
 ImageAttribute seedAttribute(uint32_t seed);

@@ -1,11 +1,25 @@
 #include "renderer/app/render_job.h"
 
+#include "materials/core/text.h"
 #include "renderer/util/notes.h"
 #include "materials/models/registry.h"
 #include "renderer/app/brdf_options.h"
 #include "renderer/app/option_specs.h"
 
 namespace glossy::app {
+
+std::vector<ImageAttribute> madeWith(const RenderSettings& s, const std::string& scene, const std::string& env, uint64_t droppedSamples,
+                                     double seconds) {
+  return {seedAttribute(s.seed),
+          {std::string(options::kMaxDepth.attribute), s.maxDepth},
+          {std::string(options::kLightSamples.attribute), s.lightSamples},
+          {"glossy:scene", scene},
+          {"glossy:env", env},
+          {"glossy:conventions", modelConventions()},
+          {"glossy:droppedSamples", int(std::min<uint64_t>(droppedSamples, INT32_MAX))},
+          {"glossy:renderSeconds", float(seconds)},
+          {"glossy:version", std::string(GLOSSY_VERSION)}};
+}
 
 RenderedImage renderImage(const RenderJob& job) {
   const std::string scenePath = job.scene.scenePath();
@@ -39,24 +53,13 @@ RenderedImage renderImage(const RenderJob& job) {
   RenderedImage out;
   out.image = render(scene, camera, settings, out.stats);
 
-  std::string materialText = override ? override->material : "";
-  if (!override)
-    for (const auto& b : binding.bindings) materialText += (materialText.empty() ? "" : "; ") + b;
-  out.metadata = {
-      {"glossy:material", materialText.empty() ? std::string("scene base colours") : materialText},
-      {"glossy:fit", override ? override->fit : binding.commonFit.empty() ? std::string("per scene binding") : binding.commonFit},
-      {std::string(options::kSpp.attribute), settings.spp},
-      seedAttribute(settings.seed),
-      {std::string(options::kMaxDepth.attribute), settings.maxDepth},
-      {std::string(options::kLightSamples.attribute), settings.lightSamples},
-      {"glossy:brdfSampling", job.brdfSampling},
-      {"glossy:scene", scenePath},
-      {"glossy:env", environment.description()},
-      {"glossy:conventions", modelConventions()},
-      {"glossy:droppedSamples", int(std::min<uint64_t>(out.stats.droppedSamples, uint64_t(INT32_MAX)))},
-      {"glossy:renderSeconds", float(out.stats.seconds)},
-      {"glossy:version", std::string(GLOSSY_VERSION)},
-  };
+  const std::string materialText = override ? override->material : joined(binding.bindings, "; ");
+  out.metadata = madeWith(settings, scenePath, environment.description(), out.stats.droppedSamples, out.stats.seconds);
+  out.metadata.insert(out.metadata.end(),
+                      {{"glossy:material", materialText.empty() ? std::string("scene base colours") : materialText},
+                       {"glossy:fit", override ? override->fit : binding.commonFit.empty() ? std::string("per scene binding") : binding.commonFit},
+                       {std::string(options::kSpp.attribute), settings.spp},
+                       {"glossy:brdfSampling", job.brdfSampling}});
   for (const auto& [key, value] : choiceAttributes(binding.fits)) out.metadata.push_back({key, value});
   if (measuredInvalidBins >= 0) {
     out.metadata.push_back({"glossy:measuredInvalidBins", measuredInvalidBins});

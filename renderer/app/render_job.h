@@ -29,6 +29,11 @@ struct RenderedImage {
   RenderStats stats;
 };
 
+// What a render and a sheet both record of how they were made (glossy:*): the path tracer's settings, the scene and its lighting, the models' conventions, the samples dropped, the seconds
+// and glossy's version.
+std::vector<ImageAttribute> madeWith(const RenderSettings& s, const std::string& scene, const std::string& env,
+                                     uint64_t droppedSamples, double seconds);
+
 // Loads everything first (InputError naming the file or option), then renders. With settings.control
 // cancelled the image is unfinished: the caller discards it.
 RenderedImage renderImage(const RenderJob& job);

@@ -4,6 +4,7 @@
 #include "materials/core/text.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <numeric>
 #include <optional>
@@ -98,6 +99,16 @@ std::vector<size_t> shardItems(std::span<const double> costs, const Shard& shard
     if (to == size_t(shard.index)) mine.push_back(item);
   }
   std::sort(mine.begin(), mine.end());
+  return mine;
+}
+
+std::vector<size_t> shardItems(std::span<const double> costs, const Shard& shard, const char* command, const char* items) {
+  std::vector<size_t> mine = shardItems(costs, shard);
+  double myCost = 0.0;
+  for (size_t k : mine) myCost += costs[k];
+  if (!shard.source.empty())
+    std::fprintf(stderr, "%s: shard %d/%d from %s: %zu of %zu %s, %.1f %% of the expected cost\n", command, shard.index, shard.count,
+                 shard.source.c_str(), mine.size(), costs.size(), items, 100.0 * myCost / std::accumulate(costs.begin(), costs.end(), 0.0));
   return mine;
 }
 

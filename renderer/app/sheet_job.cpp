@@ -6,12 +6,14 @@
 #include "materials/models/registry.h"
 #include "renderer/app/brdf_options.h"
 #include "renderer/app/option_specs.h"
+#include "renderer/app/render_job.h"
 #include "renderer/app/sheet_resume.h"
 #include "renderer/scene/material_binding.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <optional>
 
@@ -71,27 +73,19 @@ std::vector<ImageAttribute> sheetMetadata(const MaterialFile& m, const Stage& st
   std::vector<Fit> fits;  // their choices are recorded as render's are for its binding
   for (const PanelRender& p : sheet.panels)
     if (const Fit* fit = p.empty || p.panel.fit.empty() ? nullptr : m.find(FitId::parse(p.panel.fit, m.path.string()))) fits.push_back(*fit);
-  std::vector<ImageAttribute> metadata = {
-      {"glossy:material", m.path.string()},
-      {"glossy:materialName", m.name},  // what the report names the material by, whatever the file is called
-      {"glossy:fit", std::string("sheet")},
-      {"glossy:measured", sheet.measured() ? sheet.measured()->note : std::string("none: no measured panel")},
-      {std::string(options::kSheetSpp.attribute), std::to_string(sheet.spp)},
-      {std::string(options::kTime.attribute), float(o.settings.secondsPerPanel)},
-      {std::string(options::kTargetError.attribute), float(o.settings.targetError)},
-      {"glossy:widestInterval", float(std::min(sheet.widestHalfWidth, 1e30))},
-      seedAttribute(o.settings.seed),
-      {std::string(options::kMaxDepth.attribute), o.settings.maxDepth},
-      {std::string(options::kLightSamples.attribute), o.settings.lightSamples},
-      {"glossy:scene", stage.description.source.string()},
-      {"glossy:env", stage.environment.description()},
-      {"glossy:conventions", modelConventions()},
-      {std::string(options::kExposure.attribute), float(o.exposure)},
-      {"glossy:droppedSamples", int(std::min<uint64_t>(sheet.droppedSamples, INT32_MAX))},
-      {"glossy:renderSeconds", float(seconds)},
-      {"glossy:version", std::string(GLOSSY_VERSION)},
-      {kSettingsAttribute, sheetSettings(m, stage, o, explicitMeasured)},
-  };
+  std::vector<ImageAttribute> metadata =
+      madeWith(o.settings, stage.description.source.string(), stage.environment.description(), sheet.droppedSamples, seconds);
+  metadata.insert(metadata.end(),
+                  {{"glossy:material", m.path.string()},
+                   {"glossy:materialName", m.name},  // what the report names the material by, whatever the file is called
+                   {"glossy:fit", std::string("sheet")},
+                   {"glossy:measured", sheet.measured() ? sheet.measured()->note : std::string("none: no measured panel")},
+                   {std::string(options::kSheetSpp.attribute), std::to_string(sheet.spp)},
+                   {std::string(options::kTime.attribute), float(o.settings.secondsPerPanel)},
+                   {std::string(options::kTargetError.attribute), float(o.settings.targetError)},
+                   {"glossy:widestInterval", float(std::min(sheet.widestHalfWidth, 1e30))},
+                   {std::string(options::kExposure.attribute), float(o.exposure)},
+                   {kSettingsAttribute, sheetSettings(m, stage, o, explicitMeasured)}});
   for (const auto& [key, value] : choiceAttributes(fits)) metadata.push_back({key, value});
   return metadata;
 }
@@ -157,6 +151,24 @@ BatchSheet renderBatchSheet(const Stage& stage, const std::filesystem::path& mat
   if (std::error_code ec; std::filesystem::exists(exr, ec)) std::cerr << "glossy: " << tag << ": " << why << ", rendering it again\n";
   makeSheetFiles(stage, materialPath, job, exr, "");
   return BatchSheet::Rendered;
+}
+
+size_t renderBatch(size_t count, const std::function<std::string(size_t)>& name,
+                   const std::function<BatchSheet(size_t, const std::string&)>& sheet, const char* who, const std::string& folder) {
+  const auto start = std::chrono::steady_clock::now();
+  size_t done = 0, skipped = 0, busy = 0;
+  for (size_t k = 0; k < count; ++k) {
+    const std::string tag = formatted("[%zu/%zu] %s", k + 1, count, name(k).c_str());
+    const BatchSheet outcome = sheet(k, tag);
+    busy += outcome == BatchSheet::Busy;
+    skipped += outcome == BatchSheet::Complete;
+    if (outcome != BatchSheet::Rendered) continue;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::fprintf(stderr, "glossy: %s done; %.0f s elapsed, about %.0f s to go\n", tag.c_str(), elapsed,
+                 elapsed / double(++done) * double(count - k - 1));
+  }
+  std::fprintf(stderr, "%s: %zu sheets rendered, %zu already complete, in %s\n", who, done, skipped, folder.c_str());
+  return busy;
 }
 
 // A measured panel, with its table's loading, its sampler and the error figures it brings, costs about

@@ -8,6 +8,7 @@
 #include "renderer/sheet/sheet.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,13 @@ enum class BatchSheet { Rendered, Complete, Busy };
 // the temporaries an interrupted write of it left. `tag` starts its lines on stderr ("[3/40] gold-paint").
 BatchSheet renderBatchSheet(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
                             const std::filesystem::path& exr, const std::string& tag);
+
+// The sheets of a batch in turn: sheet(k, tag) renders or keeps the k-th of `count` (renderBatchSheet), its tag
+// "[k+1/count] NAME" with NAME = name(k); a line after each one rendered says the time to go, and one at the
+// end what became of them ("`who`: 3 sheets rendered, 1 already complete, in `folder`"). Returns how many
+// were left to another run (Busy).
+size_t renderBatch(size_t count, const std::function<std::string(size_t)>& name,
+                   const std::function<BatchSheet(size_t, const std::string&)>& sheet, const char* who, const std::string& folder);
 
 // What a sheet costs, in analytic panels, for splitting a batch into shards (shard.h).
 double sheetCost(const MaterialFile& m, const SheetJob& job);

@@ -39,24 +39,15 @@ struct Reader {
   }
 
   // Each key of `t` must be one of `known`.
-  void keys(const toml::table& t, const std::string& prefix, std::initializer_list<std::string_view> known) const {
+  void keys(const toml::table& t, const std::string& prefix, const std::vector<std::string_view>& known) const {
     for (const auto& [key, node] : t)
-      if (std::find(known.begin(), known.end(), key.str()) == known.end()) {
-        std::string list;
-        for (std::string_view k : known) list.append(list.empty() ? "" : ", ").append(k);
-        fail(node, prefix + std::string(key.str()), "unknown key (known here: " + list + ")");
-      }
+      if (std::find(known.begin(), known.end(), key.str()) == known.end())
+        fail(node, prefix + std::string(key.str()), "unknown key (known here: " + joined(known, ", ") + ")");
   }
 
   std::string text(const toml::node& node, const std::string& key) const {
     if (!node.is_string()) fail(node, key, "must be a string");
     return node.as_string()->get();
-  }
-
-  std::optional<double> number(const toml::node& node) const {
-    if (auto i = node.as_integer()) return double(i->get());
-    if (auto f = node.as_floating_point()) return f->get();
-    return std::nullopt;
   }
 
   // A path from the file, relative to the study file's folder: an existing regular file, or folder.
@@ -123,9 +114,9 @@ std::string rgbText(const Reader& r, const toml::node& node, const std::string& 
   std::vector<double> rgb;
   if (const auto* list = node.as_array()) {
     for (const toml::node& c : *list)
-      if (const auto v = r.number(c)) rgb.push_back(*v);
+      if (const auto v = tomlNumber(c)) rgb.push_back(*v);
       else r.fail(node, key, "must be a number or [R, G, B]");
-  } else if (const auto v = r.number(node)) {
+  } else if (const auto v = tomlNumber(node)) {
     rgb.assign(3, *v);
   }
   if (rgb.size() != 3) r.fail(node, key, "must be a number or [R, G, B]");
@@ -148,7 +139,7 @@ StudyLighting readLighting(const Reader& r, const std::string& name, const toml:
   if (const toml::node* env = t->get("env")) l.env = r.path(*env, key + ".env", false).string();
   if (const toml::node* c = t->get("constant")) l.envConstant = rgbText(r, *c, key + ".constant");
   if (const toml::node* rotate = t->get("rotate")) {
-    const auto v = r.number(*rotate);
+    const auto v = tomlNumber(*rotate);
     if (!v) r.fail(*rotate, key + ".rotate", "must be a number of degrees");
     if (!options::kEnvRotate.accepts(*v)) r.fail(*rotate, key + ".rotate", options::kEnvRotate.refusal(formatted("%g", *v)));
     if (!l.envConstant.empty()) r.fail(*rotate, key + ".rotate", "a constant environment has nothing to rotate");
@@ -180,47 +171,38 @@ StudyScene readScene(const Reader& r, const std::string& name, const toml::node&
 }
 
 // A number of the settings block, checked by its option's spec (the command line's range and words).
-template <class T>
-void setting(const Reader& r, const toml::table& settings, const OptionSpec& spec, T& field, bool* given = nullptr) {
-  const toml::node* node = settings.get(spec.name);
+void setting(const Reader& r, const toml::table& settings, const OptionField& f) {
+  const toml::node* node = settings.get(f.spec->name);
   if (!node) return;
-  const std::string key = "settings." + std::string(spec.name);
-  const auto v = r.number(*node);
+  const std::string key = "settings." + std::string(f.spec->name);
+  const auto v = tomlNumber(*node);
   if (!v) r.fail(*node, key, "must be a number");
-  if (!spec.accepts(*v)) r.fail(*node, key, spec.refusal(node->is_integer() ? std::to_string(node->as_integer()->get()) : formatted("%g", *v)));
-  field = T(*v);
-  if (given) *given = true;
+  if (!f.spec->accepts(*v))
+    r.fail(*node, key, f.spec->refusal(node->is_integer() ? std::to_string(node->as_integer()->get()) : formatted("%g", *v)));
+  f.set(*v);
 }
 
 void readSettings(const Reader& r, const toml::node& node, StudyFile& study) {
   const toml::table* t = node.as_table();
   if (!t) r.fail(node, "settings", "must be a table");
-  using namespace options;
-  r.keys(*t, "settings.", {kSheetWidth.name, kSheetHeight.name, kSheetSpp.name, kTime.name, kTargetError.name, kExposure.name,
-                           kSeed.name, kThreads.name, kMaxDepth.name, kLightSamples.name, "panels", "half"});
-  SheetJob& job = study.job;
-  SheetSettings& s = job.settings;
-  setting(r, *t, kSheetWidth, s.width);
-  setting(r, *t, kSheetHeight, s.height);
-  setting(r, *t, kSheetSpp, s.spp, &study.sppGiven);
-  setting(r, *t, kTime, s.secondsPerPanel);
-  setting(r, *t, kTargetError, s.targetError);
-  setting(r, *t, kExposure, job.exposure);
-  setting(r, *t, kSeed, s.seed);
-  setting(r, *t, kThreads, s.threads);
-  setting(r, *t, kMaxDepth, s.maxDepth);
-  setting(r, *t, kLightSamples, s.lightSamples);
+  const std::vector<OptionField> fields = sheetOptionFields(study.job);
+  std::vector<std::string_view> known;
+  for (const OptionField& f : fields) known.push_back(f.spec->name);
+  known.insert(known.end(), {"panels", "half"});
+  r.keys(*t, "settings.", known);
+  for (const OptionField& f : fields) setting(r, *t, f);
+  study.sppGiven = t->contains(options::kSheetSpp.name);
   if (const toml::node* p = t->get("panels")) {
     const std::string key = "settings.panels";
     try {
-      s.panels = parsePanels(r.text(*p, key), key);
+      study.job.settings.panels = parsePanels(r.text(*p, key), key);
     } catch (const InputError& e) {
       throw InputError(tomlAt(r.source, *p) + e.what());
     }
   }
   if (const toml::node* h = t->get("half")) {
     if (!h->is_boolean()) r.fail(*h, "settings.half", "must be true or false");
-    job.half = h->as_boolean()->get();
+    study.job.half = h->as_boolean()->get();
   }
 }
 
@@ -229,7 +211,7 @@ void readAnalysis(const Reader& r, const toml::node& node, StudyFile& study) {
   if (!t) r.fail(node, "analysis", "must be a table");
   r.keys(*t, "analysis.", {"resamples", "reference"});
   if (const toml::node* n = t->get("resamples")) {
-    const auto v = r.number(*n);
+    const auto v = tomlNumber(*n);
     if (!n->is_integer() || !v || *v < 100 || *v > 1e6) r.fail(*n, "analysis.resamples", "must be a whole number in [100, 1000000]");
     study.resamples = int(*v);
   }

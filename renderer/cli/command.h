@@ -55,10 +55,13 @@ CLI::Option* addOption(CLI::App* app, const app::OptionSpec& spec, T& field) {
       ->capture_default_str();
 }
 
-// The options naming the scene (app/scene_options.h), the path tracer's (--seed, --threads, --max-depth,
-// --light-samples) and one BRDF (app/brdf_options.h).
+// An option of the table bound to its field (app::OptionField).
+inline CLI::Option* addOption(CLI::App* app, const app::OptionField& f) {
+  return std::visit([&](auto* field) { return addOption(app, *f.spec, *field); }, f.field);
+}
+
+// The options naming the scene (app/scene_options.h) and one BRDF (app/brdf_options.h).
 void addSceneOptions(CLI::App* app, app::SceneOptions& o);
-void addTracerOptions(CLI::App* app, RenderSettings& s);
 void addBrdfOptions(CLI::App* app, app::BrdfOptions& o);
 
 // The committed material library, a folder per database: ./materials/library when run from a checkout, else

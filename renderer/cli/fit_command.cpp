@@ -19,7 +19,6 @@
 #include <iostream>
 #include <map>
 #include <optional>
-#include <numeric>
 #include <sstream>
 
 namespace glossy::cli {
@@ -114,19 +113,10 @@ int runBatch(const FitOptions& o) {
   std::vector<Metric> metrics;
   for (const std::string& m : o.metrics.empty() ? std::vector<std::string>{"E1", "E2"} : o.metrics) metrics.push_back(parseMetric(m, "--metric"));
   for (const auto& m : models) requireFittable(m);
-  if (!shard.source.empty()) {
-    const std::vector<double> costs(tables.size(), fitCost(models, metrics.size()));
-    std::vector<std::filesystem::path> mine;
-    double myCost = 0.0;
-    for (size_t k : shardItems(costs, shard)) {
-      mine.push_back(tables[k]);
-      myCost += costs[k];
-    }
-    std::cerr << "glossy fit: shard " << shard.index << "/" << shard.count << " from " << shard.source << ": " << mine.size()
-              << " of " << tables.size() << " tables, "
-              << formatted("%.1f", 100.0 * myCost / std::accumulate(costs.begin(), costs.end(), 0.0)) << " % of the expected cost\n";
-    tables = std::move(mine);
-  }
+  std::vector<std::filesystem::path> mine;
+  for (size_t k : shardItems(std::vector<double>(tables.size(), fitCost(models, metrics.size())), shard, "glossy fit", "tables"))
+    mine.push_back(tables[k]);
+  tables = std::move(mine);
   std::filesystem::create_directories(o.outDir);
   const std::string settings = o.settings.describe();
 

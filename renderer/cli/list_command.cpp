@@ -46,9 +46,7 @@ std::string databaseLabel(const std::filesystem::path& folder) {
     } catch (const InputError&) {
     }
   }
-  std::string joined;
-  for (const std::string& l : labels) joined += (joined.empty() ? "" : "; ") + l;
-  return joined;
+  return joined(labels, "; ");
 }
 
 int runList(const ListOptions& o) {

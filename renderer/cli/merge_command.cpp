@@ -120,8 +120,7 @@ int runMergeSheets(const MergeOptions& o) {
   nlohmann::json doc = {{"sheets", nlohmann::json::array()}};
   for (const report::SheetRecord& s : sheets) {
     const std::vector<std::string> closest = s.closestLayers();
-    std::string warning;  // the sheet's warnings on one line
-    for (const std::string& w : s.warnings) warning.append(warning.empty() ? "" : "; ").append(w);
+    const std::string warning = joined(s.warnings, "; ");  // the sheet's warnings on one line
     nlohmann::json panels = nlohmann::json::array();
     for (const report::PanelRecord& p : s.panels) {
       const bool isClosest = std::find(closest.begin(), closest.end(), p.layer) != closest.end();

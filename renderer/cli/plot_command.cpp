@@ -46,8 +46,7 @@ int runPlot(const PlotOptions& o) {
   if (path) {
     table = loadMeasured(*path);
     // Captions and plots.json go into documents and sites: they name the file, never where it lies here.
-    const std::string full = measuredLabel(*path);
-    label = full.substr(0, full.size() - path->string().size()) + path->filename().string();
+    label = measuredDatabase(*path) + " " + path->filename().string();
   } else {
     label = m.measured.empty() ? "none (the material names no measured data)"
                                : "none (no " + m.measured + " in --merl-dir or $GLOSSY_MERL_DIR)";

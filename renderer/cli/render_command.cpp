@@ -49,11 +49,7 @@ Command addRenderCommand(CLI::App& parent) {
   auto* fit = app->add_option("--fit", o->job.fit, "Fit of --material: MODEL:METRIC");
   auto* measured = app->add_option("--measured", o->job.measured, "Measured data (MERL table or .nbrdf network) for every non-emissive mesh instead");
   app->add_option("--merl-dir", o->job.merlDir, "Folder with MERL tables");
-  RenderSettings& s = o->job.settings;
-  addOption(app, options::kSpp, s.spp);
-  addOption(app, options::kWidth, s.width);
-  addOption(app, options::kHeight, s.height);
-  addTracerOptions(app, s);
+  for (const OptionField& f : renderOptionFields(o->job.settings)) addOption(app, f);
   app->add_flag("--half", o->half, "Write half-float EXR (default: float); values above 65504 are clipped to it, and counted on stderr");
   app->add_option("--brdf-sampling", o->job.brdfSampling,
                   "lobe: each model samples its own lobe (default); cosine: the cosine lobe, to see what lobe sampling is worth")

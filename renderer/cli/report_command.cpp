@@ -14,22 +14,10 @@ namespace glossy::cli {
 
 namespace {
 
-struct ReportCliOptions {
-  std::string sheetsDir, plotsDir, site = "out/report";
-  std::vector<std::string> plotKinds;
-  bool plotData = false;
-};
-
-int runReport(const ReportCliOptions& o) {
-  report::ReportOptions options;
-  options.sheetsDir = o.sheetsDir;
-  if (!o.plotsDir.empty()) options.plotsDir = std::filesystem::path(o.plotsDir);
-  options.site = o.site;
-  options.plotKinds = o.plotKinds;
-  options.plotData = o.plotData;
+int runReport(const report::ReportOptions& o) {
   checkOutputFolder(o.site, "-o");
   const OutputLock lock(o.site, "-o");
-  const report::ReportResult r = report::writeReport(options);
+  const report::ReportResult r = report::writeReport(o);
   const std::string sheets = r.sheets == r.materials.size() ? formatted("%zu materials", r.sheets)
                                                              : formatted("%zu sheets of %zu materials", r.sheets, r.materials.size());
   std::fprintf(stderr, "glossy: wrote %s/index.html: %s, %zu images, %zu plot files\n", o.site.c_str(), sheets.c_str(), r.images, r.plots);
@@ -39,7 +27,8 @@ int runReport(const ReportCliOptions& o) {
 }  // namespace
 
 Command addReportCommand(CLI::App& parent) {
-  auto o = std::make_shared<ReportCliOptions>();
+  auto o = std::make_shared<report::ReportOptions>();
+  o->site = "out/report";
   CLI::App* app = parent.add_subcommand("report",
       "Make a static HTML site of a folder of sheets (from glossy sheets) and optionally their plots (from glossy plot): "
       "an index of every material and model's error figures, sortable and filterable, and a page per material with its "

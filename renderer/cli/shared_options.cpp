@@ -1,5 +1,4 @@
-// The options several subcommands share: the scene's and the path tracer's (render, sheet, sheets) and one
-// BRDF's (eval, sample).
+// The options several subcommands share: the scene's (render, sheet, sheets) and one BRDF's (eval, sample).
 #include "renderer/cli/command.h"
 
 namespace glossy::cli {
@@ -11,13 +10,6 @@ void addSceneOptions(CLI::App* app, SceneOptions& o) {
   auto* constant = app->add_option("--env-constant", o.envConstant, "Constant environment radiance: V or R,G,B");
   file->excludes(constant);
   addOption(app, options::kEnvRotate, o.envRotate);
-}
-
-void addTracerOptions(CLI::App* app, RenderSettings& s) {
-  addOption(app, options::kSeed, s.seed);
-  addOption(app, options::kThreads, s.threads);
-  addOption(app, options::kMaxDepth, s.maxDepth);
-  addOption(app, options::kLightSamples, s.lightSamples);
 }
 
 void addBrdfOptions(CLI::App* app, BrdfOptions& o) {

@@ -13,12 +13,10 @@
 #include "renderer/cli/command.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <map>
 #include <memory>
-#include <numeric>
 #include <optional>
 #include <unistd.h>
 
@@ -39,14 +37,8 @@ struct SheetOptions : SheetJob {
 void addRenderOptions(CLI::App* app, SheetOptions& o) {
   app->add_option("--merl-dir", o.merlDir, "Folder with MERL tables (else $GLOSSY_MERL_DIR)");
   addSceneOptions(app, o.scene);
-  SheetSettings& s = o.settings;
-  o.spp = addOption(app, options::kSheetSpp, s.spp);
-  addOption(app, options::kTime, s.secondsPerPanel);
-  addOption(app, options::kTargetError, s.targetError);
-  addOption(app, options::kSheetWidth, s.width);
-  addOption(app, options::kSheetHeight, s.height);
-  addTracerOptions(app, s);
-  addOption(app, options::kExposure, o.exposure);
+  for (const OptionField& f : sheetOptionFields(o)) addOption(app, f);
+  o.spp = app->get_option("--spp");
   o.panelsOption = app->add_option("--panels", o.panels,
                                    "The panels, a comma list of measured and MODEL:METRIC fits of any model glossy knows, "
                                    "in order; default: " + panelList(sheetPanels()));
@@ -85,7 +77,7 @@ int runSheets(const SheetOptions& options) {
     if (std::error_code ec; !std::filesystem::is_directory(in, ec) && !std::filesystem::is_regular_file(in, ec))
       throw InputError(in + (std::filesystem::exists(in, ec) ? ": is not a material file or folder (a device, FIFO or socket)"
                                                              : ": no such material file or folder"));
-  std::vector<std::filesystem::path> files = materialFiles(o.inputs);
+  const std::vector<std::filesystem::path> files = materialFiles(o.inputs);
   const Shard shard = shardFrom(o.shard);
   // Validate every file, and where each sheet goes, before rendering any, so a typo fails in a second, not
   // after an hour. All files, not just this shard's: another shard writes to the same folder.
@@ -106,42 +98,16 @@ int runSheets(const SheetOptions& options) {
     names.push_back(name);
     costs.push_back(sheetCost(m, o));
   }
-  if (!shard.source.empty()) {
-    double myCost = 0.0;
-    std::vector<std::filesystem::path> myFiles;
-    std::vector<std::string> myNames;
-    for (size_t k : shardItems(costs, shard)) {
-      myFiles.push_back(files[k]);
-      myNames.push_back(names[k]);
-      myCost += costs[k];
-    }
-    std::fprintf(stderr, "glossy sheets: shard %d/%d from %s: %zu of %zu materials, %.1f %% of the expected cost\n", shard.index,
-                 shard.count, shard.source.c_str(), myFiles.size(), files.size(),
-                 100.0 * myCost / std::accumulate(costs.begin(), costs.end(), 0.0));
-    files = std::move(myFiles);
-    names = std::move(myNames);
-  }
+  const std::vector<size_t> mine = shardItems(costs, shard, "glossy sheets", "materials");
 
   const Stage stage(o.scene, double(o.settings.width) / double(o.settings.height));
   std::filesystem::create_directories(outDir);  // only once the scene and lighting options are known good
   SheetOptions batch = o;
   batch.settings.progress = false;
-  const auto start = std::chrono::steady_clock::now();
-  size_t done = 0, skipped = 0, busy = 0;
-  for (size_t k = 0; k < files.size(); ++k) {
-    const std::string& name = names[k];
-    const std::filesystem::path exr = outDir / (name + ".exr");
-    const BatchSheet outcome = renderBatchSheet(stage, files[k], batch, exr, formatted("[%zu/%zu] %s", k + 1, files.size(), name.c_str()));
-    if (outcome == BatchSheet::Busy) ++busy;
-    if (outcome == BatchSheet::Complete) ++skipped;
-    if (outcome != BatchSheet::Rendered) continue;
-    ++done;
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double eta = elapsed / double(done) * double(files.size() - k - 1);
-    std::fprintf(stderr, "glossy: [%zu/%zu] %s done; %.0f s elapsed, about %.0f s to go\n", k + 1, files.size(), name.c_str(),
-                 elapsed, eta);
-  }
-  std::fprintf(stderr, "glossy: %zu sheets rendered, %zu already complete, in %s\n", done, skipped, o.outDir.c_str());
+  const size_t busy = renderBatch(
+      mine.size(), [&](size_t n) { return names[mine[n]]; },
+      [&](size_t n, const std::string& tag) { return renderBatchSheet(stage, files[mine[n]], batch, outDir / (names[mine[n]] + ".exr"), tag); },
+      "glossy", o.outDir);
   if (busy == 0) return 0;
   // Not every sheet of this run is known to be complete: say so in the status too.
   std::fprintf(stderr, "glossy: %zu sheets left to the other run writing them; run again to check them\n", busy);
@@ -152,10 +118,8 @@ int runSheets(const SheetOptions& options) {
 
 Command addSheetCommand(CLI::App& parent) {
   auto o = std::make_shared<SheetOptions>();
-  std::string grid;
-  for (const SheetPanel& p : sheetPanels()) grid.append(grid.empty() ? "" : " | ").append(p.label);
   CLI::App* app = parent.add_subcommand(
-      "sheet", "Render a material's comparison sheet: " + grid +
+      "sheet", "Render a material's comparison sheet: " + joined(sheetPanels(), " | ", [](const SheetPanel& p) { return p.label; }) +
                    ", into one layered EXR and a labelled PNG beside it, and print each model's error against the measured panel.");
   app->add_option("--material", o->material, "Material parameter file (TOML)")->required();
   app->add_option("--measured", o->measured, "MERL .binary (or .binary.xz) or .nbrdf network for the measured panel; default: "

@@ -15,11 +15,9 @@
 #include "renderer/util/atomic_file.h"
 #include "renderer/util/notes.h"
 
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <numeric>
 
 namespace glossy::cli {
 
@@ -91,17 +89,13 @@ int runStudy(const StudyOptions& o) {
   for (size_t s = 0; s < plan.scenes.size(); ++s)
     for (size_t l = 0; l < plan.lightings.size(); ++l) stages.push_back(std::make_unique<Stage>(file.sceneOptions(s, l), aspect));
   const auto stageOf = [&](const StudyItem& item) -> const Stage& { return *stages[item.scene * plan.lightings.size() + item.lighting]; };
+  const auto jobOf = [&](const StudyItem& item) {
+    SheetJob sheetJob = job;
+    sheetJob.scene = file.sceneOptions(item.scene, item.lighting);
+    return sheetJob;
+  };
 
-  std::vector<size_t> mine(items.size());
-  std::iota(mine.begin(), mine.end(), size_t(0));
-  if (!shard.source.empty()) {
-    mine = shardItems(costs, shard);
-    double myCost = 0.0;
-    for (size_t k : mine) myCost += costs[k];
-    std::fprintf(stderr, "glossy study: shard %d/%d from %s: %zu of %zu sheets, %.1f %% of the expected cost\n", shard.index,
-                 shard.count, shard.source.c_str(), mine.size(), items.size(),
-                 100.0 * myCost / std::accumulate(costs.begin(), costs.end(), 0.0));
-  }
+  const std::vector<size_t> mine = shardItems(costs, shard, "glossy study", "sheets");
 
   // The plan, so that the sheets read back into rows with nothing but OUT (every run writes the same bytes).
   fs::create_directories(out);
@@ -118,25 +112,13 @@ int runStudy(const StudyOptions& o) {
     if (there != planText) writeFileAtomically(out / study::kPlanFile, planText);
   }
 
-  size_t done = 0, skipped = 0, busy = 0;
-  if (!o.analyseOnly) {
-    const auto start = std::chrono::steady_clock::now();
-    for (size_t n = 0; n < mine.size(); ++n) {
-      const StudyItem& item = items[mine[n]];
-      SheetJob sheetJob = job;
-      sheetJob.scene = file.sceneOptions(item.scene, item.lighting);
-      const std::string tag = formatted("[%zu/%zu] %s", n + 1, mine.size(), item.tag.c_str());
-      const BatchSheet outcome = renderBatchSheet(stageOf(item), plan.materials[item.material].file, sheetJob, item.exr, tag);
-      if (outcome == BatchSheet::Busy) ++busy;
-      if (outcome == BatchSheet::Complete) ++skipped;
-      if (outcome != BatchSheet::Rendered) continue;
-      ++done;
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::fprintf(stderr, "glossy: %s done; %.0f s elapsed, about %.0f s to go\n", tag.c_str(), elapsed,
-                   elapsed / double(done) * double(mine.size() - n - 1));
-    }
-    std::fprintf(stderr, "glossy study: %zu sheets rendered, %zu already complete, in %s\n", done, skipped, o.out.c_str());
-  }
+  const size_t busy = o.analyseOnly ? 0 : renderBatch(
+      mine.size(), [&](size_t n) { return items[mine[n]].tag; },
+      [&](size_t n, const std::string& tag) {
+        const StudyItem& item = items[mine[n]];
+        return renderBatchSheet(stageOf(item), plan.materials[item.material].file, jobOf(item), item.exr, tag);
+      },
+      "glossy study", o.out);
   if (busy > 0) {
     std::fprintf(stderr, "glossy study: %zu sheets left to the other run writing them; run again to check them and analyse\n", busy);
     return 1;
@@ -151,9 +133,7 @@ int runStudy(const StudyOptions& o) {
   size_t missing = 0;
   std::string first;
   for (const StudyItem& item : items) {
-    SheetJob sheetJob = job;
-    sheetJob.scene = file.sceneOptions(item.scene, item.lighting);
-    const std::string why = whyIncomplete(item.exr, sheetSettings(materials[item.material], stageOf(item), sheetJob, ""), job.settings);
+    const std::string why = whyIncomplete(item.exr, sheetSettings(materials[item.material], stageOf(item), jobOf(item), ""), job.settings);
     if (!why.empty() && missing++ == 0) first = item.tag + ": " + why;
   }
   if (missing > 0) {

@@ -1,5 +1,6 @@
 #include "renderer/plot/plot_output.h"
 
+#include "materials/core/text.h"
 #include "renderer/util/atomic_file.h"
 #include "renderer/plot/svg_to_png.h"
 
@@ -30,12 +31,10 @@ void writePlots(OwnedFolder& dir, const PlotSet& set, const std::vector<PlotFigu
     writeFileAtomically(svg, f.svg);
     writeFileAtomically(csv, f.csv);
     if (rsvgConvert) svgToPng(*rsvgConvert, svg, png, kPngZoom);
-    std::string caption;
-    for (const std::string& p : f.caption) caption.append(caption.empty() ? "" : " ").append(p);
     nlohmann::ordered_json entry;
     entry["kind"] = f.kind;
     entry["title"] = f.title;
-    entry["caption"] = caption;
+    entry["caption"] = joined(f.caption, " ");
     entry["svg"] = svg.filename().string();
     entry["png"] = rsvgConvert ? nlohmann::ordered_json(png.filename().string()) : nlohmann::ordered_json(nullptr);
     entry["csv"] = csv.filename().string();

@@ -152,41 +152,34 @@ void throwBadDirection(const FirstBad& badL, const FirstBad& badV, const Rows& L
 
 int checkedThreads(int threads) { return int(checkedOption(app::options::kThreads, threads)); }
 
-py::array_t<double> evalRows(const Brdf& brdf, const py::handle& lArg, const py::handle& vArg, const py::object& out, int threads) {
+// f(values, ok, l, v) for every pair of rows of L and V (forUnitPairs), writing the row's kWidth values into an
+// array of shape (N, kWidth), or (N,) for one value: `out` when given.
+template <size_t kWidth, class F>
+py::array_t<double> pairRows(const py::handle& lArg, const py::handle& vArg, const py::object& out, int threads, const F& f) {
   checkedThreads(threads);
   const Rows L = rowsOf(lArg, "L"), V = rowsOf(vArg, "V");
   const size_t n = pairedRows(L, "L", V, "V");
-  py::array_t<double> result = outputArray(out, {py::ssize_t(n), 3});
-  double* rho = result.mutable_data();
+  py::array_t<double> result = outputArray(out, kWidth == 1 ? std::vector{py::ssize_t(n)} : std::vector{py::ssize_t(n), py::ssize_t(kWidth)});
+  double* values = result.mutable_data();
   FirstBad badL, badV;
   {
     py::gil_scoped_release noGil;
     forRows(n, threads, [&](size_t begin, size_t end) {
-      forUnitPairs(L, V, begin, end, badL, badV, [&](size_t i, bool ok, const Vec3& l, const Vec3& v) {
-        reinterpret_cast<Rgb*>(rho)[i] = ok ? eval(brdf, l, v) : Rgb(0.0);
-      });
+      forUnitPairs(L, V, begin, end, badL, badV, [&](size_t i, bool ok, const Vec3& l, const Vec3& v) { f(values + kWidth * i, ok, l, v); });
     });
   }
   if (badL.any() || badV.any()) throwBadDirection(badL, badV, L, V);
   return result;
 }
 
-py::array_t<double> pdfRows(const Brdf& brdf, const py::handle& lArg, const py::handle& vArg, const py::object& out, int threads) {
-  checkedThreads(threads);
-  const Rows L = rowsOf(lArg, "L"), V = rowsOf(vArg, "V");
-  const size_t n = pairedRows(L, "L", V, "V");
-  py::array_t<double> result = outputArray(out, {py::ssize_t(n)});
-  double* density = result.mutable_data();
-  FirstBad badL, badV;
-  {
-    py::gil_scoped_release noGil;
-    forRows(n, threads, [&](size_t begin, size_t end) {
-      forUnitPairs(L, V, begin, end, badL, badV,
-                   [&](size_t i, bool ok, const Vec3& l, const Vec3& v) { density[i] = ok ? pdf(brdf, l, v) : 0.0; });
-    });
-  }
-  if (badL.any() || badV.any()) throwBadDirection(badL, badV, L, V);
-  return result;
+py::array_t<double> evalRows(const Brdf& brdf, const py::handle& L, const py::handle& V, const py::object& out, int threads) {
+  return pairRows<3>(L, V, out, threads, [&](double* rho, bool ok, const Vec3& l, const Vec3& v) {
+    *reinterpret_cast<Rgb*>(rho) = ok ? eval(brdf, l, v) : Rgb(0.0);
+  });
+}
+
+py::array_t<double> pdfRows(const Brdf& brdf, const py::handle& L, const py::handle& V, const py::object& out, int threads) {
+  return pairRows<1>(L, V, out, threads, [&](double* density, bool ok, const Vec3& l, const Vec3& v) { *density = ok ? pdf(brdf, l, v) : 0.0; });
 }
 
 py::tuple sampleRows(const Brdf& brdf, const py::handle& vArg, const py::handle& uArg, int threads) {

@@ -16,8 +16,6 @@ PyObject* gWarning = nullptr;
 
 }  // namespace
 
-PyObject* warningCategory() { return gWarning; }
-
 void warnNotes() {
   for (const std::string& line : takeNotes())
     if (PyErr_WarnEx(gWarning, line.c_str(), 2) != 0) throw py::error_already_set();

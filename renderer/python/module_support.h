@@ -24,9 +24,7 @@ void bindBrdfs(py::module_& m);
 void bindFitting(py::module_& m);
 void bindRendering(py::module_& m);
 
-// The Python warning category of the notes (glossy.GlossyWarning), set up by module.cpp.
-PyObject* warningCategory();
-// Hands the library's queued notes to Python as warnings (needs the GIL).
+// Hands the library's queued notes to Python as warnings, glossy.GlossyWarning (needs the GIL).
 void warnNotes();
 
 // A library call as the command line makes it: what loading noted is kept only when the input proved good.

@@ -56,12 +56,11 @@ bool flagArg(const py::kwargs& a, const char* key) {
   return v && castOr<bool>(*v, std::string(key) + ": must be True or False");
 }
 
-// seed, threads, max_depth, light_samples: what render and sheet both tell the path tracer.
-void tracerKeywords(const py::kwargs& a, RenderSettings& s) {
-  if (auto v = optionArg(a, app::options::kSeed)) s.seed = uint32_t(*v);
-  if (auto v = optionArg(a, app::options::kThreads)) s.threads = int(*v);
-  if (auto v = optionArg(a, app::options::kMaxDepth)) s.maxDepth = int(*v);
-  if (auto v = optionArg(a, app::options::kLightSamples)) s.lightSamples = int(*v);
+// The number keywords of render or sheet, as their command's options (size stands for width and height).
+void numberKeywords(const py::kwargs& a, const std::vector<app::OptionField>& fields) {
+  for (const app::OptionField& f : fields)
+    if (f.spec->name != "width" && f.spec->name != "height")
+      if (const auto v = optionArg(a, *f.spec)) f.set(*v);
 }
 
 std::string optionalPath(const py::object& path) { return path.is_none() ? std::string() : pathText(path); }
@@ -126,8 +125,7 @@ py::array_t<float> renderArray(const py::kwargs& a) {
   }
   RenderSettings& s = job.settings;
   std::tie(s.width, s.height) = sizeOf(get("size"), app::options::kWidth, app::options::kHeight);
-  if (auto v = optionArg(a, app::options::kSpp)) s.spp = int(*v);
-  tracerKeywords(a, s);
+  numberKeywords(a, app::renderOptionFields(s));
   if (!get("brdf_sampling").is_none()) {
     job.brdfSampling = castOr<std::string>(get("brdf_sampling"), "brdf_sampling: must be a string");
     if (job.brdfSampling != "lobe" && job.brdfSampling != "cosine")
@@ -207,15 +205,10 @@ std::shared_ptr<PySheet> renderSheetOf(const py::kwargs& a) {
   job.merlDir = optionalPath(get("merl_dir"));
   SheetSettings& s = job.settings;
   std::tie(s.width, s.height) = sizeOf(get("size"), app::options::kSheetWidth, app::options::kSheetHeight);
-  if (auto v = optionArg(a, app::options::kTime)) s.secondsPerPanel = *v;
-  if (auto v = optionArg(a, app::options::kTargetError)) s.targetError = *v;
+  numberKeywords(a, app::sheetOptionFields(job));
   // As glossy sheet: --time renders until it is spent, --target-error until it is met or the default cap;
   // spp caps them when given.
-  const auto spp = optionArg(a, app::options::kSheetSpp);
-  if (spp) s.spp = int(*spp);
-  app::applyPassLimits(s, spp.has_value());
-  tracerKeywords(a, s);
-  if (auto v = optionArg(a, app::options::kExposure)) job.exposure = *v;
+  app::applyPassLimits(s, given(a, "spp").has_value());
   job.half = flagArg(a, "half");
   if (const py::object panels = get("panels"); !panels.is_none())
     s.panels = parsePanels(castOr<std::string>(panels, "panels: must be a string, a comma list of measured and MODEL:METRIC"), "panels");

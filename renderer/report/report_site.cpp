@@ -34,11 +34,9 @@ namespace {
 constexpr std::uintmax_t kMaxPlotFileBytes = std::uintmax_t(256) << 20;
 
 void checkPlotKinds(const std::vector<std::string>& kinds) {
-  std::string known;
-  for (const char* k : plot::kPlotKinds) known.append(known.empty() ? "" : ", ").append(k);
   for (const std::string& kind : kinds)
     if (std::find(plot::kPlotKinds.begin(), plot::kPlotKinds.end(), kind) == plot::kPlotKinds.end())
-      throw InputError("--plot-kinds: '" + shortened(kind) + "' is not a kind of plot (" + known + ")");
+      throw InputError("--plot-kinds: '" + shortened(kind) + "' is not a kind of plot (" + joined(plot::kPlotKinds, ", ") + ")");
 }
 
 // The plots of one material as the site shows them: the kinds asked for, the data files if asked for, and
@@ -82,12 +80,12 @@ SheetSite readSheetSite(const fs::path& sheetsDir, const ReportOptions& options)
   s.sheets = readSheetFolder(sheetsDir);
   checkSameSettings(s.sheets);
   for (const SheetRecord& sheet : s.sheets) readSheetPixels(sheet);  // a PNG whose header reads but whose pixels do not
-  if (options.plotsDir) {
+  if (!options.plotsDir.empty()) {
     std::error_code ec;
-    if (!fs::is_directory(*options.plotsDir, ec)) throw InputError(options.plotsDir->string() + ": no such folder (PLOTS_DIR)");
+    if (!fs::is_directory(options.plotsDir, ec)) throw InputError(options.plotsDir.string() + ": no such folder (PLOTS_DIR)");
     for (const SheetRecord& sheet : s.sheets)
-      if (fs::exists(fs::symlink_status(*options.plotsDir / sheet.name / "plots.json", ec)))
-        s.plots.emplace(sheet.name, sitePlots(readPlotIndex(*options.plotsDir, *options.plotsDir / sheet.name), options));
+      if (fs::exists(fs::symlink_status(options.plotsDir / sheet.name / "plots.json", ec)))
+        s.plots.emplace(sheet.name, sitePlots(readPlotIndex(options.plotsDir, options.plotsDir / sheet.name), options));
   }
   return s;
 }
@@ -129,7 +127,7 @@ void writeSheetSite(const SheetSite& s, const fs::path& root, const ReportOption
         for (const std::string* file : {&f.svg, &f.csv})
           if (!file->empty() && written.insert(folder / layout::plotFile(*file)).second) {
             writeFileAtomically(folder / layout::plotFile(*file),
-                                readInputFile(*options.plotsDir, it->second.folder / *file, kMaxPlotFileBytes, "plot file"));
+                                readInputFile(options.plotsDir, it->second.folder / *file, kMaxPlotFileBytes, "plot file"));
             ++result.plots;
           }
       }

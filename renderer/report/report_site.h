@@ -19,7 +19,7 @@ namespace glossy::report {
 
 struct ReportOptions {
   std::filesystem::path sheetsDir;
-  std::optional<std::filesystem::path> plotsDir;
+  std::filesystem::path plotsDir;  // empty: none
   std::filesystem::path site;
   // Only the plots of these kinds ("theta_h", "polar", ...; plot::kPlotKinds); empty: all.
   std::vector<std::string> plotKinds;

@@ -20,11 +20,7 @@ std::string numberCell(const std::optional<double>& v, const std::string& extra 
   return "<td data-value=\"" + sortValue(v) + "\"" + extra + ">" + shortNumber(v) + "</td>";
 }
 
-std::string list(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + escapeHtml(n);
-  return out;
-}
+std::string list(const std::vector<std::string>& names) { return joined(names, ", ", escapeHtml); }
 
 // The table's text columns, then its number columns, in order.
 constexpr const char* kTextColumns[] = {"Material", "Database", "Class", "Lighting", "Scene", "Model", "Fit"};

@@ -351,10 +351,8 @@ class GltfReader {
     const std::string name = where + ": " + what + " accessor " + std::to_string(index);
     if (a.type != type ||
         std::find(componentTypes.begin(), componentTypes.end(), a.componentType) == componentTypes.end()) {
-      std::string expected;
-      for (int ct : componentTypes) expected += std::string(expected.empty() ? "" : " or ") + componentTypeName(ct);
       fail(name + " is " + typeName(a.type) + " of " + componentTypeName(a.componentType) + ", expected " +
-           typeName(type) + " of " + expected);
+           typeName(type) + " of " + joined(componentTypes, " or ", componentTypeName));
     }
     if (a.sparse.isSparse) fail(name + " is sparse, which is not supported");
 

@@ -62,9 +62,7 @@ std::vector<SheetPanel> parsePanels(std::string_view list, const std::string& op
 }
 
 std::string panelList(std::span<const SheetPanel> panels) {
-  std::string list;
-  for (const SheetPanel& p : panels) list.append(list.empty() ? "" : ",").append(p.fit.empty() ? "measured" : p.fit);
-  return list;
+  return joined(panels, ",", [](const SheetPanel& p) { return p.fit.empty() ? std::string("measured") : p.fit; });
 }
 
 }  // namespace glossy

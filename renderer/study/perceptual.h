@@ -38,8 +38,6 @@ class PerceptualData {
   // The perceived distance of `method` from `material` (0 = indistinguishable, 1 = most different), if given.
   std::optional<double> distance(const std::string& method, const std::string& material) const;
 
-  std::size_t materialCount() const { return classes_.size(); }
-
  private:
   std::map<std::string, std::map<std::string, double>> distances_;  // method → material → distance
   std::map<std::string, std::string> classes_;                      // material → class

@@ -97,6 +97,16 @@ Opt meanOf(const std::vector<double>& v) {
   return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
 }
 
+// A bootstrap's statistic: the mean of the defined values among the materials drawn.
+auto meanOfDrawn(const std::vector<Opt>& values) {
+  return [&values](const std::vector<std::size_t>& drawn) {
+    std::vector<double> v;
+    for (std::size_t i : drawn)
+      if (values[i]) v.push_back(*values[i]);
+    return meanOf(v);
+  };
+}
+
 Opt medianOf(std::vector<double> v) {
   if (v.empty()) return std::nullopt;
   std::sort(v.begin(), v.end());
@@ -520,15 +530,7 @@ Json brdfVsImage(const Study& s, const AnalysisOptions& o, Json& differences, st
           within[i] = corr(p.x, p.y);
           defined += within[i] ? 1 : 0;
         }
-        const auto wiv = bootstrap(
-            all.size(),
-            [&](const std::vector<std::size_t>& idx) {
-              std::vector<double> v;
-              for (std::size_t i : idx)
-                if (within[i]) v.push_back(*within[i]);
-              return meanOf(v);
-            },
-            o.resamples, seedFor(o.seed, "within/" + key + "/" + cname));
+        const auto wiv = bootstrap(all.size(), meanOfDrawn(within), o.resamples, seedFor(o.seed, "within/" + key + "/" + cname));
         jw[cname] = intervalJson(wiv);
         jw["materials"] = defined;
         jw["materialsUndefined"] = int(s.materials.size()) - defined;
@@ -538,15 +540,7 @@ Json brdfVsImage(const Study& s, const AnalysisOptions& o, Json& differences, st
       std::vector<Opt> agrees(s.materials.size());
       int n = 0;
       for (std::size_t i = 0; i < s.materials.size(); ++i) n += (agrees[i] = bestAgrees(s, br.column, img.column, i)) ? 1 : 0;
-      const auto share = bootstrap(
-          all.size(),
-          [&](const std::vector<std::size_t>& idx) {
-            std::vector<double> v;
-            for (std::size_t i : idx)
-              if (agrees[i]) v.push_back(*agrees[i]);
-            return meanOf(v);
-          },
-          o.resamples, seedFor(o.seed, "best/" + key));
+      const auto share = bootstrap(all.size(), meanOfDrawn(agrees), o.resamples, seedFor(o.seed, "best/" + key));
       Json jb;
       jb["materials"] = n;
       jb["share"] = intervalJson(share);
@@ -813,8 +807,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
     summary += formatted("Friedman χ² = %.3f (df %d), p = %.3g", t.friedman->chiSquare, t.friedman->treatments - 1, t.friedman->pChiSquare);
     if (t.friedman->pF) summary += formatted("; Iman–Davenport F p = %.3g", *t.friedman->pF);
     summary += " over " + std::to_string(t.complete.size()) + " materials.\n";
-    std::string groups;
-    for (const Json& c : cliques) groups += (groups.empty() ? "" : "; ") + c.dump();
+    const std::string groups = joined(cliques, "; ", [](const Json& c) { return c.dump(); });
     summary += "Not significantly different (Holm–Wilcoxon, α = 0.05): " + (groups.empty() ? std::string("none") : groups) + ".\n";
   } else {
     summary += "Friedman test: none (" + t.friedmanReason + ").\n";

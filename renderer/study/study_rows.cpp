@@ -42,8 +42,7 @@ std::string fitSource(const FitId& id, const std::optional<MaterialFile>& file) 
 std::string sheetWarning(const report::SheetRecord& sheet) {
   // The sheet's warnings (glossy:warnings), then, for a sheet without a verdict, why it has none ("no
   // verdict: the measured panel is below its noise").
-  std::string out;
-  for (const std::string& w : sheet.warnings) out += (out.empty() ? "" : "; ") + w;
+  std::string out = joined(sheet.warnings, "; ");
   if (!sheet.verdict.starts_with("closest: ") && !sheet.verdict.starts_with("tie: ") && out.find(sheet.verdict) == std::string::npos)
     out += (out.empty() ? "" : "; ") + sheet.verdict;
   return out;

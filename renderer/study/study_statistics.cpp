@@ -125,46 +125,51 @@ std::optional<double> kendallTauB(const std::vector<double>& x, const std::vecto
   return std::clamp(concordantMinusDiscordant / denom, -1.0, 1.0);
 }
 
-std::optional<double> kendallW(const std::vector<std::vector<double>>& scores) {
-  const std::size_t m = scores.size();
-  if (m < 2) return std::nullopt;
-  const std::size_t n = scores[0].size();
-  if (n < 2) return std::nullopt;
-  std::vector<double> rankSums(n, 0.0);
+namespace {
+
+// What Kendall's W and Friedman's test both start from: each column's sum of its within-row average ranks,
+// and the rows' tie terms summed; nullopt unless there are 2 rows or more of the same 2 values or more.
+struct RankSums {
+  std::vector<double> sums;
   double ties = 0.0;
-  for (const auto& rater : scores) {
-    if (rater.size() != n) return std::nullopt;
-    const auto r = averageRanks(rater);
-    for (std::size_t j = 0; j < n; ++j) rankSums[j] += r[j];
-    ties += tieTerm(rater);
+};
+
+std::optional<RankSums> rankSums(const std::vector<std::vector<double>>& rows) {
+  if (rows.size() < 2 || rows[0].size() < 2) return std::nullopt;
+  RankSums out{std::vector<double>(rows[0].size(), 0.0)};
+  for (const auto& row : rows) {
+    if (row.size() != out.sums.size()) return std::nullopt;
+    const auto r = averageRanks(row);
+    for (std::size_t j = 0; j < r.size(); ++j) out.sums[j] += r[j];
+    out.ties += tieTerm(row);
   }
+  return out;
+}
+
+}  // namespace
+
+std::optional<double> kendallW(const std::vector<std::vector<double>>& scores) {
+  const auto ranks = rankSums(scores);
+  if (!ranks) return std::nullopt;
+  const std::size_t m = scores.size(), n = ranks->sums.size();
   const double mean = double(m) * double(n + 1) / 2.0;
   double s = 0.0;
-  for (double r : rankSums) s += (r - mean) * (r - mean);
+  for (double r : ranks->sums) s += (r - mean) * (r - mean);
   const double dm = double(m), dn = double(n);
-  const double denom = dm * dm * (dn * dn * dn - dn) - dm * ties;
+  const double denom = dm * dm * (dn * dn * dn - dn) - dm * ranks->ties;
   if (!(denom > 0.0)) return std::nullopt;
   return std::clamp(12.0 * s / denom, 0.0, 1.0);
 }
 
 std::optional<FriedmanResult> friedman(const std::vector<std::vector<double>>& blocks) {
-  const std::size_t nb = blocks.size();
-  if (nb < 2) return std::nullopt;
-  const std::size_t k = blocks[0].size();
-  if (k < 2) return std::nullopt;
-  std::vector<double> rankSums(k, 0.0);
-  double ties = 0.0;
-  for (const auto& b : blocks) {
-    if (b.size() != k) return std::nullopt;
-    const auto r = averageRanks(b);
-    for (std::size_t j = 0; j < k; ++j) rankSums[j] += r[j];
-    ties += tieTerm(b);
-  }
+  const auto ranks = rankSums(blocks);
+  if (!ranks) return std::nullopt;
+  const std::size_t nb = blocks.size(), k = ranks->sums.size();
   const double n = double(nb), dk = double(k);
-  const double c = 1.0 - ties / (n * (dk * dk * dk - dk));
+  const double c = 1.0 - ranks->ties / (n * (dk * dk * dk - dk));
   if (!(c > 0.0)) return std::nullopt;
   double ss = 0.0;
-  for (double r : rankSums) ss += r * r;
+  for (double r : ranks->sums) ss += r * r;
   FriedmanResult out;
   out.blocks = int(nb);
   out.treatments = int(k);
@@ -177,7 +182,7 @@ std::optional<FriedmanResult> friedman(const std::vector<std::vector<double>>& b
   } else {
     out.pF = 0.0;  // every block ranks the treatments alike: F is infinite
   }
-  for (double r : rankSums) out.meanRanks.push_back(r / n);
+  for (double r : ranks->sums) out.meanRanks.push_back(r / n);
   return out;
 }
 

@@ -63,9 +63,7 @@ std::string csvCell(const Json& v) {
 }  // namespace
 
 std::string rowsCsv(std::span<const StudyRow> rows) {
-  std::string out;
-  for (const Column& c : kColumns) out.append(out.empty() ? "" : ",").append(c.csv);
-  out += '\n';
+  std::string out = joined(kColumns, ",", [](const Column& c) { return c.csv; }) + "\n";
   for (const StudyRow& r : rows) {
     for (const Column& c : kColumns) out.append(&c == kColumns ? "" : ",").append(csvCell(c.value(r)));
     out += '\n';

@@ -14,8 +14,8 @@ from pathlib import Path as _Path
 import numpy as _np
 
 from . import _core
-from ._core import (Brdf, Fit, GlossyWarning, InputError, Material, MeasuredBrdf, Sheet, __version__, comparison_grid,
-                    error, fit, load_material, load_merl, make_brdf, models, read_exr, render, sheet, uniforms)
+from ._core import *  # noqa: F403 (the compiled module's public names, which __all__ lists)
+from ._core import __version__
 
 # pybind11 before 2.12 reads NumPy 1's array descriptors; NumPy 2 laid them out anew.
 if _core._pybind11_version < (2, 12) and int(_np.__version__.split(".")[0]) >= 2:
@@ -26,9 +26,7 @@ if _core._pybind11_version < (2, 12) and int(_np.__version__.split(".")[0]) >= 2
 if (_Path(__file__).parent / "data" / "scenes").is_dir():
     _core._set_data_dir(str(_Path(__file__).parent / "data"))
 
-__all__ = ["Brdf", "Fit", "GlossyWarning", "InputError", "Material", "MeasuredBrdf", "Sheet", "__version__",
-           "comparison_grid", "error", "fit", "load_material", "load_merl", "make_brdf", "models", "read_exr", "render",
-           "sheet", "uniforms"]
+__all__ = sorted(["__version__"] + [_name for _name in vars(_core) if not _name.startswith("_")])
 
 # Tracebacks and help() name them glossy.X, as users write them.
 for _name in __all__:
