@@ -66,9 +66,9 @@ TEST_P(LaneMath, MatchesLibmForEveryBatchLength) {
   }
 }
 
-// exp over the arguments the Beckmann term passes (−tan²θ_h / m², down to underflow) and log1p over
-// −u for u in [0, 1) (the Beckmann sampler's), both within a few ulp of libm.
-TEST_P(LaneMath, ExpAndLog1pMatchLibmForEveryBatchLength) {
+// exp over the arguments the Beckmann term passes (−tan²θ_h / m², down to underflow), log1p over −u for
+// u in [0, 1) (the Beckmann sampler's), and expm1, all within a few ulp of libm.
+TEST_P(LaneMath, ExpLog1pAndExpm1MatchLibmForEveryBatchLength) {
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int n = 1; n <= 70; ++n) {
@@ -79,11 +79,17 @@ TEST_P(LaneMath, ExpAndLog1pMatchLibmForEveryBatchLength) {
     }
     lanes::exp(a.data(), e.data(), n);
     lanes::log1p(u.data(), l.data(), n);
+    // expm1 over what the ABC sampler passes: 0 to ln(1 + B) ≈ 16, with arguments down to 1e-12.
+    std::vector<double> x(n), m(n);
+    for (int i = 0; i < n; ++i) x[i] = i == 0 ? 0.0 : i == 1 ? 16.0 : std::pow(10.0, 13.2 * unit(rng) - 12.0);
+    lanes::expm1(x.data(), m.data(), n);
     for (int i = 0; i < n; ++i) {
-      const double exactE = std::exp(a[i]), exactL = std::log1p(u[i]);
+      const double exactE = std::exp(a[i]), exactL = std::log1p(u[i]), exactM = std::expm1(x[i]);
       ASSERT_NEAR(e[i], exactE, 4.0 * std::abs(exactE) * 0x1p-52) << "exp(" << a[i] << "), lane " << i << " of " << n;
       ASSERT_NEAR(l[i], exactL, 4.0 * std::abs(exactL) * 0x1p-52) << "log1p(" << u[i] << "), lane " << i << " of " << n;
+      ASSERT_NEAR(m[i], exactM, 4.0 * std::abs(exactM) * 0x1p-52) << "expm1(" << x[i] << "), lane " << i << " of " << n;
     }
+    EXPECT_EQ(m[0], 0.0);
     EXPECT_EQ(e[0], 1.0);
     if (n >= 2) {
       EXPECT_EQ(e[1], 0.0);
@@ -96,16 +102,19 @@ TEST_P(LaneMath, ALaneGetsTheSameValueInAnyBatch) {
   std::vector<double> all(37), sAll(37), cAll(37);
   lanes::atan2(in.y.data(), in.x.data(), all.data(), 37);
   lanes::sinCos(in.angle.data(), sAll.data(), cAll.data(), 37);
-  std::vector<double> minusX(37), eAll(37), lAll(37);
+  std::vector<double> minusX(37), eAll(37), lAll(37), mAll(37);
   for (int i = 0; i < 37; ++i) minusX[i] = -std::abs(in.x[i]);
   lanes::exp(in.y.data(), eAll.data(), 37);
   lanes::log1p(minusX.data(), lAll.data(), 37);
+  lanes::expm1(in.y.data(), mAll.data(), 37);
   for (int i = 0; i < 37; ++i) {
-    double one = 0.0, s = 0.0, c = 0.0, e = 0.0, l = 0.0;
+    double one = 0.0, s = 0.0, c = 0.0, e = 0.0, l = 0.0, m = 0.0;
     lanes::atan2(&in.y[i], &in.x[i], &one, 1);
     lanes::sinCos(&in.angle[i], &s, &c, 1);
     lanes::exp(&in.y[i], &e, 1);
     lanes::log1p(&minusX[i], &l, 1);
+    lanes::expm1(&in.y[i], &m, 1);
+    ASSERT_EQ(m, mAll[i]) << i;
     ASSERT_EQ(one, all[i]) << i;
     ASSERT_EQ(s, sAll[i]) << i;
     ASSERT_EQ(c, cAll[i]) << i;

@@ -129,9 +129,10 @@ TEST(Sampling, BatchFormsEqualTheOneLaneForms) {
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   const auto close = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); };
-  int batched = 0, validSamples = 0;
+  int cookTorrance = 0, microfacet = 0, validSamples = 0;
   for (const auto& [name, brdf] : brdfs) {
-    batched += brdf.as<CookTorrance>() != nullptr;
+    cookTorrance += brdf.as<CookTorrance>() != nullptr;
+    microfacet += brdf.as<Microfacet>() != nullptr;
     for (int n : {1, 3, 4, 17, kMaxBatchLanes, 2 * kMaxBatchLanes + 5}) {
       std::vector<Vec3> V(n), L(n);
       std::vector<double> uLobe(n);
@@ -163,7 +164,8 @@ TEST(Sampling, BatchFormsEqualTheOneLaneForms) {
       }
     }
   }
-  EXPECT_GT(batched, 0) << "no Cook-Torrance fit in the library: the batch forms went untested";
+  EXPECT_GT(cookTorrance, 0) << "no Cook-Torrance fit in the library: its batch forms went untested";
+  EXPECT_GT(microfacet, 0) << "no Microfacet fit in the library: its batch forms went untested";
   EXPECT_GT(validSamples, 1000);
 }
 

@@ -33,6 +33,10 @@ void log1p(const double* a, double* out, int n) {
   for (int i = 0; i < n; ++i) out[i] = std::log1p(a[i]);
 }
 
+void expm1(const double* a, double* out, int n) {
+  for (int i = 0; i < n; ++i) out[i] = std::expm1(a[i]);
+}
+
 }  // namespace glossy::lanes
 
 #else
@@ -45,6 +49,7 @@ __m128d _ZGVbN2v_sin(__m128d a);
 __m128d _ZGVbN2v_cos(__m128d a);
 __m128d _ZGVbN2v_exp(__m128d a);
 __m128d _ZGVbN2v_log1p(__m128d a);
+__m128d _ZGVbN2v_expm1(__m128d a);
 // Declared AVX2 like the blocks that call them: clang refuses a ymm argument to a baseline-ISA function.
 #define GLOSSY_AVX2 __attribute__((target("avx2,fma")))
 GLOSSY_AVX2 __m256d _ZGVdN4vv_atan2(__m256d y, __m256d x);
@@ -52,6 +57,7 @@ GLOSSY_AVX2 __m256d _ZGVdN4v_sin(__m256d a);
 GLOSSY_AVX2 __m256d _ZGVdN4v_cos(__m256d a);
 GLOSSY_AVX2 __m256d _ZGVdN4v_exp(__m256d a);
 GLOSSY_AVX2 __m256d _ZGVdN4v_log1p(__m256d a);
+GLOSSY_AVX2 __m256d _ZGVdN4v_expm1(__m256d a);
 #undef GLOSSY_AVX2
 }
 
@@ -85,9 +91,15 @@ __attribute__((target("avx2,fma"))) void expAvx2(const double* a, const double*,
 __attribute__((target("avx2,fma"))) void log1pAvx2(const double* a, const double*, double* out, double*) {
   _mm256_storeu_pd(out, _ZGVdN4v_log1p(_mm256_loadu_pd(a)));
 }
+__attribute__((target("avx2,fma"))) void expm1Avx2(const double* a, const double*, double* out, double*) {
+  _mm256_storeu_pd(out, _ZGVdN4v_expm1(_mm256_loadu_pd(a)));
+}
 void expSse2(const double* a, const double*, double* out, double*) { _mm_storeu_pd(out, _ZGVbN2v_exp(_mm_loadu_pd(a))); }
 void log1pSse2(const double* a, const double*, double* out, double*) {
   _mm_storeu_pd(out, _ZGVbN2v_log1p(_mm_loadu_pd(a)));
+}
+void expm1Sse2(const double* a, const double*, double* out, double*) {
+  _mm_storeu_pd(out, _ZGVbN2v_expm1(_mm_loadu_pd(a)));
 }
 void atan2Sse2(const double* y, const double* x, double* out, double*) {
   _mm_storeu_pd(out, _ZGVbN2vv_atan2(_mm_loadu_pd(y), _mm_loadu_pd(x)));
@@ -129,6 +141,7 @@ void atan2(const double* y, const double* x, double* out, int n) { forBlocks(ata
 void sinCos(const double* a, double* s, double* c, int n) { forBlocks(sinCosAvx2, sinCosSse2, a, nullptr, s, c, n); }
 void exp(const double* a, double* out, int n) { forBlocks(expAvx2, expSse2, a, nullptr, out, nullptr, n); }
 void log1p(const double* a, double* out, int n) { forBlocks(log1pAvx2, log1pSse2, a, nullptr, out, nullptr, n); }
+void expm1(const double* a, double* out, int n) { forBlocks(expm1Avx2, expm1Sse2, a, nullptr, out, nullptr, n); }
 
 }  // namespace glossy::lanes
 

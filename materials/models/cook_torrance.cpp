@@ -2,21 +2,13 @@
 // lane, as loops over arrays that the compiler vectorises. This file is compiled without errno for sqrt
 // and without trapping math (materials/CMakeLists.txt): neither changes a value, but each would keep a
 // branch in the loops (a libm call for a negative sqrt; no speculated division under a select), and a
-// branch stops vectorisation. On x86-64 an AVX2 clone (4 lanes an instruction, no FMA, so the same
-// roundings) is chosen at run time where the CPU has it.
+// branch stops vectorisation. The kernels are AVX2-cloned (GLOSSY_LANE_CLONES, lane_math.h).
 #include "materials/models/cook_torrance.h"
 
 namespace glossy {
 
-#if defined(__x86_64__)
-#define GLOSSY_LANE_CLONES __attribute__((target_clones("avx2", "default")))
-#else
-#define GLOSSY_LANE_CLONES
-#endif
-
 namespace {
 
-// The kernels are free functions of internal linkage: cloned member functions trip LTO's ODR check.
 GLOSSY_LANE_CLONES
 void oneMinusCosLanes(double m, const Vec2* u, const bool* lobe, double* oneMinusCos, int n) {
   double x[kMaxBatchLanes] = {};  // initialised for GCC, which cannot see that lanes::log1p reads only n

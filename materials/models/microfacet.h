@@ -60,8 +60,22 @@ struct Microfacet {
     const AbcProfile s{b, c};
     return s(h.oneMinusCosTheta) / (s.integral(1.0) * 2.0 * kPi * 4.0 * h.cosVH);
   }
-  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
   double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
+  // sample and evalPdf are their batch forms' one lane, as Cook-Torrance's (cook_torrance.h).
+  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const {
+    BrdfSample s;
+    sampleMixtureBatch(*this, &V, &uLobe, &u, &s, 1);
+    return s;
+  }
+  BrdfValue evalPdf(const Vec3& L, const Vec3& V) const {
+    BrdfValue v;
+    evalPdfBatch(&L, &V, &v, 1);
+    return v;
+  }
+  // The batch forms (brdf_sample.h): sampleLobe's 1 − cos θ_h and evalPdf, their log1p, expm1 and exp
+  // computed for all lanes at once, and the profile's integrals once per batch (microfacet.cpp).
+  void lobeOneMinusCosBatch(const Vec2* u, const bool* lobe, double* oneMinusCos, int n) const;
+  void evalPdfBatch(const Vec3* L, const Vec3* V, BrdfValue* out, int n) const;
 };
 
 }  // namespace glossy
