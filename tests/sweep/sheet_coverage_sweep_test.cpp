@@ -6,9 +6,9 @@
 // seeds. At most 5 % of seeds name a model the converged sheet does not rank first.
 //
 // gold-paint holds at 64² and 128², 64 spp. blue-acrylic and chrome do not (docs/sheets.md, "Where
-// the intervals hold": their error is carried by a sharp highlight a few pixels wide, whose squared error
-// the seeds mostly miss); their tests are DISABLED_ so that they do not fail the sweep, and run with
-// --gtest_also_run_disabled_tests to measure them again. bench/sheet_coverage prints the same figures from
+// the intervals hold": one or two highlight pixels carry the variance, and a seed whose difference there
+// comes out small estimates that variance small too); their tests are DISABLED_ so that they do not fail
+// the sweep, and run with --gtest_also_run_disabled_tests to measure them again. bench/sheet_coverage prints the same figures from
 // cached renders.
 #include "renderer/sheet/sheet.h"
 #include "materials/core/text.h"
