@@ -5,7 +5,8 @@
 // figure's mean over the seeds. The panels' replicates are cached per seed (--cache), so that a change to
 // the estimator (comparison.cpp) is measured again on the same renders without rendering them again.
 // COVERAGE_DEBUG_PANEL=k prints analytic panel k's figures seed by seed; the last column counts the seeds
-// whose r* interval has fewer than COVERAGE_DOF (default 10) degrees of freedom, and how many of those cover.
+// whose r* interval has fewer than COVERAGE_DOF (default 10) degrees of freedom, and how many of those cover;
+// then the seeds whose sheet stands under a warning (figureWarnings: no verdict), and how many of those cover.
 #include "materials/merl/merl_table.h"
 #include "materials/nbrdf/neural_brdf.h"
 #include "renderer/sheet/sheet.h"
@@ -144,12 +145,13 @@ int main(int argc, char** argv) {
   const Comparison converged = compare(get(convergedSpp, 1000));
   const size_t n = converged.panels.size();
   std::vector<Moments> r(n), rSigma(n), l(n), lSigma(n), f(n), fSigma(n);
-  std::vector<int> rCover(n), lCover(n), fewDof(n), fewDofCovered(n);
+  std::vector<int> rCover(n), lCover(n), fewDof(n), fewDofCovered(n), warned(n), warnedCovered(n);
   const double dofWarning = std::getenv("COVERAGE_DOF") ? std::atof(std::getenv("COVERAGE_DOF")) : 10.0;
   std::vector<std::vector<double>> flips(n), flipLo(n), flipHi(n);
   for (int seed = 1; seed <= seeds; ++seed) {
     const Render render = get(spp, uint32_t(seed));
     const Comparison c = compare(render);
+    const bool warning = !figureWarnings(c.panels).empty();
     if (const char* d = std::getenv("COVERAGE_DEBUG_PANEL")) {
       const PanelFigures& x = c.panels[size_t(std::atoi(d))];
       std::printf("seed %d: r* %.4f [%.4f, %.4f] noisy %.4f dof %.1f\n", seed, x.relativeRmse, x.relativeRmseCi.lo, x.relativeRmseCi.hi,
@@ -164,6 +166,7 @@ int main(int argc, char** argv) {
       const bool covered = x.relativeRmseCi.lo <= y.relativeRmse && y.relativeRmse <= x.relativeRmseCi.hi;
       rCover[p] += covered;
       if (x.relativeRmseDof < dofWarning) ++fewDof[p], fewDofCovered[p] += covered;
+      if (warning) ++warned[p], warnedCovered[p] += covered;
       lCover[p] += x.luminanceRatioCi.lo <= y.luminanceRatio && y.luminanceRatio <= x.luminanceRatioCi.hi;
       if (render.flipLo[p] >= 0.0) {
         f[p].add(render.flip[p]), fSigma[p].add((render.flipHi[p] - render.flipLo[p]) / 2.0 / 1.96);
@@ -174,7 +177,7 @@ int main(int argc, char** argv) {
   std::printf("%s %d² %d spp, %d seeds, converged %d spp (render %.0f s)\n", material.c_str(), size, spp, seeds, convergedSpp,
               renderSeconds);
   std::printf("%-3s %-8s %-8s %-8s %-6s %-5s | %-7s %-6s %-5s | %-7s %-6s %-5s | %s\n", "p", "r*conv", "r*mean", "r*sd", "ratio",
-              "cov", "lumconv", "ratio", "cov", "flip", "ratio", "cov", "seeds with dof < limit (covered)");
+              "cov", "lumconv", "ratio", "cov", "flip", "ratio", "cov", "seeds with dof < limit (covered) | warned (covered)");
   for (size_t p = 0; p < n; ++p) {
     if (!r[p].n) continue;
     int fCover = 0;
@@ -182,10 +185,10 @@ int main(int argc, char** argv) {
     for (size_t s = 0; s < flips[p].size(); ++s) fCover += flipLo[p][s] <= fMean && fMean <= flipHi[p][s];
     // The implied σ: the root mean square of the seeds' (what an average interval says).
     const auto implied = [](const Moments& m) { return std::sqrt(m.sum2 / m.n); };
-    std::printf("%-3zu %-8.4f %-8.4f %-8.5f %-6.2f %-5.0f | %-7.4f %-6.2f %-5.0f | %-7.4f %-6.2f %-5.0f | %d (%d)\n", p,
+    std::printf("%-3zu %-8.4f %-8.4f %-8.5f %-6.2f %-5.0f | %-7.4f %-6.2f %-5.0f | %-7.4f %-6.2f %-5.0f | %d (%d) | %d (%d)\n", p,
                 converged.panels[p].relativeRmse, r[p].mean(), r[p].sd(), r[p].sd() / implied(rSigma[p]), 100.0 * rCover[p] / r[p].n,
                 converged.panels[p].luminanceRatio, l[p].sd() / implied(lSigma[p]), 100.0 * lCover[p] / l[p].n, fMean,
-                f[p].n ? f[p].sd() / implied(fSigma[p]) : 0.0, f[p].n ? 100.0 * fCover / f[p].n : 0.0, fewDof[p], fewDofCovered[p]);
+                f[p].n ? f[p].sd() / implied(fSigma[p]) : 0.0, f[p].n ? 100.0 * fCover / f[p].n : 0.0, fewDof[p], fewDofCovered[p], warned[p], warnedCovered[p]);
   }
   return 0;
 }

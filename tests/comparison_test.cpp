@@ -251,17 +251,49 @@ TEST(Comparison, IntervalsCoverAtTheirRateAndAreNotWide) {
     std::printf("model %zu: r = %.4f, r* covered %.1f %%, luminance ratio covered %.1f %%, "
                 "half-width / (1.96 sd of r*) = %.3f\n",
                 p, r, 100.0 * rateR, 100.0 * rateL, widthRatio);
+    // Model 2's rare spikes leave most draws fewer than 50 degrees of freedom, and those take the
+    // test-inversion interval (comparison.cpp), which counts a spike in the variance it scales: about
+    // twice as wide as the spread there. That is the price of intervals that hold on sharp highlights.
+    const double widest = p == 2 ? 2.5 : 1.25;
     EXPECT_GE(rateR, 0.92);
-    EXPECT_LE(rateR, 0.98);
+    EXPECT_LE(rateR, p == 2 ? 1.0 : 0.98);
     EXPECT_GE(rateL, 0.92);
     EXPECT_LE(rateL, 0.98);
     EXPECT_GT(widthRatio, 1.0 / 1.25);
-    EXPECT_LT(widthRatio, 1.25);
+    EXPECT_LT(widthRatio, widest);
   }
   EXPECT_DOUBLE_EQ(c.comparisons.front().widestHalfWidth(),
                    std::max({c.comparisons.front().panels[0].relativeRmseCi.halfWidth(),
                              c.comparisons.front().panels[1].relativeRmseCi.halfWidth(),
                              c.comparisons.front().panels[2].relativeRmseCi.halfWidth()}));
+}
+
+// A sharp highlight: one pixel carries the whole difference, and its replicates' noise is as large as the
+// difference itself. An interval whose width is estimated at the draw's own difference shrinks with it
+// where the difference comes out small (the delta method covers 83 % here); testing each candidate value
+// with the variance it implies covers at the nominal rate.
+TEST(Comparison, IntervalsHoldWhereOnePixelCarriesTheDifference) {
+  constexpr int kSide = 16, kReplicates = 4, kDraws = 400;
+  constexpr size_t kCount = size_t(kSide) * kSide;
+  const std::vector<char> mask(kCount, 1);
+  constexpr double kMeasured = 0.05, kDifference = 1.0, kNoise = 1.0;
+  const double truth = std::sqrt(3.0 * kDifference * kDifference / (3.0 * kCount * kMeasured * kMeasured));
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> normal;
+  int covered = 0;
+  for (int draw = 0; draw < kDraws; ++draw) {
+    std::vector<RgbImage> measured(kReplicates, RgbImage(kSide, kSide)), model = measured;
+    for (int j = 0; j < kReplicates; ++j) {
+      std::fill(measured[j].pixels.begin(), measured[j].pixels.end(), float(kMeasured));
+      model[j] = measured[j];
+      for (int c = 0; c < 3; ++c) model[j].pixels[size_t(c)] += float(kDifference + kNoise * normal(rng));
+    }
+    const PanelFigures f = compareToMeasured({model}, measured, mask).panels[0];
+    ASSERT_TRUE(f.hasCi);
+    covered += f.relativeRmseCi.lo <= truth && truth <= f.relativeRmseCi.hi;
+  }
+  std::printf("one pixel carries the difference: r covered %.1f %%\n", 100.0 * covered / kDraws);
+  EXPECT_GE(covered, kDraws * 90 / 100);
 }
 
 // How often each outcome occurs over the trials: the closer model named alone, the other named alone, a tie.

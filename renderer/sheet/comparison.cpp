@@ -67,8 +67,14 @@ struct Totals {
   std::vector<double> lum;       // Σ lum(m̄), then each Σ lum(p̄)
   std::vector<double> lumVar;    // Σ Var lum(·̄), in the same order
   std::vector<double> lumCov;    // Σ Cov(lum(·̄), lum(m̄)), in the same order
+  // For the test-inversion interval (scoreInterval), second pass, with x̄ a pixel's mean and S its sample
+  // covariance: Σ x̄ᵀ S x̄ of the measured panel, then each difference's; Σ d̄ᵀ S_dm m̄ per difference;
+  // Σ tr(C Cᵀ) (unbiased, C the covariance of the pair) of m with m, then each d with d, and of each d with m.
+  std::vector<double> projVar, projCov, trace, traceCross;
+  std::vector<double> lumRatioVar, lumRatioVarSquared;  // Σ v, Σ v² of each pixel's Var of lum(p̄) − L lum(m̄)
   explicit Totals(size_t s)
-      : series(s), u(s), ratioVar(s), jack(s), jackSquared(s), diffVar(s * s), squared(s), lum(s), lumVar(s), lumCov(s) {}
+      : series(s), u(s), ratioVar(s), jack(s), jackSquared(s), diffVar(s * s), squared(s), lum(s), lumVar(s), lumCov(s),
+        projVar(s), projCov(s), trace(s), traceCross(s), lumRatioVar(s), lumRatioVarSquared(s) {}
   double diff(size_t s, size_t t) const { return diffVar[s * series + t]; }
 };
 
@@ -113,6 +119,15 @@ class PixelReplicates {
         diffVar[s * series_ + q] += v;
         diffVar[q * series_ + s] += v;
       }
+    }
+    addScoreTerms(t);
+    for (size_t s = 1; s < series_; ++s) {
+      const double ratio = t.lum[s] / t.lum[0];
+      double mean = 0.0, var = 0.0;
+      for (int j = 0; j < k_; ++j) mean += (l_[s * k_ + j] - ratio * l_[j]) / k_;
+      for (int j = 0; j < k_; ++j) var += (l_[s * k_ + j] - ratio * l_[j] - mean) * (l_[s * k_ + j] - ratio * l_[j] - mean);
+      const double v = var / (k_ * (k_ - 1.0));
+      t.lumRatioVar[s] += v, t.lumRatioVarSquared[s] += v * v;
     }
   }
 
@@ -190,6 +205,51 @@ class PixelReplicates {
     return (k - 1.0) / k * sum;
   }
 
+  // The pieces of Var(U_d − ρ U_m) = 4/K (μ_d − ρ μ_m)-weighted covariance + 2/(K (K − 1)) tr-terms that the
+  // test inversion recombines for each ρ: the replicates' deviations projected on the pixel's means, and
+  // tr(C Cᵀ) unbiased from disjoint pairs of replicates, E[(Δx·Δx')(Δy·Δy')] = 4 tr(C Cᵀ) for the
+  // differences Δ = x_a − x_b, Δ' = x_c − x_e of four distinct replicates.
+  void addScoreTerms(Totals& t) const {
+    const double k = k_;
+    std::vector<Rgb3> mean(series_);
+    for (size_t s = 0; s < series_; ++s)
+      for (int j = 0; j < k_; ++j)
+        for (int c = 0; c < 3; ++c) mean[s][c] += x_[s * k_ + j][c] / k;
+    const auto projection = [&](size_t s, int j) {
+      const Rgb3& x = x_[s * k_ + j];
+      return dot({x[0] - mean[s][0], x[1] - mean[s][1], x[2] - mean[s][2]}, mean[s]);
+    };
+    for (size_t s = 0; s < series_; ++s) {
+      double var = 0.0, cov = 0.0;
+      for (int j = 0; j < k_; ++j) {
+        var += projection(s, j) * projection(s, j);
+        cov += projection(s, j) * projection(0, j);
+      }
+      t.projVar[s] += var / (k - 1.0);
+      if (s > 0) t.projCov[s] += cov / (k - 1.0);
+    }
+    double count = 0.0;
+    std::vector<double> trace(series_), cross(series_);
+    const auto delta = [&](size_t s, int a, int b) {
+      const Rgb3 &p = x_[s * k_ + a], &q = x_[s * k_ + b];
+      return Rgb3{p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+    };
+    for (int a = 0; a < k_; ++a)
+      for (int b = a + 1; b < k_; ++b)
+        for (int c = a + 1; c < k_; ++c)
+          for (int e = c + 1; e < k_; ++e) {
+            if (c == b || e == b) continue;
+            count += 1.0;
+            const double m = dot(delta(0, a, b), delta(0, c, e));
+            trace[0] += m * m;
+            for (size_t s = 1; s < series_; ++s) {
+              const double d = dot(delta(s, a, b), delta(s, c, e));
+              trace[s] += d * d, cross[s] += d * m;
+            }
+          }
+    for (size_t s = 0; s < series_; ++s) t.trace[s] += trace[s] / (4.0 * count), t.traceCross[s] += cross[s] / (4.0 * count);
+  }
+
   double& gram(size_t s, int j, int i) { return gram_[(s * k_ + j) * k_ + i]; }
   double gram(size_t s, int j, int i) const { return gram_[(s * k_ + j) * k_ + i]; }
 
@@ -199,6 +259,33 @@ class PixelReplicates {
   std::vector<double> l_;
   std::vector<double> gram_, rowSum_, total_, u_;
 };
+
+// Below this many Welch–Satterthwaite degrees of freedom a few pixels carry the variance of A, and the
+// r* interval is the test inversion's (scoreInterval) instead of the delta method's. Broad lobes, where the
+// delta method holds and is narrower, have ν in the hundreds; sharp ones 3–40 (docs/sheets.md).
+constexpr double kFewDof = 50.0;
+
+// The set of ρ ≥ 0 with (R − ρ)² ≤ t² v(ρ), R = A / B and v(ρ) the variance of A / B − ρ were ρ the true
+// ratio: an interval not centred on a variance estimated at R itself, which collapses with R where one
+// pixel carries A (a seed whose difference there comes out small has a small R and a small variance).
+// Its ends by bisection from R outward; an end the test never rejects stays at 0 or at `cap`.
+template <class Variance> Interval scoreInterval(double r, double t, double step, double cap, Variance&& v) {
+  const auto accepted = [&](double rho) { return (r - rho) * (r - rho) <= t * t * v(rho); };
+  const double start = std::max(r, 0.0);
+  if (!accepted(start)) return {start, start};  // only when R < 0: then 0 is rejected too
+  const auto bisect = [&](double in, double out) {
+    for (int i = 0; i < 100; ++i) {
+      const double mid = 0.5 * (in + out);
+      (accepted(mid) ? in : out) = mid;
+    }
+    return in;
+  };
+  const double lo = accepted(0.0) ? 0.0 : bisect(start, 0.0);
+  if (accepted(cap)) return {lo, std::max(cap, start)};
+  double in = start, h = step > 0.0 ? step : std::max(start, 1e-300);
+  while (in + h < cap && accepted(in + h)) in += h, h *= 2.0;
+  return {lo, bisect(in, std::min(in + h, cap))};
+}
 
 // Blocks of kBlock × kBlock pixels, over which the variance estimates are summed before they are clamped.
 constexpr size_t kBlock = 16;
@@ -355,11 +442,36 @@ Comparison compareToMeasured(const std::vector<std::vector<RgbImage>>& panels, c
     // a few pixels wide, a rare bright path): the interval then takes Student's t for ν, not the normal z.
     fig.relativeRmseDof = totals.jackSquared[s] > 0.0 ? (k - 1.0) * totals.jack[s] * totals.jack[s] / totals.jackSquared[s]
                                                       : std::numeric_limits<double>::infinity();
-    const double halfRatio = studentQuantile(confidence, fig.relativeRmseDof) * std::sqrt(totals.ratioVar[s]);
+    const double tq = studentQuantile(confidence, fig.relativeRmseDof);
+    const double halfRatio = tq * std::sqrt(totals.ratioVar[s]);
     fig.relativeRmseCi = {std::sqrt(std::max(0.0, ratio - halfRatio)), std::sqrt(std::max(0.0, ratio + halfRatio))};
+    if (fig.relativeRmseDof < kFewDof) {
+      // Few pixels carry A: the delta method's variance, taken at this seed's own difference, shrinks
+      // with it. Test each ρ with the variance A would have if the true squared difference were ρ B: the
+      // difference terms scaled by c² = ρ B / Σ|d̄|² (the seed's differences give the pixels' shares and
+      // directions, ρ their size); the noise-only terms, which may come out negative, clamped at 0.
+      const double kk = k, sd = totals.squared[s];
+      const auto variance = [&](double rho) {
+        const double c = sd > 0.0 ? std::sqrt(rho * b / sd) : 0.0;
+        const double linear = c * c * totals.projVar[s] - 2.0 * rho * c * totals.projCov[s] + rho * rho * totals.projVar[0];
+        const double noise = totals.trace[s] - 2.0 * rho * totals.traceCross[s] + rho * rho * totals.trace[0];
+        return (4.0 / kk * linear + std::max(0.0, 2.0 / (kk * (kk - 1.0)) * noise)) / (b * b);
+      };
+      // Where B's own variance is as large as (B / t)² (a highlight seen in one replicate of the measured
+      // panel) no ρ above R is rejected: the interval then ends at four times the noisy figure's square
+      // (twice the noisy r), finite, since studies and merged tables take only finite bounds.
+      const double cap = 4.0 * std::max(ratio + halfRatio, totals.squared[s] / totals.squared[0]);
+      const Interval squared = scoreInterval(ratio, tq, halfRatio, cap, variance);
+      fig.relativeRmseCi = {std::sqrt(squared.lo), std::sqrt(squared.hi)};
+    }
     const double l = fig.luminanceRatio, lumTotal = totals.lum[0];
     const double varL = (totals.lumVar[s] - 2.0 * l * totals.lumCov[s] + l * l * totals.lumVar[0]) / (lumTotal * lumTotal);
-    const double halfL = z * std::sqrt(std::max(0.0, varL));
+    // Student's t for the luminance sums too, with their own Welch–Satterthwaite degrees of freedom: a
+    // highlight's few pixels carry their variance as they carry A's.
+    const double lumDof = totals.lumRatioVarSquared[s] > 0.0 ? (k - 1.0) * totals.lumRatioVar[s] * totals.lumRatioVar[s] /
+                                                                   totals.lumRatioVarSquared[s]
+                                                             : std::numeric_limits<double>::infinity();
+    const double halfL = studentQuantile(confidence, lumDof) * std::sqrt(std::max(0.0, varL));
     fig.luminanceRatioCi = {l - halfL, l + halfL};
   }
   out.verdict = decide(out, fitted, totals, z, confidence);

@@ -26,7 +26,10 @@
 // the r* interval is the square root of R's, clamped at 0, so it is asymmetric). R's takes Student's t with
 // the Welch–Satterthwaite degrees of freedom of its sum over pixels (each pixel's share weighed by the
 // jackknife, which is never negative): where one sharp highlight's few pixels carry the variance, the
-// estimate of that variance rests on a few times K − 1 values and z would understate the spread.
+// estimate of that variance rests on a few times K − 1 values and z would understate the spread. There
+// (ν < 50) the r* interval inverts a test instead: each candidate ρ is tested with the variance A would have
+// if the true squared difference were ρ B, not the variance at the seed's own difference, which shrinks
+// with it (docs/sheets.md, "The intervals"). The luminance ratio's interval takes t for its own ν.
 //
 // Verdict: all panels share B, so the smallest A is the smallest r*. That model is named closest only if
 // every other model's A exceeds it by more than z standard errors of the difference (estimated per pixel
