@@ -2,7 +2,7 @@
 // light samples (a light chosen by power, a point on it, the shadow ray), then each weighed by the
 // vertex's BRDF and by multiple importance sampling against the BRDF's own sampling (the power heuristic
 // with sample counts; weight 1 for a delta light, which no BSDF sample finds). Written once, for a set of
-// vertices (lanes.h): the reference's one vertex (sampleLight, addDirectLight) or a wave's, each stage one
+// vertices (lanes.h): the reference's one vertex or a wave's (path_vertex.h), each stage one
 // batch over the set (the lights' samples, the shadow rays, the BRDF's values), the k-th light samples of
 // all its vertices at a time, so a vertex gets the same numbers either way. The samples and their shadow
 // rays do not depend on the BRDF, so a sheet's panels share them (panel_split.h); the weighing is each
@@ -68,8 +68,7 @@ inline void drawLightSamples(const Light* light, const Receiver* at, const Vec2*
   light->sample(at, u, group.lane, group.n, out);
 }
 
-// The step for the vertices of a set of lanes below N, with their scratch: a wave's tracer keeps one, the
-// reference makes one of a lane per vertex.
+// The step for the vertices of a set of lanes below N, with their scratch (Paths<N> keeps one).
 template <int N>
 class DirectLight {
  public:
@@ -155,16 +154,5 @@ class DirectLight {
   Vec3 wi_[N], wo_[N];  // the BRDF's batch, packed
   BrdfValue value_[N];
 };
-
-// The step for one vertex, the reference's: its light samples, then their light weighed by its BRDF.
-inline VertexLight sampleLight(const PathContext& context, const ShadingPoint& sp, const VertexDraws& u) {
-  VertexLight light;
-  DirectLight<1>().sample(context, Lanes::first(1), &sp, &u, &light, drawLightSamples);
-  return light;
-}
-inline void addDirectLight(const RenderSettings& settings, const ShadingPoint& sp, const VertexLight& light,
-                           const Rgb& throughput, Rgb& radiance) {
-  DirectLight<1>().add(settings, Lanes::first(1), &sp, &light, &throughput, &radiance);
-}
 
 }  // namespace glossy

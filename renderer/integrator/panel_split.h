@@ -4,6 +4,7 @@
 // own. A path that never meets the object is the same in every panel.
 #pragma once
 
+#include "renderer/integrator/path_vertex.h"
 #include "renderer/integrator/shared_draws.h"
 
 #include <algorithm>
@@ -17,35 +18,76 @@ namespace glossy {
 // A path at its first vertex on the object, before the vertex's BRDF acts: all that the panels share.
 struct ObjectVertex {
   int depth = 0;           // 0: the path never reached the object
+  uint32_t mesh = 0;
   PathState path;
   Rgb radiance{0.0};       // gathered before the vertex
-  PathVertex vertex;       // its point's brdf is the first panel's; each panel sets its own
+  ShadingPoint point;      // its brdf is the first panel's; each panel sets its own
+  VertexDraws draws;
+  VertexLight light;
   CmjSampler sampler;      // past the vertex's draws
 };
 
-// Li, but a path that reaches the object stops there, stop its vertex (stop.depth is 0 when it did not
-// stop): the radiance so far. continueFromObject then finishes it for a panel, whose context differs only
-// in the object's BRDF. The two make exactly Li's radiance.
-inline Rgb traceToObject(const PathContext& context, Ray ray, CmjSampler& sampler, ObjectVertex& stop) {
-  Rgb radiance(0.0);
-  stop.depth = 0;
-  PathState path(ray.origin);
-  PathVertex v;
-  for (int depth = 1; nextVertex(context, ray, sampler, depth, path, radiance, v); ++depth) {
-    if (context.scene.isObject(v.mesh)) return (stop = ObjectVertex{depth, path, radiance, v, sampler}).radiance;
-    if (!reflect(context, depth, v, path, radiance, ray)) break;
-  }
-  return radiance;
-}
+// A panel's paths, N at a time (a wave's kWaveSize, or the reference's one path), on one thread.
+template <int N>
+class PanelPaths {
+ public:
+  PanelPaths(const PathContext& panel, SharedDraws* shared) : panel_(panel), shared_(shared), paths_(panel) {}
 
-inline Rgb continueFromObject(const PathContext& panel, ObjectVertex stop) {
-  stop.vertex.point.brdf = &panel.scene.brdfOf(stop.vertex.mesh);
-  stop.vertex.point.lightSamples = panel.lightSamplesAt(stop.vertex.mesh, stop.depth);
-  Ray ray;
-  if (reflect(panel, stop.depth, stop.vertex, stop.path, stop.radiance, ray))
-    finishPath(panel, ray, stop.sampler, stop.path, stop.depth + 1, stop.radiance);
-  return stop.radiance;
-}
+  // radiance[i] of the camera rays[i], i < n. With stops, a path that reaches the object stops there,
+  // stops[i] its vertex (depth 0 for the others), radiance[i] what it gathered before.
+  void trace(Ray* rays, CmjSampler* samplers, int n, Rgb* radiance, ObjectVertex* stops) {
+    for (int first = 0; first < n; first += N) {
+      const Lanes lanes = Lanes::first(std::min(N, n - first));
+      ObjectVertex* stop = stops ? stops + first : nullptr;
+      for (const int i : lanes) {
+        paths_.path[i] = PathState(rays[first + i].origin);
+        radiance[first + i] = Rgb(0.0);
+        if (stop) stop[i].depth = 0;
+      }
+      paths_.walk(1, lanes, rays + first, samplers + first, radiance + first, nullptr, [&](int depth, const Lanes& at) {
+        if (!stop) return at;
+        Lanes on;
+        for (const int i : at)
+          if (panel_.scene.isObject(paths_.hit[i].mesh))
+            stop[i] = {depth, paths_.hit[i].mesh, paths_.path[i], radiance[first + i], paths_.point[i], paths_.draws[i],
+                       paths_.light[i], samplers[first + i]};
+          else
+            on.add(i);
+        return on;
+      });
+    }
+  }
+
+  // radiance[i] of the stopped paths vertices[i], i < n, all of one depth, finished in this panel: its
+  // context differs from the one that traced them only in the object's BRDF. The paths of the panels' waves
+  // share what they draw alike (shared_draws.h).
+  void resume(const ObjectVertex* vertices, int n, Rgb* radiance) {
+    for (int first = 0; first < n; first += N) {
+      const Lanes lanes = Lanes::first(std::min(N, n - first));
+      for (const int i : lanes) {
+        const ObjectVertex& v = vertices[first + i];
+        paths_.path[i] = v.path;
+        radiance[first + i] = v.radiance;
+        paths_.point[i] = v.point;
+        paths_.point[i].brdf = &panel_.scene.brdfOf(v.mesh);
+        paths_.point[i].lightSamples = panel_.lightSamplesAt(v.mesh, v.depth);
+        paths_.draws[i] = v.draws;
+        paths_.light[i] = v.light;
+        samplers_[i] = v.sampler;
+      }
+      const int depth = vertices[first].depth;
+      paths_.walk(depth + 1, paths_.reflect(depth, lanes, rays_, radiance + first), rays_, samplers_, radiance + first, shared_,
+                  [](int, const Lanes& at) { return at; });
+    }
+  }
+
+ private:
+  const PathContext& panel_;
+  SharedDraws* shared_;
+  Paths<N> paths_;
+  Ray rays_[N];
+  CmjSampler samplers_[N];
+};
 
 // A tile's sums of its samples' radiance, per panel and pixel; a non-finite sample is dropped, and counted.
 struct PanelSums {
@@ -67,18 +109,16 @@ class PanelTracer {
  public:
   PanelTracer(std::span<const PathContext> panels, bool reference)
       : panels_(panels), shared_(panels[0].settings.maxDepth), parked_(size_t(std::max(1, panels[0].settings.maxDepth))) {
-    for (size_t p = 0; p < panels.size() && !reference; ++p)
-      waves_.push_back(std::make_unique<WaveTracer>(panels[p], panels.size() > 1 ? &shared_ : nullptr));
+    for (size_t p = 0; p < panels.size(); ++p)
+      if (reference) references_.push_back(std::make_unique<PanelPaths<1>>(panels[p], nullptr));
+      else waves_.push_back(std::make_unique<PanelPaths<kWaveSize>>(panels[p], panels.size() > 1 ? &shared_ : nullptr));
   }
 
   // The camera rays of the tile's samples of pixel[i], i < n, added to sums where their paths end.
   void trace(Ray* rays, CmjSampler* samplers, const int* pixel, int n, PanelSums& sums) {
     ObjectVertex* stops = panels_.size() > 1 ? stops_ : nullptr;
-    if (!waves_.empty())
-      waves_[0]->trace(rays, samplers, n, radiance_, stops);
-    else
-      for (int i = 0; i < n; ++i)
-        radiance_[i] = stops ? traceToObject(panels_[0], rays[i], samplers[i], stops[i]) : Li(panels_[0], rays[i], samplers[i]);
+    if (!waves_.empty()) waves_[0]->trace(rays, samplers, n, radiance_, stops);
+    else references_[0]->trace(rays, samplers, n, radiance_, stops);
     for (int i = 0; i < n; ++i)
       if (stops && stops[i].depth > 0)
         park(stops[i], pixel[i], sums);
@@ -106,10 +146,8 @@ class PanelTracer {
     Parked& parked = parked_[depth];
     const int n = int(parked.vertices.size());
     for (size_t p = 0; p < panels_.size(); ++p) {
-      if (!waves_.empty())
-        waves_[p]->resume(parked.vertices.data(), n, resumed_);
-      else
-        for (int i = 0; i < n; ++i) resumed_[i] = continueFromObject(panels_[p], parked.vertices[size_t(i)]);
+      if (!waves_.empty()) waves_[p]->resume(parked.vertices.data(), n, resumed_);
+      else references_[p]->resume(parked.vertices.data(), n, resumed_);
       for (int i = 0; i < n; ++i) sums.add(p, parked.pixels[size_t(i)], resumed_[i]);
     }
     parked.vertices.clear();
@@ -122,7 +160,8 @@ class PanelTracer {
   };
   std::span<const PathContext> panels_;
   SharedDraws shared_;
-  std::vector<std::unique_ptr<WaveTracer>> waves_;  // per panel; none for the reference
+  std::vector<std::unique_ptr<PanelPaths<kWaveSize>>> waves_;  // per panel, or
+  std::vector<std::unique_ptr<PanelPaths<1>>> references_;    // the reference's
   std::vector<Parked> parked_;                      // [depth]
   ObjectVertex stops_[kWaveSize];
   Rgb radiance_[kWaveSize], resumed_[kWaveSize];    // per lane

@@ -1,5 +1,5 @@
-// Rendering an image by path tracing (path_reference.cpp says what a path does; path_wave.cpp does the
-// same for many paths at once, the default), or the panels of a sheet together. Depth follows Mitsuba 3:
+// Rendering an image by path tracing (path_reference.cpp says what a path does, path_vertex.h how it is
+// done for one path or many at once, the default), or the panels of a sheet together. Depth follows Mitsuba 3:
 // maxDepth counts path segments, so 1 shows only directly visible emitters, 2 adds direct lighting, 3 one
 // indirect bounce, and so on.
 #pragma once
@@ -39,7 +39,7 @@ struct RenderSettings {
   // Sample every BRDF's cosine lobe instead of its own (exact pdf either way): only to measure what lobe
   // sampling is worth.
   bool cosineBrdfSampling = false;
-  // One path at a time (path_reference.cpp) instead of waves: the same image, bit for bit, more slowly.
+  // One path at a time (Paths<1>, path_vertex.h) instead of waves: the same image, bit for bit, more slowly.
   bool reference = false;
   // Optional, width × height: only the pixels marked here are traced (the others stay black), for a render
   // whose figures look at part of the image (a sheet's noise-floor row: the object's pixels).

@@ -1,6 +1,8 @@
-// A path's steps from one vertex to the next, shared by the reference path tracer (path_reference.cpp),
-// which takes them one path at a time, the wave (wave_tracer.h), which takes each for many paths at once,
-// and the panel split (panel_split.h). All call these functions, so a path gets the same numbers either way.
+// A path's steps from one vertex to the next, written once for a set of lanes (lanes.h) and taken for all
+// of them before the next step: the reference (RenderSettings::reference) takes them for one path, the
+// wave, the default, for kWaveSize at once, each step then one batch (Embree packets, the sampler's draws,
+// the lights' samples, the BRDFs' samples and values) whose long chains of arithmetic and cache misses
+// overlap across lanes. So a path gets the same numbers either way. The steps are in path_reference.cpp.
 #pragma once
 
 #include "renderer/integrator/direct_light.h"
@@ -60,28 +62,48 @@ inline bool continuePath(int depth, const RenderSettings& settings, const Shadin
   return true;
 }
 
-// A reflecting vertex before its BRDF acts: where, its draws, its light samples with their shadow rays.
-struct PathVertex {
-  uint32_t mesh = 0;
-  ShadingPoint point;
-  VertexDraws draws;
-  VertexLight light;
+class SharedDraws;
+
+// The paths of up to N lanes and their state, advanced together a vertex at a time: a wave's kWaveSize or
+// the reference's one. Made once per thread and reused, as a wave's state is too large to clear per wave.
+// The lanes index the caller's rays, samplers (past the film position) and radiance, as theirs.
+template <int N>
+class Paths {
+ public:
+  explicit Paths(const PathContext& context) : context_(context) {}
+
+  // From a vertex at `depth` on, next then reflect until the lanes' paths end (pbrt-v4's
+  // PathIntegrator::Li for each): stop(depth, lanes) returns those of the lanes at their vertices that go on
+  // (the panel split parks the others there, panel_split.h). Their draws come from shared where given.
+  template <class Stop>
+  void walk(int depth, Lanes lanes, Ray* rays, CmjSampler* samplers, Rgb* radiance, SharedDraws* shared, Stop&& stop) {
+    for (; lanes.n > 0; ++depth)
+      lanes = reflect(depth, stop(depth, next(depth, lanes, rays, samplers, radiance, shared)), rays, radiance);
+  }
+  // The lanes' rays, their depth-th segments, to the next reflecting vertices, adding the emission they find
+  // on the way (a light hit, the distant lights when they leave the scene): the lanes that reflect there,
+  // with each vertex's point, draws and light samples with their shadow rays' verdicts.
+  Lanes next(int depth, const Lanes& lanes, const Ray* rays, CmjSampler* samplers, Rgb* radiance, SharedDraws* shared);
+  // The vertices' BRDFs act: the direct light, then their samples continue the paths (rays). The lanes whose
+  // paths go on.
+  Lanes reflect(int depth, const Lanes& lanes, Ray* rays, Rgb* radiance);
+
+  // Each lane's path, its last hit, and its vertex there before the BRDF acts.
+  PathState path[N];
+  Hit hit[N];
+  ShadingPoint point[N];
+  VertexDraws draws[N];
+  VertexLight light[N];
+
+ private:
+  const PathContext& context_;
+  bool found_[N];
+  Vec3 direction_[N];  // of the rays that left the scene
+  Receiver from_[N];   // their vertices
+  Rgb arriving_[N], throughput_[N];
+  double pdf_[N];
+  DirectLight<N> direct_;
+  BrdfSample bsdf_[N];
 };
-
-// The path's ray, its depth-th segment, to the next reflecting vertex, adding the emission it finds on the
-// way (a light it hits, the distant lights when it leaves the scene). False when the path ends there.
-bool nextVertex(const PathContext& context, const Ray& ray, CmjSampler& sampler, int depth, PathState& path,
-                Rgb& radiance, PathVertex& vertex);
-
-// The vertex's BRDF acts: the direct light, then its sample continues the path. False ends it.
-inline bool reflect(const PathContext& context, int depth, const PathVertex& v, PathState& path, Rgb& radiance, Ray& ray) {
-  addDirectLight(context.settings, v.point, v.light, path.throughput, radiance);
-  return continuePath(depth, context.settings, v.point, sampleBsdf(context.settings, v.point, v.draws), v.draws, path, ray);
-}
-
-// The reference path tracer (path_reference.cpp): the radiance arriving along a camera ray, whose sampler
-// has drawn the film position; and the same for a path already at its depth-th segment, adding to radiance.
-Rgb Li(const PathContext& context, Ray ray, CmjSampler& sampler);
-void finishPath(const PathContext& context, Ray ray, CmjSampler& sampler, PathState& path, int depth, Rgb& radiance);
 
 }  // namespace glossy

@@ -41,16 +41,37 @@ inline bool shade(const RenderScene& scene, const Ray& ray, const Hit& hit, Shad
 // The shading point as its lights see it.
 inline Receiver receiver(const ShadingPoint& sp) { return {sp.position, sp.frame.n}; }
 
-// The BRDF's value toward a direction and the density of its own sampling there; and its sample of
-// the path's next direction. RenderSettings::cosineBrdfSampling samples the cosine lobe instead (to
-// measure what a model's own sampling is worth).
+// The BRDF's value toward a direction and the density of its own sampling there; and its samples of the
+// paths' next directions. RenderSettings::cosineBrdfSampling samples the cosine lobe instead (to measure
+// what a model's own sampling is worth).
 inline BrdfValue valueToward(const RenderSettings& settings, const ShadingPoint& sp, const Vec3& wiLocal) {
   if (settings.cosineBrdfSampling) return {eval(*sp.brdf, wiLocal, sp.woLocal), cosineHemispherePdf(wiLocal)};
   return evalPdf(*sp.brdf, wiLocal, sp.woLocal);
 }
-inline BrdfSample sampleBsdf(const RenderSettings& settings, const ShadingPoint& sp, const VertexDraws& u) {
-  if (settings.cosineBrdfSampling) return sampleCosineLobe(sp.brdf->model(), sp.woLocal, u.bsdf);
-  return sample(*sp.brdf, sp.woLocal, u.lobe, u.bsdf);
+
+// out[i]: the BSDF sample of draws u[i] at sp[i], for the lanes below N, a batch per BRDF (one lane: the
+// reference's one call).
+template <int N>
+void sampleBsdfs(const RenderSettings& settings, const Lanes& lanes, const ShadingPoint* sp, const VertexDraws* u,
+                 BrdfSample* out) {
+  if (settings.cosineBrdfSampling) {
+    for (const int i : lanes) out[i] = sampleCosineLobe(sp[i].brdf->model(), sp[i].woLocal, u[i].bsdf);
+    return;
+  }
+  forEachGroup(lanes, [&](int i) { return sp[i].brdf; }, [&](const Brdf* brdf, const Lanes& group) {
+    // Zeroed only because GCC cannot see that the batch reads the n lanes written.
+    Vec3 wo[N] = {};
+    double uLobe[N] = {};
+    Vec2 uDir[N] = {};
+    BrdfSample samples[N];
+    for (int g = 0; g < group.n; ++g) {
+      wo[g] = sp[group.lane[g]].woLocal;
+      uLobe[g] = u[group.lane[g]].lobe;
+      uDir[g] = u[group.lane[g]].bsdf;
+    }
+    sampleBatch(*brdf, wo, uLobe, uDir, samples, group.n);
+    for (int g = 0; g < group.n; ++g) out[group.lane[g]] = samples[g];
+  });
 }
 
 }  // namespace glossy

@@ -2,7 +2,7 @@
 // object vertex with the same sampler, so at each later depth its path reaches, a panel draws the values
 // the others draw there (VertexDraws), and a distant light, whose samples depend on the surface's normal
 // but not on the point, makes the same sample from them where the panels' paths meet surfaces of the same
-// normal (a floor, a wall). The panels' wave tracers on a thread share one SharedDraws: the first
+// normal (a floor, a wall). The panels' waves on a thread share one SharedDraws: the first
 // panel to reach a (path, depth) computes these and keeps them, and the others copy them. So the draws and
 // the environment's samples are paid once per path, not once per panel (docs/sheets.md, "Cost").
 //
@@ -11,7 +11,7 @@
 // would have computed itself, bit for bit (tests/sheet_coherence_test.cpp).
 #pragma once
 
-#include "renderer/integrator/wave_tracer.h"
+#include "renderer/integrator/direct_light.h"
 
 #include <algorithm>
 #include <vector>
