@@ -53,7 +53,7 @@ TEST(SheetWarnings, TheWarningAndTheNoiseFloorReachTheExrTheTableAndTheReport) {
   // measured one) and a luminance ratio whose interval holds 1.
   EXPECT_NE(r.out.find("  noise floor "), std::string::npos) << r.out;
   ASSERT_TRUE(s.noiseFloor);
-  const report::NoiseFloorRecord& f = *s.noiseFloor;
+  const report::ImageFigures& f = *s.noiseFloor;
   ASSERT_TRUE(f.relativeRmse.value && f.relativeRmse.lo && f.relativeRmse.hi && f.luminanceRatio.lo && f.flip.value);
   EXPECT_EQ(*f.relativeRmse.lo, 0.0);
   EXPECT_GT(*f.relativeRmse.hi, 0.0);

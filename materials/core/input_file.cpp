@@ -12,14 +12,6 @@ namespace glossy {
 
 namespace {
 
-// A descriptor that closes itself.
-struct Descriptor {
-  int fd = -1;
-  ~Descriptor() {
-    if (fd >= 0) ::close(fd);
-  }
-};
-
 std::string notRegular(const struct stat& s) {
   if (S_ISDIR(s.st_mode)) return "is a folder, not a regular file";
   if (S_ISFIFO(s.st_mode)) return "is a FIFO, not a regular file";
@@ -50,6 +42,10 @@ Descriptor openRegular(const std::filesystem::path& path, std::string_view kind,
 
 }  // namespace
 
+Descriptor::~Descriptor() {
+  if (fd >= 0) ::close(fd);
+}
+
 std::uintmax_t requireInputFile(const std::filesystem::path& path, std::string_view kind) {
   std::uintmax_t size = 0;
   openRegular(path, kind, size);
@@ -63,11 +59,15 @@ std::string readInputFile(const std::filesystem::path& path, std::uintmax_t maxB
   if (size > maxBytes)
     throw InputError(where + std::to_string(size) + " bytes, too large for a " + std::string(kind) + " (at most " +
                      std::to_string(maxBytes) + ")");
+  return readOpenFile(d.fd, size, where);
+}
+
+std::string readOpenFile(int fd, std::uintmax_t size, const std::string& where) {
   // One byte more than its size asks for: a file that changes while it is read is refused, not cut.
   std::string bytes(size_t(size) + 1, '\0');
   size_t got = 0;
   while (got < bytes.size()) {
-    const ssize_t n = ::read(d.fd, bytes.data() + got, bytes.size() - got);
+    const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) throw InputError(where + "read failed (" + std::strerror(errno) + ")");
     if (n == 0) break;

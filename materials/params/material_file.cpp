@@ -24,8 +24,6 @@ void checkMetric(const std::string& metric, const std::string& what) {
   if (metric != "E1" && metric != "E2") throw InputError(what + " must be E1 or E2, got '" + metric + "'");
 }
 
-std::string quoteList(std::span<const std::string_view> items) { return joined(items, ", "); }
-
 size_t modelRank(const std::string& model) {
   const auto& models = analyticModels();
   for (size_t i = 0; i < models.size(); ++i)
@@ -125,7 +123,7 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
       std::vector<std::string_view> keys{"model", "metric"};
       for (const ParamSpec& s : model->params) keys.push_back(s.key);
       for (std::string_view k : {"by", "source", "error", "data", "database", "date", "settings"}) keys.push_back(k);
-      throw InputError(here + ": unknown key for the " + fit.id.model + " model (its keys: " + quoteList(keys) + ")");
+      throw InputError(here + ": unknown key for the " + fit.id.model + " model (its keys: " + joined(keys, ", ") + ")");
     }
     switch (spec->kind) {
       case ParamKind::Scalar: {
@@ -147,7 +145,7 @@ Fit readFit(const toml::table& t, size_t index, const std::string& source) {
         break;
       }
       case ParamKind::Choice: {
-        if (!node.is_string()) throw InputError(here + ": must be one of " + quoteList(spec->choices));
+        if (!node.is_string()) throw InputError(here + ": must be one of " + joined(spec->choices, ", "));
         fit.params.set(key, node.as_string()->get());
         break;
       }
@@ -222,7 +220,7 @@ void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::stri
       if (!std::holds_alternative<std::string>(v)) throw InputError(here + ": must be a string");
       const std::string& s = std::get<std::string>(v);
       if (std::find(spec.choices.begin(), spec.choices.end(), s) == spec.choices.end())
-        throw InputError(here + ": must be one of " + quoteList(spec.choices) + ", got '" + s + "'");
+        throw InputError(here + ": must be one of " + joined(spec.choices, ", ") + ", got '" + s + "'");
       break;
     }
   }

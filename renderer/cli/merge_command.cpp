@@ -105,6 +105,22 @@ std::string number(const std::optional<double>& v) {
 
 nlohmann::json jsonNumber(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
+// An image's figures, a panel's or the noise floor's: as CSV cells (relative_rmse … relative_rmse_noisy) and
+// as JSON members.
+std::string figureCells(const report::ImageFigures& f) {
+  std::string cells;
+  for (const report::Figure* g : {&f.relativeRmse, &f.luminanceRatio, &f.flip})
+    cells += number(g->value) + "," + number(g->lo) + "," + number(g->hi) + ",";
+  return cells + number(f.relativeRmseNoisy);
+}
+
+nlohmann::json figureJson(const report::ImageFigures& f) {
+  const auto ci = [](const report::Figure& g) { return g.lo ? nlohmann::json{*g.lo, *g.hi} : nlohmann::json(nullptr); };
+  return {{"relative_rmse", jsonNumber(f.relativeRmse.value)}, {"relative_rmse_ci", ci(f.relativeRmse)},
+          {"luminance_ratio", jsonNumber(f.luminanceRatio.value)}, {"luminance_ratio_ci", ci(f.luminanceRatio)},
+          {"flip", jsonNumber(f.flip.value)}, {"flip_ci", ci(f.flip)}, {"relative_rmse_noisy", jsonNumber(f.relativeRmseNoisy)}};
+}
+
 int runMergeSheets(const MergeOptions& o) {
   if (o.csv.empty() && o.json.empty()) throw InputError("glossy merge sheets needs --csv FILE, --json FILE or both");
   if (!o.csv.empty()) checkOutputFile(o.csv, "--csv", {".csv"}, Folder::Create);
@@ -125,41 +141,19 @@ int runMergeSheets(const MergeOptions& o) {
     for (const report::PanelRecord& p : s.panels) {
       const bool isClosest = std::find(closest.begin(), closest.end(), p.layer) != closest.end();
       csv += csvField(s.name) + "," + p.layer + "," + csvField(p.label) + "," + csvField(p.fit) + "," + (p.empty ? "1" : "0") + "," +
-             csvField(s.spp) + "," + number(p.relativeRmse.value) + "," + number(p.relativeRmse.lo) + "," +
-             number(p.relativeRmse.hi) + "," + number(p.luminanceRatio.value) + "," + number(p.luminanceRatio.lo) + "," +
-             number(p.luminanceRatio.hi) + "," + number(p.flip.value) + "," + number(p.flip.lo) + "," + number(p.flip.hi) + "," +
-             number(p.relativeRmseNoisy) + "," + number(p.e1) + "," + number(p.e2) + "," + (isClosest ? "1" : "0") + "," +
+             csvField(s.spp) + "," + figureCells(p) + "," + number(p.e1) + "," + number(p.e2) + "," + (isClosest ? "1" : "0") + "," +
              csvField(s.verdict) + "," + csvField(warning) + "\n";
-      panels.push_back({{"panel", p.layer},
-                        {"label", p.label},
-                        {"fit", p.fit},
-                        {"empty", p.empty},
-                        {"relative_rmse", jsonNumber(p.relativeRmse.value)},
-                        {"relative_rmse_ci", p.relativeRmse.lo ? nlohmann::json{*p.relativeRmse.lo, *p.relativeRmse.hi} : nlohmann::json(nullptr)},
-                        {"luminance_ratio", jsonNumber(p.luminanceRatio.value)},
-                        {"luminance_ratio_ci", p.luminanceRatio.lo ? nlohmann::json{*p.luminanceRatio.lo, *p.luminanceRatio.hi} : nlohmann::json(nullptr)},
-                        {"flip", jsonNumber(p.flip.value)},
-                        {"flip_ci", p.flip.lo ? nlohmann::json{*p.flip.lo, *p.flip.hi} : nlohmann::json(nullptr)},
-                        {"relative_rmse_noisy", jsonNumber(p.relativeRmseNoisy)},
-                        {"E1", jsonNumber(p.e1)},
-                        {"E2", jsonNumber(p.e2)},
-                        {"closest", isClosest}});
+      nlohmann::json panel = figureJson(p);  // a std::map: its members come out sorted, wherever they were put
+      panel.update({{"panel", p.layer}, {"label", p.label}, {"fit", p.fit}, {"empty", p.empty},
+                    {"E1", jsonNumber(p.e1)}, {"E2", jsonNumber(p.e2)}, {"closest", isClosest}});
+      panels.push_back(std::move(panel));
     }
     // The noise-floor row: the measured panel against an independent render of itself (docs/sheets.md).
     nlohmann::json floor = nullptr;
     if (const auto& f = s.noiseFloor) {
-      csv += csvField(s.name) + ",noise_floor,noise floor,measured,0," + csvField(s.spp) + "," + number(f->relativeRmse.value) + "," +
-             number(f->relativeRmse.lo) + "," + number(f->relativeRmse.hi) + "," + number(f->luminanceRatio.value) + "," +
-             number(f->luminanceRatio.lo) + "," + number(f->luminanceRatio.hi) + "," + number(f->flip.value) + "," +
-             number(f->flip.lo) + "," + number(f->flip.hi) + "," + number(f->relativeRmseNoisy) + ",0,0,0," + csvField(s.verdict) +
-             "," + csvField(warning) + "\n";
-      floor = {{"relative_rmse", jsonNumber(f->relativeRmse.value)},
-               {"relative_rmse_ci", f->relativeRmse.lo ? nlohmann::json{*f->relativeRmse.lo, *f->relativeRmse.hi} : nlohmann::json(nullptr)},
-               {"luminance_ratio", jsonNumber(f->luminanceRatio.value)},
-               {"luminance_ratio_ci", f->luminanceRatio.lo ? nlohmann::json{*f->luminanceRatio.lo, *f->luminanceRatio.hi} : nlohmann::json(nullptr)},
-               {"flip", jsonNumber(f->flip.value)},
-               {"flip_ci", f->flip.lo ? nlohmann::json{*f->flip.lo, *f->flip.hi} : nlohmann::json(nullptr)},
-               {"relative_rmse_noisy", jsonNumber(f->relativeRmseNoisy)}};
+      csv += csvField(s.name) + ",noise_floor,noise floor,measured,0," + csvField(s.spp) + "," + figureCells(*f) + ",0,0,0," +
+             csvField(s.verdict) + "," + csvField(warning) + "\n";
+      floor = figureJson(*f);
     }
     doc["sheets"].push_back({{"material", s.name}, {"verdict", s.verdict}, {"warnings", s.warnings}, {"measured", s.measured},
                              {"spp", s.spp}, {"scene", s.scene}, {"env", s.env}, {"panels", std::move(panels)},

@@ -24,10 +24,8 @@ DisplayColour interpolate(const std::array<unsigned, N>& stops, double t) {
   return c;
 }
 
-// The published maps at 11 evenly spaced points (matplotlib's magma and viridis, ColorBrewer's RdBu from
-// its blue end): close enough to the full tables for pictures, and no table to keep.
-constexpr std::array<unsigned, 11> kMagma = {0x000004, 0x140e36, 0x3b0f70, 0x641a80, 0x8c2981, 0xb73779,
-                                             0xde4968, 0xf7705c, 0xfe9f6d, 0xfecf92, 0xfcfdbf};
+// The published maps at 11 evenly spaced points (matplotlib's viridis, ColorBrewer's RdBu from its blue
+// end): close enough to the full tables for pictures, and no table to keep.
 constexpr std::array<unsigned, 11> kViridis = {0x440154, 0x482475, 0x414487, 0x355f8d, 0x2a788e, 0x21918c,
                                                0x22a884, 0x44bf70, 0x7ad151, 0xbddf26, 0xfde725};
 constexpr std::array<unsigned, 11> kBlueWhiteRed = {0x053061, 0x2166ac, 0x4393c3, 0x92c5de, 0xd1e5f0, 0xf7f7f7,
@@ -41,7 +39,6 @@ float srgbEncode(double v) {
 }
 
 DisplayColour divergingColour(double t) { return interpolate(kBlueWhiteRed, std::isnan(t) ? 0.5 : 0.5 * (t + 1.0)); }
-DisplayColour magmaColour(double t) { return interpolate(kMagma, std::isnan(t) ? 0.0 : t); }
 DisplayColour viridisColour(double t) { return interpolate(kViridis, std::isnan(t) ? 0.0 : t); }
 
 std::string hexColour(const DisplayColour& c) {

@@ -16,8 +16,6 @@ float srgbEncode(double linear);
 
 // t in [−1, 1]: blue (−1) … white (0) … red (+1), ColorBrewer's RdBu: for signed differences and log-ratios.
 DisplayColour divergingColour(double t);
-// t in [0, 1]: black … purple … pale yellow (magma), as ꟻLIP shows its error maps.
-DisplayColour magmaColour(double t);
 // t in [0, 1]: dark blue … green … yellow (viridis), for magnitudes (a BRDF's image slice).
 DisplayColour viridisColour(double t);
 

@@ -24,7 +24,6 @@
 #include <glm/geometric.hpp>
 
 #include <limits>
-#include <sstream>
 
 namespace glossy {
 
@@ -40,20 +39,14 @@ std::string oneLine(std::string text) {
   return text.empty() ? "unknown error" : text;
 }
 
-std::string formatNumber(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
-
 std::string withRotation(std::string description, double rotateDegrees) {
-  if (rotateDegrees != 0.0) description += " rotated " + formatNumber(rotateDegrees) + "°";
+  if (rotateDegrees != 0.0) description += " rotated " + formatted("%g", rotateDegrees) + "°";
   return description;
 }
 
 void checkRotation(double rotateDegrees) {
   if (!std::isfinite(rotateDegrees))
-    throw InputError("environment rotation " + formatNumber(rotateDegrees) + " is not a finite angle");
+    throw InputError("environment rotation " + formatted("%g", rotateDegrees) + " is not a finite angle");
 }
 
 // Peak bytes per texel while a map is loaded and its sampling tables built (bench/environment_memory
@@ -280,16 +273,15 @@ Environment Environment::load(const std::filesystem::path& path, double rotateDe
 }
 
 Environment Environment::constant(const Rgb& radiance) {
+  const std::string values = formatted("%g,%g,%g", radiance.r, radiance.g, radiance.b);
   for (int c = 0; c < 3; ++c)
     if (!std::isfinite(radiance[c]) || radiance[c] < 0.0)
-      throw InputError("constant environment radiance " + formatNumber(radiance.r) + "," +
-                       formatNumber(radiance.g) + "," + formatNumber(radiance.b) + " must be finite and ≥ 0");
+      throw InputError("constant environment radiance " + values + " must be finite and ≥ 0");
   auto impl = std::make_unique<Impl>();
   impl->isConstant = true;
   impl->constantRadiance = radiance;
   impl->meanLuminance = luminance(radiance);
-  impl->description = "constant " + formatNumber(radiance.r) + "," + formatNumber(radiance.g) + "," +
-                      formatNumber(radiance.b);
+  impl->description = "constant " + values;
   return Environment(std::move(impl));
 }
 

@@ -3,6 +3,7 @@
 
 #include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
+#include "materials/core/input_file.h"
 #include "materials/core/text.h"
 
 #include <nlohmann/json.hpp>
@@ -12,7 +13,6 @@
 #include <fcntl.h>
 #include <set>
 #include <sys/stat.h>
-#include <unistd.h>
 
 namespace glossy {
 
@@ -66,24 +66,13 @@ std::string blockedFolder(const fs::path& root, const std::string& file) {
 
 // The manifest's bytes: a regular file (not a symlink, not a FIFO: opened without blocking), of bounded size.
 std::string readManifestBytes(const fs::path& path, const std::string& where) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
-  if (fd < 0) throw InputError(where + ": its " + OwnedFolder::kManifest + " cannot be read (a symlink, or unreadable)");
+  const std::string manifest = where + ": its " + OwnedFolder::kManifest;
+  const Descriptor d{::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | O_NOCTTY)};
+  if (d.fd < 0) throw InputError(manifest + " cannot be read (a symlink, or unreadable)");
   struct stat st {};
-  std::string bytes;
-  bool ok = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && uint64_t(st.st_size) <= kMaxManifestBytes;
-  if (ok) {
-    bytes.resize(size_t(st.st_size));
-    size_t got = 0;
-    while (got < bytes.size()) {
-      const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
-      if (n <= 0) break;
-      got += size_t(n);
-    }
-    ok = got == bytes.size();
-  }
-  ::close(fd);
-  if (!ok) throw InputError(where + ": its " + OwnedFolder::kManifest + " is not a regular file of at most 16 MB");
-  return bytes;
+  if (::fstat(d.fd, &st) != 0 || !S_ISREG(st.st_mode) || uint64_t(st.st_size) > kMaxManifestBytes)
+    throw InputError(manifest + " is not a regular file of at most 16 MB");
+  return readOpenFile(d.fd, uint64_t(st.st_size), manifest + ": ");
 }
 
 }  // namespace

@@ -15,8 +15,6 @@ namespace glossy::plot {
 
 namespace {
 
-constexpr double kDeg = kPi / 180.0;
-
 std::vector<double> viewAngles() {
   std::vector<double> a;
   for (int k = 0; k < 36; ++k) a.push_back(2.5 * k);

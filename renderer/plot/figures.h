@@ -16,6 +16,8 @@
 
 namespace glossy::plot {
 
+constexpr double kDeg = kPi / 180.0;  // the figures' angles are in degrees
+
 PlotFigure thetaHFigure(const PlotSet& set);
 // One figure per BRDF present: measured first.
 std::vector<PlotFigure> imageSliceFigures(const PlotSet& set);

@@ -20,7 +20,6 @@ constexpr int kN = 90;             // MERL's θ_h and θ_d bins
 constexpr double kCell = 3.0;      // px per bin
 constexpr double kRatioDecades = 1.0;  // the diverging map spans ×0.1 … ×10
 constexpr const char* kNoData = "#bdbdbd";
-constexpr double kDeg = kPi / 180.0;
 
 double thetaHOf(int i) { const double f = (i + 0.5) / kN; return 90.0 * f * f; }
 double thetaDOf(int j) { return j + 0.5; }

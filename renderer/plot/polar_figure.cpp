@@ -16,7 +16,6 @@ namespace glossy::plot {
 namespace {
 
 constexpr double kThetaV[] = {0.0, 30.0, 60.0, 75.0};
-constexpr double kDeg = kPi / 180.0;
 constexpr double kRadius = 165.0;
 constexpr const char* kFrame = "#444444";
 constexpr const char* kGrid = "#e3e3e3";

@@ -15,7 +15,6 @@ namespace {
 
 constexpr double kThetaD[] = {1.0, 30.0, 60.0, 80.0};
 constexpr int kSamples = 400;  // θ_h = 90° (k/400)²: even steps on the √ axis, 4.4 per MERL bin
-constexpr double kDeg = kPi / 180.0;
 
 }  // namespace
 

@@ -57,8 +57,8 @@ Rows rowsOf(const py::handle& value, const char* name) {
   } else if (nd == 2 && r.array.shape(1) == 3) {
     r.n = size_t(r.array.shape(0));
   } else {
-    std::string shape;
-    for (py::ssize_t k = 0; k < nd; ++k) shape += (k ? ", " : "") + std::to_string(r.array.shape(k));
+    const std::string shape =
+        joined(std::vector<py::ssize_t>(r.array.shape(), r.array.shape() + nd), ", ", [](py::ssize_t n) { return std::to_string(n); });
     throw InputError(formatted("%s: expected shape (N, 3) or (3,), got (%s%s)", name, shape.c_str(), nd == 1 ? "," : ""));
   }
   r.data = r.array.data();
@@ -83,8 +83,7 @@ py::array_t<double> outputArray(const py::object& out, std::vector<py::ssize_t> 
                     std::equal(shape.begin(), shape.end(), a.shape()) && (a.flags() & py::array::c_style) && a.writeable();
   if (!fits) {
     PyErr_Clear();
-    std::string want;
-    for (size_t k = 0; k < shape.size(); ++k) want += (k ? ", " : "") + std::to_string(shape[k]);
+    const std::string want = joined(shape, ", ", [](py::ssize_t n) { return std::to_string(n); });
     throw InputError("out: must be a writable C-contiguous float64 array of shape (" + want + (shape.size() == 1 ? ",)" : ")"));
   }
   return py::reinterpret_borrow<py::array_t<double>>(out);

@@ -24,6 +24,10 @@ std::string escapeHtml(std::string_view text) {
   return out;
 }
 
+std::string styleColour(const std::string& colour) {
+  return colour.empty() ? std::string() : " style=\"--model-colour:" + colour + "\"";
+}
+
 std::string shortNumber(const std::optional<double>& v) {
   if (!v || !std::isfinite(*v)) return "–";
   return formatted("%.3g", *v);

@@ -13,6 +13,9 @@ namespace glossy::report {
 // &, <, >, " and ' as character references.
 std::string escapeHtml(std::string_view text);
 
+// ' style="--model-colour:COLOUR"', the attribute that colours a model's cell or button; "" without a colour.
+std::string styleColour(const std::string& colour);
+
 // Three significant digits, or "–" when absent.
 std::string shortNumber(const std::optional<double>& v);
 // Full precision for data-value attributes; "" when absent (sorted last).

@@ -28,10 +28,6 @@ constexpr Column kColumns[] = {
 };
 constexpr int kFixedColumns = 3;  // thumbnail, material, verdict
 
-std::string styleColour(const std::string& colour) {
-  return colour.empty() ? std::string() : " style=\"--model-colour:" + colour + "\"";
-}
-
 std::string intervalTitle(const Figure& f) {
   if (!f.lo || !f.hi) return "";
   return " title=\"95 %: " + shortNumber(f.lo) + " to " + shortNumber(f.hi) + "\"";
@@ -94,12 +90,9 @@ std::string indexPage(const std::vector<SheetRecord>& sheets) {
     const PanelRecord* m = s.measuredPanel();
     ++sources[!m || m->empty || s.measured.empty() ? std::string("none") : sourceLabel(s.measured)];
   }
-  h << "<p>Measured data: ";
-  bool first = true;
-  for (const auto& [label, count] : sources) {
-    h << (first ? "" : "; ") << escapeHtml(label) << " (" << count << (count == 1 ? " material)" : " materials)");
-    first = false;
-  }
+  h << "<p>Measured data: " << joined(sources, "; ", [](const auto& source) {
+    return escapeHtml(source.first) + " (" + std::to_string(source.second) + (source.second == 1 ? " material)" : " materials)");
+  });
   h << ".</p>\n" << settingsParagraph(sheets) << "</header>\n<main>\n";
 
   // Summary rows.

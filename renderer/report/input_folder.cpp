@@ -2,12 +2,12 @@
 #include "renderer/report/input_folder.h"
 
 #include "materials/core/input_error.h"
+#include "materials/core/input_file.h"
 
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 namespace glossy::report {
 
@@ -42,32 +42,14 @@ void checkInputFile(const fs::path& folder, const fs::path& file, std::string_vi
 std::string readInputFile(const fs::path& folder, const fs::path& file, std::uintmax_t maxBytes, std::string_view what) {
   const fs::path real = realInside(folder, file, what);
   const std::string where = file.string() + ": ";
-  const int fd = ::open(real.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
-  if (fd < 0) throw InputError(where + "cannot open: " + std::strerror(errno));
+  const Descriptor d{::open(real.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC | O_NOCTTY)};
+  if (d.fd < 0) throw InputError(where + "cannot open: " + std::strerror(errno));
   struct stat st {};
-  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-    ::close(fd);
-    throw InputError(where + "not a regular file, not a " + std::string(what));
-  }
-  if (st.st_size < 0 || std::uintmax_t(st.st_size) > maxBytes) {
-    ::close(fd);
+  if (::fstat(d.fd, &st) != 0 || !S_ISREG(st.st_mode)) throw InputError(where + "not a regular file, not a " + std::string(what));
+  if (st.st_size < 0 || std::uintmax_t(st.st_size) > maxBytes)
     throw InputError(where + std::to_string(st.st_size) + " bytes, too large for a " + std::string(what) + " (at most " +
                      std::to_string(maxBytes) + ")");
-  }
-  // One byte more than its size asks for: a file that grows while it is read is refused, not cut.
-  std::string bytes(size_t(st.st_size) + 1, '\0');
-  size_t got = 0;
-  for (;;) {
-    const ssize_t n = ::read(fd, bytes.data() + got, bytes.size() - got);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    got += size_t(n);
-    if (got == bytes.size()) break;
-  }
-  ::close(fd);
-  if (got != size_t(st.st_size)) throw InputError(where + "changed size while it was read");
-  bytes.resize(got);
-  return bytes;
+  return readOpenFile(d.fd, std::uintmax_t(st.st_size), where);
 }
 
 }  // namespace glossy::report

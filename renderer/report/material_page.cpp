@@ -21,8 +21,10 @@ std::string withInterval(const Figure& f) {
   return s;
 }
 
-std::string styleColour(const std::string& colour) {
-  return colour.empty() ? std::string() : " style=\"--model-colour:" + colour + "\"";
+// An image's figures as the errors table's cells: rel. RMSE, noisy rRMSE, luminance ratio, ꟻLIP.
+std::string figureCells(const ImageFigures& f) {
+  return "<td>" + withInterval(f.relativeRmse) + "</td><td>" + shortNumber(f.relativeRmseNoisy) + "</td><td>" +
+         withInterval(f.luminanceRatio) + "</td><td>" + withInterval(f.flip) + "</td>";
 }
 
 void metaRow(std::ostringstream& h, const char* name, const std::string& value) {
@@ -131,15 +133,12 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
     if (!p.noiseFree.empty() && p.noiseFree != "yes") note += (note.empty() ? "" : "; ") + p.noiseFree;
     const bool best = std::find(closest.begin(), closest.end(), p.layer) != closest.end();
     h << "<tr><th class=\"text\" scope=\"row\">" << escapeHtml(p.label) << (best ? " <span class=\"closest-mark\">(closest)</span>" : "")
-      << "</th><td>" << withInterval(p.relativeRmse) << "</td><td>" << shortNumber(p.relativeRmseNoisy) << "</td><td>"
-      << withInterval(p.luminanceRatio) << "</td><td>" << withInterval(p.flip) << "</td><td>" << shortNumber(p.e1) << "</td><td>"
-      << shortNumber(p.e2) << "</td><td class=\"note\">" << escapeHtml(note) << "</td></tr>\n";
+      << "</th>" << figureCells(p) << "<td>" << shortNumber(p.e1) << "</td><td>" << shortNumber(p.e2) << "</td><td class=\"note\">"
+      << escapeHtml(note) << "</td></tr>\n";
   }
   if (const auto& f = s.noiseFloor)
-    h << "<tr class=\"noise-floor\"><th class=\"text\" scope=\"row\">noise floor</th><td>" << withInterval(f->relativeRmse) << "</td><td>"
-      << shortNumber(f->relativeRmseNoisy) << "</td><td>" << withInterval(f->luminanceRatio) << "</td><td>" << withInterval(f->flip)
-      << "</td><td></td><td></td><td class=\"note\">the measured panel against an independent render of itself: what noise alone "
-         "shows</td></tr>\n";
+    h << "<tr class=\"noise-floor\"><th class=\"text\" scope=\"row\">noise floor</th>" << figureCells(*f)
+      << "<td></td><td></td><td class=\"note\">the measured panel against an independent render of itself: what noise alone shows</td></tr>\n";
   h << "</tbody>\n</table></div>\n<p class=\"muted\">Over the object's pixels. rel. RMSE has the render noise taken out (from "
        "independent replicates), the noisy one keeps it; \xEA\x9F\xBBLIP includes the noise, which raises it, and its interval is the "
        "noise's spread";

@@ -73,6 +73,10 @@ class Header {
     }
     return f;
   }
+  ImageFigures figures(const std::string& prefix) const {
+    return {figure(prefix + ".relativeRmse"), figure(prefix + ".luminanceRatio"), figure(prefix + ".flip"),
+            number(prefix + ".relativeRmseNoisy")};
+  }
   [[noreturn]] void fail(const std::string& why) const { throw InputError(path_.string() + ": " + why); }
 
  private:
@@ -237,9 +241,7 @@ SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::file
   if (std::abs(r.pngExposure) > 64.0) h.fail("glossy:pngExposure out of range");
   r.flipNoiseFloor = h.number("glossy:flipNoiseFloor");
   r.warnings = h.lines("glossy:warnings");
-  if (const std::optional<double> noisy = h.number("glossy:noiseFloor.relativeRmseNoisy"))
-    r.noiseFloor = NoiseFloorRecord{h.figure("glossy:noiseFloor.relativeRmse"), h.figure("glossy:noiseFloor.luminanceRatio"),
-                                    h.figure("glossy:noiseFloor.flip"), noisy};
+  if (h.number("glossy:noiseFloor.relativeRmseNoisy")) r.noiseFloor = h.figures("glossy:noiseFloor");
   r.settings = sheetSettings(spec);
 
   const std::vector<std::string> layers = split(names, ',');
@@ -247,9 +249,9 @@ SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::file
   for (const std::string& layer : layers) {
     if (!isMaterialName(layer)) h.fail("panel '" + shortened(layer) + "' in glossy:panels is not a plain name");
     if (r.panel(layer)) h.fail("panel '" + layer + "' is listed twice");
-    PanelRecord p;
-    p.layer = layer;
     const std::string key = "glossy:panel." + layer, error = "glossy:error." + layer;
+    PanelRecord p{h.figures(error)};
+    p.layer = layer;
     const auto box = panelBox(h.text(key + ".box"), spec.width, spec.height);
     if (!box) h.fail("panel '" + layer + "' has no box inside the image");
     p.x = int((*box)[0]);
@@ -272,10 +274,6 @@ SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::file
       for (const SheetPanel& known : sheetPanels())
         if (known.layer == layer && !known.fit.empty()) p.colour = known.colour;
     p.empty = h.number(key + ".empty").value_or(0.0) != 0.0;
-    p.relativeRmse = h.figure(error + ".relativeRmse");
-    p.luminanceRatio = h.figure(error + ".luminanceRatio");
-    p.flip = h.figure(error + ".flip");
-    p.relativeRmseNoisy = h.number(error + ".relativeRmseNoisy");
     p.e1 = h.number(error + ".E1");
     p.e2 = h.number(error + ".E2");
     p.noiseFree = h.text(error + ".noiseFree");

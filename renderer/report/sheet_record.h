@@ -18,7 +18,15 @@ struct Figure {
   std::optional<double> value, lo, hi;
 };
 
-struct PanelRecord {
+// An image's figures against the measured panel: a panel's (glossy:error.LAYER.*), and the sheet's
+// noise-floor row's (glossy:noiseFloor.*: the measured panel against an independent render of itself, what
+// each figure shows of noise alone).
+struct ImageFigures {
+  Figure relativeRmse, luminanceRatio, flip;
+  std::optional<double> relativeRmseNoisy;
+};
+
+struct PanelRecord : ImageFigures {
   std::string layer;   // EXR layer, e.g. "cook_torrance_E2": checked to be a plain name, it names files
   std::string label;   // "CT E2"
   std::string fit;     // "cook-torrance:E2", or "measured"
@@ -27,18 +35,10 @@ struct PanelRecord {
   std::string colour;  // "#rrggbb" when the sheet gives one
   bool empty = true;
   int x = 0, y = 0, width = 0, height = 0;  // the panel's box in the grid
-  Figure relativeRmse, luminanceRatio, flip;
-  std::optional<double> relativeRmseNoisy, e1, e2;
+  std::optional<double> e1, e2;
   std::string noiseFree;  // "yes", or why the noise-free estimate was clamped
 
   bool isMeasured() const { return fit == "measured"; }
-};
-
-// The sheet's noise-floor row (glossy:noiseFloor.*): the measured panel against an independent render of
-// itself, what each figure shows of noise alone.
-struct NoiseFloorRecord {
-  Figure relativeRmse, luminanceRatio, flip;
-  std::optional<double> relativeRmseNoisy;
 };
 
 // One setting a sheet was made with, as the report compares and shows it.
@@ -58,7 +58,7 @@ struct SheetRecord {
   std::string env, scene, spp;
   double pngExposure = 0.0;
   std::optional<double> flipNoiseFloor;  // glossy:flipNoiseFloor: the ꟻLIP render noise alone gives
-  std::optional<NoiseFloorRecord> noiseFloor;  // absent in sheets before it (and without a measured panel)
+  std::optional<ImageFigures> noiseFloor;  // absent in sheets before it (and without a measured panel)
   // glossy:warnings, one per line: what makes the figures less than they seem (e.g. "noise is up to 93 % of
   // the noisy figure's square: the intervals may be too narrow; …"). While one stands the verdict names no
   // model closest. Empty: none (or a sheet from before warnings were stored).

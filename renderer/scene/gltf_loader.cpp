@@ -242,18 +242,8 @@ class GltfReader {
   // A camera needs a position Embree can start rays from and three independent axes: a scale of 0 on it or
   // a parent, a zero matrix or an overflowing translation would give rays that are not finite.
   void checkCameraTransform(const glm::dmat4& world, const std::string& where) const {
-    for (int axis = 0; axis < 3; ++axis)
-      if (!(std::abs(world[3][axis]) <= kMaxSceneCoordinate))
-        fail(where + ": the camera's position is beyond ±1e15 in world space");
-    glm::dvec3 axes[3];
-    for (int i = 0; i < 3; ++i) {
-      const double len = robustLength(glm::dvec3(world[i]));
-      if (!(len > 0.0) || !std::isfinite(len))
-        fail(where + ": the camera's world transform is singular (a scale of 0 or a zero matrix on it or a parent)");
-      axes[i] = glm::dvec3(world[i]) / len;
-    }
-    if (!(std::abs(glm::dot(axes[0], glm::cross(axes[1], axes[2]))) > 1e-9))
-      fail(where + ": the camera's world transform is singular (its axes are coplanar)");
+    if (!withinScene(glm::dvec3(world[3]))) fail(where + ": the camera's position is beyond ±1e15 in world space");
+    if (const char* why = singularity(world, 1e-9)) fail(where + ": the camera's world transform is singular (" + why + ")");
   }
 
   // A KHR_lights_punctual light, placed by its node (it shines down the node's −Z), within the bounds the
@@ -282,8 +272,7 @@ class GltfReader {
     }
     if (isSingular(world)) fail(where + ": its node's world transform is singular (a scale of 0 on it or a parent)");
     out.position = glm::dvec3(world[3]);
-    if (!(std::max({std::abs(out.position.x), std::abs(out.position.y), std::abs(out.position.z)}) <= kMaxSceneCoordinate))
-      fail(where + ": its position is beyond ±1e15 in world space");
+    if (!withinScene(out.position)) fail(where + ": its position is beyond ±1e15 in world space");
     out.direction = -glm::dvec3(world[2]) / robustLength(glm::dvec3(world[2]));
     scene_.lights.push_back(std::move(out));
   }
@@ -312,8 +301,7 @@ class GltfReader {
       // Orthographic rays start across the view: its corners must stay where Embree can trace from.
       const glm::dvec3 reach = glm::abs(glm::dvec3(world[3])) + std::abs(out.xmag) * glm::abs(glm::dvec3(world[0])) +
                                std::abs(out.ymag) * glm::abs(glm::dvec3(world[1]));
-      if (!(std::max({reach.x, reach.y, reach.z}) <= kMaxSceneCoordinate))
-        fail(where + ": the orthographic view reaches beyond ±1e15 in world space");
+      if (!withinScene(reach)) fail(where + ": the orthographic view reaches beyond ±1e15 in world space");
     } else {
       fail(where + ": camera type '" + c.type + "' is neither perspective nor orthographic");
     }
@@ -403,7 +391,7 @@ class GltfReader {
         fail(where + ": position " + std::to_string(i) + " is not finite");
       const glm::dvec3 wd(world * glm::dvec4(p, 1.0));
       // Rays leave hits from these points, and Embree refuses origins beyond about 1.8e18.
-      if (!(std::max({std::abs(wd.x), std::abs(wd.y), std::abs(wd.z)}) <= kMaxSceneCoordinate))
+      if (!withinScene(wd))
         fail(where + ": position " + std::to_string(i) + " is beyond ±1e15 in world space (is its node's transform overflowing?)");
       const glm::vec3 w(wd);
       mesh.positions[i] = w;
@@ -481,15 +469,22 @@ class GltfReader {
     return m > 0.0 && std::isfinite(m) ? m * glm::length(v / m) : m;
   }
 
-  // Linear part whose columns are zero or coplanar (a scale of 0 on some axis).
-  static bool isSingular(const glm::dmat4& world) {
+  // Why the linear part is singular (a scale of 0 on some axis): a zero column, or unit columns whose
+  // triple product is within `tolerance` of 0; null when it is not.
+  static const char* singularity(const glm::dmat4& world, double tolerance) {
     glm::dvec3 c[3];
     for (int i = 0; i < 3; ++i) {
       const double len = robustLength(glm::dvec3(world[i]));
-      if (!(len > 0.0) || !std::isfinite(len)) return true;
+      if (!(len > 0.0) || !std::isfinite(len)) return "a scale of 0 or a zero matrix on it or a parent";
       c[i] = glm::dvec3(world[i]) / len;
     }
-    return !(std::abs(glm::dot(c[0], glm::cross(c[1], c[2]))) > 1e-12);
+    return std::abs(glm::dot(c[0], glm::cross(c[1], c[2]))) > tolerance ? nullptr : "its axes are coplanar";
+  }
+  static bool isSingular(const glm::dmat4& world) { return singularity(world, 1e-12) != nullptr; }
+
+  // Embree refuses ray origins beyond about 1.8e18; points past ±1e15 are refused first.
+  static bool withinScene(const glm::dvec3& p) {
+    return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= kMaxSceneCoordinate;
   }
 
   const std::filesystem::path& path_;
