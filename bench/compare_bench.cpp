@@ -106,7 +106,7 @@ int main(int argc, char** argv) {
     const SceneDescription description = loadGltf(scenePath);
     std::optional<BrdfChoice> override;
     if (!measuredPath.empty())
-      override = BrdfChoice{Measured{std::make_shared<const MerlTable>(MerlTable::load(measuredPath))}, measuredPath, "measured"};
+      override = BrdfChoice{Measured{std::make_shared<const MerlTable>(MerlTable::load(measuredPath))}, measuredPath, "measured", std::nullopt};
     MaterialBinding binding = bindMaterials(description, override);
     if (override) binding.bindings.push_back(measuredPath + " measured");
     const Environment environment = envPath.empty() ? Environment::constant(Rgb(envConstant)) : Environment::load(envPath);

@@ -124,7 +124,7 @@ TEST(GgxModel, ReflectsAtMostWhatArrives) {
       sum += a2 / (pi * k * k) * c * std::sin(t) * (rs * rs + rp * rp) / 2 / (1 + lambdaL);
     }
     const double expected = double(2 * pi * sum * (pi / 4) / n);
-    const double albedo = albedoAtNormalIncidence(Ggx{Rgb(0.0), Rgb(1.0), alpha, eta}).r;
+    const double albedo = albedoAtNormalIncidence(Ggx{Rgb(0.0), Rgb(1.0), alpha, double(eta)}).r;
     EXPECT_NEAR(albedo, expected, 1e-4 * expected) << "α " << alpha;
   }
   // At any incidence and F ≈ 1 (η = 1e3), by Monte Carlo through the sampler (weights = ρ cos / pdf): at most

@@ -33,7 +33,7 @@ RenderedImage renderImage(const RenderJob& job) {
     auto table = loadMeasured(path);
     measuredInvalidBins = int(table->invalidBins());
     measuredLabelText = measuredLabel(path);
-    override = BrdfChoice{Measured{std::move(table)}, path.string(), "measured"};
+    override = BrdfChoice{Measured{std::move(table)}, path.string(), "measured", std::nullopt};
   } else if (!override && !job.material.empty()) {
     override = brdfFromMaterialFile(job.material, job.fit);
   }
