@@ -250,7 +250,8 @@ SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::file
     if (!isMaterialName(layer)) h.fail("panel '" + shortened(layer) + "' in glossy:panels is not a plain name");
     if (r.panel(layer)) h.fail("panel '" + layer + "' is listed twice");
     const std::string key = "glossy:panel." + layer, error = "glossy:error." + layer;
-    PanelRecord p{h.figures(error)};
+    PanelRecord p;
+    static_cast<ImageFigures&>(p) = h.figures(error);
     p.layer = layer;
     const auto box = panelBox(h.text(key + ".box"), spec.width, spec.height);
     if (!box) h.fail("panel '" + layer + "' has no box inside the image");

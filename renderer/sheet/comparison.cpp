@@ -84,7 +84,8 @@ class PixelReplicates {
  public:
   PixelReplicates(size_t series, int replicates)
       : series_(series), k_(replicates), x_(series * replicates), l_(series * replicates),
-        gram_(series * replicates * replicates), rowSum_(series * replicates), total_(series), u_(series) {}
+        gram_(series * replicates * replicates), rowSum_(series * replicates), total_(series), u_(series), mean_(series),
+        trace_(series), cross_(series) {}
   Rgb3& x(size_t s, int j) { return x_[s * k_ + j]; }
   double& l(size_t s, int j) { return l_[s * k_ + j]; }
   bool finite() const {
@@ -209,9 +210,10 @@ class PixelReplicates {
   // test inversion recombines for each ρ: the replicates' deviations projected on the pixel's means, and
   // tr(C Cᵀ) unbiased from disjoint pairs of replicates, E[(Δx·Δx')(Δy·Δy')] = 4 tr(C Cᵀ) for the
   // differences Δ = x_a − x_b, Δ' = x_c − x_e of four distinct replicates.
-  void addScoreTerms(Totals& t) const {
+  void addScoreTerms(Totals& t) {
     const double k = k_;
-    std::vector<Rgb3> mean(series_);
+    std::vector<Rgb3>& mean = mean_;
+    std::fill(mean.begin(), mean.end(), Rgb3{});
     for (size_t s = 0; s < series_; ++s)
       for (int j = 0; j < k_; ++j)
         for (int c = 0; c < 3; ++c) mean[s][c] += x_[s * k_ + j][c] / k;
@@ -229,7 +231,10 @@ class PixelReplicates {
       if (s > 0) t.projCov[s] += cov / (k - 1.0);
     }
     double count = 0.0;
-    std::vector<double> trace(series_), cross(series_);
+    std::vector<double>& trace = trace_;
+    std::vector<double>& cross = cross_;
+    std::fill(trace.begin(), trace.end(), 0.0);
+    std::fill(cross.begin(), cross.end(), 0.0);
     const auto delta = [&](size_t s, int a, int b) {
       const Rgb3 &p = x_[s * k_ + a], &q = x_[s * k_ + b];
       return Rgb3{p[0] - q[0], p[1] - q[1], p[2] - q[2]};
@@ -258,6 +263,8 @@ class PixelReplicates {
   std::vector<Rgb3> x_;
   std::vector<double> l_;
   std::vector<double> gram_, rowSum_, total_, u_;
+  std::vector<Rgb3> mean_;             // addScoreTerms' scratch, per series, kept to spare an allocation per pixel
+  std::vector<double> trace_, cross_;
 };
 
 // Below this many Welch–Satterthwaite degrees of freedom a few pixels carry the variance of A, and the
