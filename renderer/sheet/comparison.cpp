@@ -272,6 +272,12 @@ class PixelReplicates {
 // delta method holds and is narrower, have ν in the hundreds; sharp ones 3–40 (docs/sheets.md).
 constexpr double kFewDof = 50.0;
 
+// Below this many, ν is no estimate to lean on: it comes from the same few pixels' K replicates as the
+// variance it qualifies, and a seed whose dominant pixel's replicates happen to agree gets a small variance
+// and a larger ν at once (docs/sheets.md, "The intervals"). There t takes K − 1 degrees of freedom, the
+// fewest a sum over pixels can have.
+constexpr double kUnsteadyDof = 10.0;
+
 // The set of ρ ≥ 0 with (R − ρ)² ≤ t² v(ρ), R = A / B and v(ρ) the variance of A / B − ρ were ρ the true
 // ratio: an interval not centred on a variance estimated at R itself, which collapses with R where one
 // pixel carries A (a seed whose difference there comes out small has a small R and a small variance).
@@ -449,7 +455,7 @@ Comparison compareToMeasured(const std::vector<std::vector<RgbImage>>& panels, c
     // a few pixels wide, a rare bright path): the interval then takes Student's t for ν, not the normal z.
     fig.relativeRmseDof = totals.jackSquared[s] > 0.0 ? (k - 1.0) * totals.jack[s] * totals.jack[s] / totals.jackSquared[s]
                                                       : std::numeric_limits<double>::infinity();
-    const double tq = studentQuantile(confidence, fig.relativeRmseDof);
+    const double tq = studentQuantile(confidence, fig.relativeRmseDof < kUnsteadyDof ? k - 1.0 : fig.relativeRmseDof);
     const double halfRatio = tq * std::sqrt(totals.ratioVar[s]);
     fig.relativeRmseCi = {std::sqrt(std::max(0.0, ratio - halfRatio)), std::sqrt(std::max(0.0, ratio + halfRatio))};
     if (fig.relativeRmseDof < kFewDof) {
@@ -471,14 +477,18 @@ Comparison compareToMeasured(const std::vector<std::vector<RgbImage>>& panels, c
       const Interval squared = scoreInterval(ratio, tq, halfRatio, cap, variance);
       fig.relativeRmseCi = {std::sqrt(squared.lo), std::sqrt(squared.hi)};
     }
+    // Every ρ ≥ 0 rejected: A came out further below 0 than its estimated noise allows, so that noise is
+    // underestimated (a bright path in one replicate of one pixel), and no value is known to be excluded.
+    // Up to twice the noisy figure, as where nothing above R is rejected, rather than the empty [0, 0].
+    if (!(fig.relativeRmseCi.hi > 0.0)) fig.relativeRmseCi = {0.0, 2.0 * fig.noisyRelativeRmse};
     const double l = fig.luminanceRatio, lumTotal = totals.lum[0];
     const double varL = (totals.lumVar[s] - 2.0 * l * totals.lumCov[s] + l * l * totals.lumVar[0]) / (lumTotal * lumTotal);
-    // Student's t for the luminance sums too, with their own Welch–Satterthwaite degrees of freedom: a
-    // highlight's few pixels carry their variance as they carry A's.
+    // Student's t for the luminance sums too, with their own Welch–Satterthwaite degrees of freedom (K − 1
+    // below kUnsteadyDof): a highlight's few pixels carry their variance as they carry A's.
     const double lumDof = totals.lumRatioVarSquared[s] > 0.0 ? (k - 1.0) * totals.lumRatioVar[s] * totals.lumRatioVar[s] /
                                                                    totals.lumRatioVarSquared[s]
                                                              : std::numeric_limits<double>::infinity();
-    const double halfL = studentQuantile(confidence, lumDof) * std::sqrt(std::max(0.0, varL));
+    const double halfL = studentQuantile(confidence, lumDof < kUnsteadyDof ? k - 1.0 : lumDof) * std::sqrt(std::max(0.0, varL));
     fig.luminanceRatioCi = {l - halfL, l + halfL};
   }
   out.verdict = decide(out, fitted, totals, z, confidence);

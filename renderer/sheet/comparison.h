@@ -29,7 +29,9 @@
 // estimate of that variance rests on a few times K − 1 values and z would understate the spread. There
 // (ν < 50) the r* interval inverts a test instead: each candidate ρ is tested with the variance A would have
 // if the true squared difference were ρ B, not the variance at the seed's own difference, which shrinks
-// with it (docs/sheets.md, "The intervals"). The luminance ratio's interval takes t for its own ν.
+// with it (docs/sheets.md, "The intervals"). The luminance ratio's interval takes t for its own ν. Below
+// ν = 10 both take K − 1 degrees of freedom instead: so few rest on a handful of pixels' replicates, which
+// set ν and the variance together.
 //
 // Verdict: all panels share B, so the smallest A is the smallest r*. That model is named closest only if
 // every other model's A exceeds it by more than z standard errors of the difference (estimated per pixel
