@@ -170,7 +170,10 @@ Command addStudyCommand(CLI::App& parent) {
                   "i/N: render only shard i (0-based) of N, the sheets split by expected cost, and do not analyse; default: the "
                   "job array's task (Slurm, Kubernetes indexed Job, AWS Batch; docs/cluster.md)");
   app->add_flag("--analyse", o->analyseOnly, "Render nothing: analyse the sheets the shards rendered (every one must be complete)");
-  o->threadsOption = addOption(app, options::kThreads, o->threads);
+  // Unset, the study file's threads apply, not the table's default.
+  o->threadsOption = addOption(app, options::kThreads, o->threads)
+                         ->default_str("")
+                         ->description("Threads (0 = all cores); unset: the study file's settings.threads, else all cores");
   app->add_option("--merl-dir", o->merlDir, "Folder with MERL tables (else $GLOSSY_MERL_DIR)");
   return {app, [o] { return runStudy(*o); }};
 }
