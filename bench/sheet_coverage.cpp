@@ -7,6 +7,7 @@
 // COVERAGE_DEBUG_PANEL=k prints analytic panel k's figures seed by seed; the last column counts the seeds
 // whose r* interval has fewer than COVERAGE_DOF (default 10) degrees of freedom, and how many of those cover;
 // then the seeds whose sheet stands under a warning (figureWarnings: no verdict), and how many of those cover.
+// Last, how many seeds name one model closest, and how many of those name another than the converged sheet.
 #include "materials/merl/merl_table.h"
 #include "materials/nbrdf/neural_brdf.h"
 #include "renderer/sheet/sheet.h"
@@ -143,6 +144,8 @@ int main(int argc, char** argv) {
   };
 
   const Comparison converged = compare(get(convergedSpp, 1000));
+  const Verdict convergedVerdict = verdictUnderWarnings(converged.verdict, figureWarnings(converged.panels));
+  int named = 0, wrong = 0;
   const size_t n = converged.panels.size();
   std::vector<Moments> r(n), rSigma(n), l(n), lSigma(n), f(n), fSigma(n);
   std::vector<int> rCover(n), lCover(n), fewDof(n), fewDofCovered(n), warned(n), warnedCovered(n);
@@ -152,6 +155,8 @@ int main(int argc, char** argv) {
     const Render render = get(spp, uint32_t(seed));
     const Comparison c = compare(render);
     const bool warning = !figureWarnings(c.panels).empty();
+    if (const Verdict v = verdictUnderWarnings(c.verdict, figureWarnings(c.panels)); v.models.size() == 1)
+      ++named, wrong += convergedVerdict.models.size() == 1 && v.models.front() != convergedVerdict.models.front();
     if (const char* d = std::getenv("COVERAGE_DEBUG_PANEL")) {
       const PanelFigures& x = c.panels[size_t(std::atoi(d))];
       std::printf("seed %d: r* %.4f [%.4f, %.4f] noisy %.4f dof %.1f\n", seed, x.relativeRmse, x.relativeRmseCi.lo, x.relativeRmseCi.hi,
@@ -190,5 +195,7 @@ int main(int argc, char** argv) {
                 converged.panels[p].luminanceRatio, l[p].sd() / implied(lSigma[p]), 100.0 * lCover[p] / l[p].n, fMean,
                 f[p].n ? f[p].sd() / implied(fSigma[p]) : 0.0, f[p].n ? 100.0 * fCover / f[p].n : 0.0, fewDof[p], fewDofCovered[p], warned[p], warnedCovered[p]);
   }
+  std::printf("verdicts naming one model: %d of %d seeds, %d of them not the converged sheet's (%s)\n", named, seeds, wrong,
+              convergedVerdict.why.c_str());
   return 0;
 }
