@@ -154,8 +154,9 @@ int main(int argc, char** argv) {
   for (int seed = 1; seed <= seeds; ++seed) {
     const Render render = get(spp, uint32_t(seed));
     const Comparison c = compare(render);
-    const bool warning = !figureWarnings(c.panels).empty();
-    if (const Verdict v = verdictUnderWarnings(c.verdict, figureWarnings(c.panels)); v.models.size() == 1)
+    const std::vector<std::string> warnings = figureWarnings(c.panels);
+    const bool warning = !warnings.empty();
+    if (const Verdict v = verdictUnderWarnings(c.verdict, warnings); v.models.size() == 1)
       ++named, wrong += convergedVerdict.models.size() == 1 && v.models.front() != convergedVerdict.models.front();
     if (const char* d = std::getenv("COVERAGE_DEBUG_PANEL")) {
       const PanelFigures& x = c.panels[size_t(std::atoi(d))];

@@ -58,7 +58,7 @@ struct SheetRecord {
   std::string env, scene, spp;
   double pngExposure = 0.0;
   std::optional<double> flipNoiseFloor;  // glossy:flipNoiseFloor: the ꟻLIP render noise alone gives
-  std::optional<ImageFigures> noiseFloor;  // absent in sheets before it (and without a measured panel)
+  std::optional<ImageFigures> noiseFloor;  // absent without a measured panel or in a sheet of format < 3
   // glossy:warnings, one per line: what makes the figures less than they seem (e.g. "noise is up to 93 % of
   // the noisy figure's square: the intervals may be too narrow; …"). While one stands the verdict names no
   // model closest. Empty: none (or a sheet from before warnings were stored).

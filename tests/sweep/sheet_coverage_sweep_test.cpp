@@ -47,16 +47,14 @@ struct Moments {
   double rms() const { return std::sqrt(sum2 / n); }
 };
 
+// The converged sheet (seed 1000) has convergedSpp samples per pixel, so that its own noise is at most a
+// quarter of a 64-spp seed's σ: bench/sheet_coverage's references, docs/sheets.md.
 struct Case {
   const char* material;
-  int size, spp, seeds;
+  int size, spp, seeds, convergedSpp;
 };
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.material << ' ' << c.size << "² " << c.spp << " spp, " << c.seeds << " seeds"; }
-
-// The converged sheet (seed 1000): 4096 spp at 64² (brass, whose network is slower: 2048), 1024 above, so
-// that its own noise is at most a quarter of a 64-spp seed's σ.
-int convergedSpp(const Case& c) { return c.size <= 64 ? (std::string(c.material) == "brass" ? 2048 : 4096) : 1024; }
 
 std::string name(const ::testing::TestParamInfo<Case>& info) {
   std::string n = formatted("%s_%d_%dspp", info.param.material, info.param.size, info.param.spp);
@@ -75,7 +73,7 @@ TEST_P(SheetIntervals, CoverTheConvergedValues) {
   const auto measured = std::make_shared<const MerlTable>(
       table->extension() == ".nbrdf" ? NeuralBrdf::load(*table).tabulate() : MerlTable::load(*table));
   const Stage stage;
-  const Sheet converged = renderAt(stage, m, measured, c.size, convergedSpp(c), 1000);
+  const Sheet converged = renderAt(stage, m, measured, c.size, c.convergedSpp, 1000);
   const size_t n = converged.panels.size();
   std::vector<int> rmseCovered(n), ratioCovered(n), flipCovered(n);
   std::vector<Moments> rmse(n), rmseSigma(n), flip(n);
@@ -117,15 +115,15 @@ TEST_P(SheetIntervals, CoverTheConvergedValues) {
 }
 
 INSTANTIATE_TEST_SUITE_P(SheetFigures, SheetIntervals,
-                         ::testing::Values(Case{"blue-acrylic", 64, 16, 200}, Case{"blue-acrylic", 64, 64, 200},
-                                           Case{"chrome", 64, 16, 200}, Case{"chrome", 64, 64, 200},
-                                           Case{"gold-paint", 64, 16, 200}, Case{"gold-paint", 64, 64, 200},
-                                           Case{"brass", 64, 16, 200}, Case{"brass", 64, 64, 200},
-                                           Case{"blue-acrylic", 128, 64, 100}, Case{"chrome", 128, 16, 100},
-                                           Case{"gold-paint", 128, 64, 100},
-                                           Case{"blue-acrylic", 256, 16, 80}, Case{"blue-acrylic", 256, 64, 40},
-                                           Case{"chrome", 256, 16, 80}, Case{"chrome", 256, 64, 40},
-                                           Case{"gold-paint", 256, 16, 80}),
+                         ::testing::Values(Case{"blue-acrylic", 64, 16, 200, 4096}, Case{"blue-acrylic", 64, 64, 200, 4096},
+                                           Case{"chrome", 64, 16, 200, 4096}, Case{"chrome", 64, 64, 200, 4096},
+                                           Case{"gold-paint", 64, 16, 200, 4096}, Case{"gold-paint", 64, 64, 200, 4096},
+                                           Case{"brass", 64, 16, 200, 2048}, Case{"brass", 64, 64, 200, 2048},
+                                           Case{"blue-acrylic", 128, 64, 100, 1024}, Case{"chrome", 128, 16, 100, 1024},
+                                           Case{"gold-paint", 128, 64, 100, 1024},
+                                           Case{"blue-acrylic", 256, 16, 80, 1024}, Case{"blue-acrylic", 256, 64, 40, 1024},
+                                           Case{"chrome", 256, 16, 80, 1024}, Case{"chrome", 256, 64, 40, 1024},
+                                           Case{"gold-paint", 256, 16, 80, 1024}),
                          name);
 
 }  // namespace
