@@ -263,6 +263,10 @@ TEST(LightCount, BroadLobesTakeMoreLightSamplesThanSharpOnes) {
   EXPECT_EQ(lightSamplesFor(Lambertian{Rgb(0.5)}, 3), 3);
   const Brdf sharp = CookTorrance{Rgb(0.02), Rgb(0.2), 0.0125, 1.7};  // a polished metal (steel's E2 fit)
   EXPECT_EQ(lightSamplesFor(sharp, 8), 1);
+  // BSDF samples the other way round: several for the sharp lobe, one for the broad ones.
+  EXPECT_EQ(bsdfSamplesFor(sharp), kMaxBsdfSamples);
+  EXPECT_EQ(bsdfSamplesFor(Lambertian{Rgb(0.5)}), 1);
+  EXPECT_EQ(bsdfSamplesFor(CookTorrance{Rgb(0.1), Rgb(0.4), 0.3, 1.5}), 1);
   int last = 8;
   for (const double m : {0.5, 0.2, 0.1, 0.05, 0.02}) {  // a plastic: the lobe narrows, the count does not rise
     const int k = lightSamplesFor(CookTorrance{Rgb(0.1), Rgb(0.4), m, 1.5}, 8);
@@ -271,6 +275,35 @@ TEST(LightCount, BroadLobesTakeMoreLightSamplesThanSharpOnes) {
   }
   EXPECT_LT(last, 8);
 }
+
+namespace {
+
+// The floor under the lamp, rendered (two seeds each) with each BRDF's own counts and with the most light
+// samples and one BSDF sample everywhere: the two means agree within four standard errors in each channel.
+void expectOwnCountsUnbiased(const LampOverFloor& stage, const Environment& environment, RenderSettings settings) {
+  const Camera camera = perspective({0, 2.5, 3}, {0, 0, 0}, 0.9);  // the lamp's highlight on the floor
+  settings.lightSamples = kMaxLightSamples;
+  const auto image = [&](bool perBrdf, uint32_t seed) {
+    settings.lightSamplesPerBrdf = perBrdf;
+    settings.seed = seed;
+    return renderScene(stage.description, stage.brdfs, &environment, camera, settings);
+  };
+  const RgbImage a1 = image(true, 1), a2 = image(true, 2), b1 = image(false, 3), b2 = image(false, 4);
+  for (int c = 0; c < 3; ++c) {
+    double difference = 0.0, variance = 0.0, mean = 0.0;
+    for (int y = 0; y < a1.height; ++y)
+      for (int x = 0; x < a1.width; ++x) {
+        const double ha = 0.5 * (a1.at(x, y)[c] - a2.at(x, y)[c]), hb = 0.5 * (b1.at(x, y)[c] - b2.at(x, y)[c]);
+        difference += 0.5 * (a1.at(x, y)[c] + a2.at(x, y)[c]) - 0.5 * (b1.at(x, y)[c] + b2.at(x, y)[c]);
+        variance += ha * ha + hb * hb;
+        mean += 0.5 * (b1.at(x, y)[c] + b2.at(x, y)[c]);
+      }
+    ASSERT_GT(mean, 0.0);
+    EXPECT_LT(std::abs(difference) / std::sqrt(variance), 4.0) << "channel " << c << ": relative difference " << difference / mean;
+  }
+}
+
+}  // namespace
 
 // The bias a wrong count would bring shows where a vertex takes fewer light samples than the most: a glossy
 // floor under the lamp and a constant sky, rendered with its own count (between 1 and the most) and with
@@ -284,26 +317,28 @@ TEST(LightCount, AVertexsOwnCountLeavesTheImageUnbiased) {
   ASSERT_GT(own, 1);
   ASSERT_LT(own, kMaxLightSamples);
   const Environment environment = Environment::constant(Rgb(0.3, 0.6, 0.9));
-  const Camera camera = perspective({0, 2.5, 3}, {0, 0, 0}, 0.9);  // the lamp's highlight on the floor
   RenderSettings settings = quiet(LampOverFloor::kSize, LampOverFloor::kSize, 512, 1);
   settings.maxDepth = 2;
-  settings.lightSamples = kMaxLightSamples;
-  const auto image = [&](bool perBrdf, uint32_t seed) {
-    settings.lightSamplesPerBrdf = perBrdf;
-    settings.seed = seed;
-    return renderScene(stage.description, stage.brdfs, &environment, camera, settings);
-  };
-  const RgbImage a1 = image(true, 1), a2 = image(true, 2), b1 = image(false, 3), b2 = image(false, 4);
-  for (int c = 0; c < 3; ++c) {
-    double difference = 0.0, variance = 0.0;
-    for (int y = 0; y < a1.height; ++y)
-      for (int x = 0; x < a1.width; ++x) {
-        const double ha = 0.5 * (a1.at(x, y)[c] - a2.at(x, y)[c]), hb = 0.5 * (b1.at(x, y)[c] - b2.at(x, y)[c]);
-        difference += 0.5 * (a1.at(x, y)[c] + a2.at(x, y)[c]) - 0.5 * (b1.at(x, y)[c] + b2.at(x, y)[c]);
-        variance += ha * ha + hb * hb;
-      }
-    EXPECT_LT(std::abs(difference) / std::sqrt(variance), 4.0) << "channel " << c;
-  }
+  expectOwnCountsUnbiased(stage, environment, settings);
+}
+
+// The same for the BSDF samples of a sharp lobe (light_count.h: eight, one light sample): a polished floor
+// mirrors the lamp (the BSDF samples that hit it add its emission) under a map of bright panels (those
+// that leave the scene add the map's), rendered with its own counts and with one BSDF sample and the most
+// light samples; the two converge to the same image only if each of the eight is weighed by the counts
+// taken and by an eighth.
+TEST(LightCount, ASharpLobesBsdfSamplesLeaveTheImageUnbiased) {
+  const Rgb emission(10.0, 5.0, 2.0);
+  LampOverFloor stage(emission);
+  stage.brdfs[0] = CookTorrance{Rgb(0.02), Rgb(0.4), 0.05, 1.7};
+  ASSERT_EQ(bsdfSamplesFor(stage.brdfs[0]), kMaxBsdfSamples);
+  ASSERT_EQ(lightSamplesFor(stage.brdfs[0], kMaxLightSamples), 1);
+  const TempDir dir;
+  writePanelsMap(dir / "panels.exr", 48, 25);
+  const Environment environment = Environment::load(dir / "panels.exr");
+  RenderSettings settings = quiet(LampOverFloor::kSize, LampOverFloor::kSize, 256, 1);
+  settings.maxDepth = 3;
+  expectOwnCountsUnbiased(stage, environment, settings);  // the camera sees the lamp's mirror image
 }
 
 TEST(Integrator, TheLightChooserDrawsByPower) {

@@ -59,11 +59,15 @@ RenderSettings smallSettings() {
 TEST(CoherentPanels, EachPanelIsItsSoloRender) {
   const std::vector<RenderScene> scenes = panelScenes();
   const RenderSettings settings = smallSettings();
-  // The panels take different light-sample counts at the object (light_count.h), so the object vertex
-  // draws a set for each and each panel must find its own.
-  std::set<int> counts;
-  for (const RenderScene& scene : scenes) counts.insert(lightSamplesFor(scene.defaultBrdf, settings.lightSamples));  // withObject: the object's
+  // The panels take different light-sample and BSDF-sample counts at the object (light_count.h), so the
+  // object vertex draws a set of each for each and each panel must find its own.
+  std::set<int> counts, bsdfCounts;
+  for (const RenderScene& scene : scenes) {  // withObject: defaultBrdf is the object's
+    counts.insert(lightSamplesFor(scene.defaultBrdf, settings.lightSamples));
+    bsdfCounts.insert(bsdfSamplesFor(scene.defaultBrdf));
+  }
   EXPECT_GE(counts.size(), 2u);
+  EXPECT_GE(bsdfCounts.size(), 2u);
   RenderStats stats;
   const std::vector<RgbImage> together = renderPanels(scenes, stage().description.cameras.front(), settings, stats);
   ASSERT_EQ(together.size(), scenes.size());

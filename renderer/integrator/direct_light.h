@@ -57,7 +57,7 @@ inline bool toLight(const ShadingPoint& sp, const ChosenLight& chosen, const Lig
 // shadow rays' verdicts.
 struct VertexLight {
   uint32_t sets = 1;
-  int count = 0;  // lightDraws(sets)
+  int count = 0;  // setDraws(sets)
   LightPath path[kMaxLightDraws];
   bool visible[kMaxLightDraws] = {};  // the sample arrived from above the surface and nothing blocks it
 };
@@ -81,7 +81,7 @@ class DirectLight {
     int most = 0;
     for (const int i : lanes) {
       light[i].sets = draws[i].lightSets;
-      light[i].count = lightDraws(draws[i].lightSets);
+      light[i].count = setDraws(draws[i].lightSets);
       most = std::max(most, light[i].count);
       from_[i] = receiver(sp[i]);
     }
@@ -116,7 +116,7 @@ class DirectLight {
     int most = 0;
     for (const int i : lanes) {
       most = std::max(most, sp[i].lightSamples);
-      first_[i] = lightOffset(light[i].sets, sp[i].lightSamples);
+      first_[i] = setOffset(light[i].sets, sp[i].lightSamples);
     }
     for (int k = 0; k < most; ++k) {
       Lanes lit;
@@ -136,7 +136,7 @@ class DirectLight {
           const LightPath& l = light[i].path[first_[i] + k];
           if (maxComponent(value_[g].f) <= 0.0) continue;
           const double pdf = sp[i].lightSamples * l.pdf;
-          const double w = l.delta ? 1.0 : powerHeuristic(pdf, value_[g].pdf);
+          const double w = l.delta ? 1.0 : powerHeuristic(pdf, sp[i].bsdfSamples * value_[g].pdf);
           radiance[i] += throughput[i] * (value_[g].f * l.radiance * (l.wiLocal.z * w / pdf));
         }
       });
@@ -150,7 +150,7 @@ class DirectLight {
   LightSample sample_[N];
   Ray shadow_[N];
   bool traced_[N], occluded_[N];
-  int first_[N];  // where each lane's own set starts among its light samples (lightOffset)
+  int first_[N];  // where each lane's own set starts among its light samples (setOffset)
   Vec3 wi_[N], wo_[N];  // the BRDF's batch, packed
   BrdfValue value_[N];
 };

@@ -71,6 +71,7 @@ class PanelPaths {
         paths_.point[i] = v.point;
         paths_.point[i].brdf = &panel_.scene.brdfOf(v.mesh);
         paths_.point[i].lightSamples = panel_.lightSamplesAt(v.mesh, v.depth);
+        paths_.point[i].bsdfSamples = panel_.bsdfSamplesAt(v.mesh, v.depth);
         paths_.draws[i] = v.draws;
         paths_.light[i] = v.light;
         samplers_[i] = v.sampler;

@@ -104,7 +104,8 @@ class TileRenderer {
   Ray rays_[kWaveSize];
 };
 
-// The panel's own light samples per material at a first vertex (light_count.h), each drawn as its one set.
+// The panel's own light and BSDF samples per material at a first vertex (light_count.h), each drawn as
+// their one set.
 LightCounts lightCounts(const RenderScene& scene, const RenderSettings& settings) {
   const int most = std::clamp(settings.lightSamples, 1, kMaxLightSamples);
   LightCounts counts;
@@ -112,6 +113,8 @@ LightCounts lightCounts(const RenderScene& scene, const RenderSettings& settings
     const Brdf& brdf = m == 0 ? scene.defaultBrdf : scene.brdfs[m - 1];
     counts.taken.push_back(settings.lightSamplesPerBrdf ? lightSamplesFor(brdf, most) : most);
     counts.drawn.push_back(1u << (counts.taken.back() - 1));
+    counts.bsdf.push_back(settings.lightSamplesPerBrdf ? bsdfSamplesFor(brdf) : 1);
+    counts.bsdfDrawn.push_back(1u << (counts.bsdf.back() - 1));
   }
   return counts;
 }
@@ -136,12 +139,13 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
   std::vector<PathContext> contexts;
   for (const RenderScene& panel : panels) contexts.push_back({panel, settings, lights, lightCounts(panel, settings)});
   for (size_t m = 0; m < contexts[0].counts.drawn.size(); ++m) {  // every panel draws the sets all of them take
-    uint32_t drawn = 0;
-    for (const PathContext& c : contexts) drawn |= c.counts.drawn[m];
-    for (PathContext& c : contexts) c.counts.drawn[m] = drawn;
+    uint32_t drawn = 0, bsdfDrawn = 0;
+    for (const PathContext& c : contexts) drawn |= c.counts.drawn[m], bsdfDrawn |= c.counts.bsdfDrawn[m];
+    for (PathContext& c : contexts) c.counts.drawn[m] = drawn, c.counts.bsdfDrawn[m] = bsdfDrawn;
   }
   const CameraRays cameraRays(camera, settings.width, settings.height);
-  const CmjPattern pattern(uint32_t(std::max(1, settings.spp)), uint32_t(std::clamp(settings.lightSamples, 1, kMaxLightSamples)));
+  // Split patterns for every count of light or BSDF samples a first vertex may take.
+  const CmjPattern pattern(uint32_t(std::max(1, settings.spp)), uint32_t(std::max(kMaxLightSamples, kMaxBsdfSamples)));
   tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers(
       [&] { return std::make_unique<TileRenderer>(contexts, cameraRays, pattern, images); });
 

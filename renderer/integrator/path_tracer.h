@@ -18,9 +18,12 @@
 namespace glossy {
 
 // The most light samples a vertex takes (RenderSettings::lightSamples), and the most it draws: a sheet's
-// object vertex draws the sets of 1, 2, 4 and 8 that its panels take (light_count.h).
+// object vertex draws the sets of 1, 2, 4 and 8 that its panels take (light_count.h). The most BSDF
+// samples a first vertex takes (light_count.h: a sharp lobe's).
 constexpr int kMaxLightSamples = 8;
 constexpr int kMaxLightDraws = 1 + 2 + 4 + 8;
+constexpr int kMaxBsdfSamples = 8;
+constexpr int kMaxBsdfDraws = 1 + 8;  // the sets a sheet's panels may take (light_count.h: 1 or 8)
 
 struct RenderSettings {
   int width = 512, height = 512;
@@ -29,8 +32,8 @@ struct RenderSettings {
   int maxDepth = 8;
   int rouletteDepth = 4;  // Russian roulette from this depth on
   // Light samples at a camera path's first vertex (path_vertex.h), at most, 1 … kMaxLightSamples; one at
-  // the others. With lightSamplesPerBrdf each BRDF takes its own count up to this (light_count.h), else
-  // every first vertex takes this many.
+  // the others. With lightSamplesPerBrdf each BRDF takes its own count up to this, and its own count of
+  // BSDF samples there (light_count.h), else every first vertex takes this many and one BSDF sample.
   int lightSamples = 4;
   bool lightSamplesPerBrdf = true;
   uint32_t seed = 0;
@@ -73,10 +76,13 @@ struct RenderScene {
 
 // The light samples of a camera path's first vertex per scene material (index + 1; 0 the default BRDF):
 // those this panel takes, and the sets drawn there (bit k − 1: k samples), the union over a sheet's panels
-// (the same in each), so that they share the draws and the shadow rays.
+// (the same in each), so that they share the draws and the shadow rays; and the BSDF samples it takes there,
+// drawn likewise.
 struct LightCounts {
   std::vector<int> taken;
   std::vector<uint32_t> drawn;
+  std::vector<int> bsdf;
+  std::vector<uint32_t> bsdfDrawn;
 };
 
 // What a path tracer works from.
@@ -86,9 +92,16 @@ struct PathContext {
   const LightSet& lights;
   LightCounts counts = {};
 
-  // The light samples a vertex on the mesh at this depth takes in this panel, and the sets it draws.
+  // The light samples a vertex on the mesh at this depth takes in this panel, its BSDF samples, and the
+  // sets of light samples it draws.
   int lightSamplesAt(uint32_t mesh, int depth) const {
     return depth == 1 ? counts.taken[size_t(scene.description->meshes[mesh].material + 1)] : 1;
+  }
+  int bsdfSamplesAt(uint32_t mesh, int depth) const {
+    return depth == 1 ? counts.bsdf[size_t(scene.description->meshes[mesh].material + 1)] : 1;
+  }
+  uint32_t bsdfSetsAt(uint32_t mesh, int depth) const {
+    return depth == 1 ? counts.bsdfDrawn[size_t(scene.description->meshes[mesh].material + 1)] : 1u;
   }
   uint32_t lightSetsAt(uint32_t mesh, int depth) const {
     return depth == 1 ? counts.drawn[size_t(scene.description->meshes[mesh].material + 1)] : 1u;

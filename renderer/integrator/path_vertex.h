@@ -16,16 +16,22 @@ struct PathState {
   Rgb throughput{1.0};
   double bsdfPdf = 0.0;  // solid-angle pdf of the BSDF sample that made the ray; 0 for the camera ray
   int lightSamples = 1;  // that the vertex the ray left took (MIS counts them)
+  int bsdfSamples = 1;   // likewise
   Receiver from;         // the vertex the ray left (the light densities of MIS are seen from it)
 };
 
 // Emission found by the path's ray (from a light it hit or a distant light it escaped to), weighted
 // against the light samples that could have found it, added to radiance with the path's throughput:
 // lightPdf is one's density, its light's choice included, and the vertex took path.lightSamples of them
-// (the power heuristic with sample counts). A camera ray's is unweighted.
+// and path.bsdfSamples BSDF samples, of which this is one (the power heuristic with sample counts). A
+// camera ray's is unweighted.
 inline void addEmission(const PathState& path, const Rgb& emitted, double lightPdf, Rgb& radiance) {
-  radiance += path.throughput *
-              (path.bsdfPdf > 0.0 ? emitted * powerHeuristic(path.bsdfPdf, path.lightSamples * lightPdf) : emitted);
+  if (!(path.bsdfPdf > 0.0)) {
+    radiance += path.throughput * emitted;
+    return;
+  }
+  const int n = path.bsdfSamples;
+  radiance += path.throughput * emitted * (powerHeuristic(n * path.bsdfPdf, path.lightSamples * lightPdf) / n);
 }
 
 // What the path's ray hit: a light adds its emission and ends the path (emitters are black bodies: they
@@ -40,6 +46,7 @@ inline bool arrive(const PathContext& context, const Ray& ray, const Hit& hit, i
   }
   if (depth >= context.settings.maxDepth || !shade(context.scene, ray, hit, sp)) return false;
   sp.lightSamples = context.lightSamplesAt(hit.mesh, depth);
+  sp.bsdfSamples = context.bsdfSamplesAt(hit.mesh, depth);
   return true;
 }
 
@@ -52,6 +59,7 @@ inline bool continuePath(int depth, const RenderSettings& settings, const Shadin
   path.throughput *= s.weight;
   path.bsdfPdf = s.pdf;
   path.lightSamples = sp.lightSamples;
+  path.bsdfSamples = sp.bsdfSamples;
   path.from = receiver(sp);
   if (depth >= settings.rouletteDepth) {
     const double survive = std::min(0.95, maxComponent(path.throughput));
@@ -87,6 +95,12 @@ class Paths {
   // The vertices' BRDFs act: the direct light, then their samples continue the paths (rays). The lanes whose
   // paths go on.
   Lanes reflect(int depth, const Lanes& lanes, Ray* rays, Rgb* radiance);
+  // The lanes' vertices' BSDF samples after the first (ShadingPoint::bsdfSamples): each traced to what it
+  // finds, adding its emission (a light hit, the distant lights when it leaves the scene); none continues.
+  void addOtherBsdfSamples(const Lanes& lanes, Rgb* radiance);
+  // The distant lights' emission for the escaped lanes, whose rays' directions and vertices are in
+  // direction_ and from_, weighted as paths[i]'s (addEmission).
+  void addDistantEmission(const Lanes& escaped, const PathState* paths, Rgb* radiance);
 
   // Each lane's path, its last hit, and its vertex there before the BRDF acts.
   PathState path[N];
@@ -104,6 +118,13 @@ class Paths {
   double pdf_[N];
   DirectLight<N> direct_;
   BrdfSample bsdf_[N];
+  // addOtherBsdfSamples' scratch: each lane's sample, as the draws, the ray and hit and the path it makes.
+  VertexDraws otherDraws_[N];
+  BrdfSample other_[N];
+  Ray otherRays_[N];
+  Hit otherHit_[N];
+  bool otherFound_[N];
+  PathState otherPath_[N];
 };
 
 }  // namespace glossy

@@ -16,6 +16,7 @@ struct ShadingPoint {
   Vec3 woLocal{0.0};
   const Brdf* brdf = nullptr;
   int lightSamples = 1;  // that the vertex takes (PathContext::lightSamplesAt): its BRDF's, at the first vertex
+  int bsdfSamples = 1;   // likewise (PathContext::bsdfSamplesAt): more than one only at a first vertex
 };
 
 // The shading point of a hit that is not a light; false where the path cannot reflect there.

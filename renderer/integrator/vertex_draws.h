@@ -10,12 +10,16 @@
 // vertex's light brings is most of the image, and its extra samples share the camera ray and the BSDF
 // sample, while a whole extra path would trace both again. A sheet's object vertex draws one such set per
 // count its panels take, all from the same dimensions, so each panel gets the draws it would get alone.
+// A first vertex that takes M > 1 BSDF samples (light_count.h) draws them likewise, a split set of M from
+// the lobe's and the direction's dimensions (a sheet's object vertex a set per count its panels take), and
+// the first of its own set continues the path.
 #pragma once
 
 #include "renderer/integrator/lanes.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/sampling/cmj_sampler.h"
 
+#include <algorithm>
 #include <cstdint>
 
 namespace glossy {
@@ -29,16 +33,33 @@ struct VertexDraws {
   Vec2 light[kMaxLightDraws] = {};          // where on it (Light::sample)
   double lobe = 0.0;         // which of the BRDF's lobes
   Vec2 bsdf{0.0};            // the direction in that lobe
+  // The sets of BSDF samples drawn (bit k − 1: k of them), set before drawing. Of one sample: lobe and bsdf;
+  // else lobes and bsdfs hold the sets, set after set, and the vertex's own set (ShadingPoint::bsdfSamples)
+  // goes into lobe and bsdf before its BRDF samples them (takeBsdfDraw).
+  uint32_t bsdfSets = 1;
+  double lobes[kMaxBsdfDraws] = {};
+  Vec2 bsdfs[kMaxBsdfDraws] = {};
   double roulette = 0.0;     // whether the path survives Russian roulette
 };
 
-// Where the set of `count` light samples starts among a vertex's draws of `sets`: after the smaller sets.
-inline int lightOffset(uint32_t sets, int count) {
+// Where the set of `count` samples (light or BSDF) starts among a vertex's draws of `sets`: after the
+// smaller sets; and how many those are.
+inline int setOffset(uint32_t sets, int count) {
   int offset = 0;
   for (int k = 1; k < count; ++k) offset += (sets >> (k - 1) & 1u) ? k : 0;
   return offset;
 }
-inline int lightDraws(uint32_t sets) { return lightOffset(sets, kMaxLightSamples + 1); }
+inline int setDraws(uint32_t sets) { return setOffset(sets, std::max(kMaxLightSamples, kMaxBsdfSamples) + 1); }
+
+// The j-th of a vertex's own `count` BSDF samples in d, as out's lobe and bsdf (out may be d).
+inline void takeBsdfDraw(const VertexDraws& d, int count, int j, VertexDraws& out) {
+  if (d.bsdfSets == 1u) {
+    out.lobe = d.lobe, out.bsdf = d.bsdf;
+  } else {
+    const int k = setOffset(d.bsdfSets, count) + j;
+    out.lobe = d.lobes[k], out.bsdf = d.bsdfs[k];
+  }
+}
 
 // Which of the skippable draws a vertex at this depth uses.
 struct DrawsUsed {
@@ -50,19 +71,27 @@ struct DrawsUsed {
 // The draws of a vertex for samplers[i] into out[i], i in lanes, whose lightSets the caller has set, slot by
 // slot, each a batch draw (cmj_sampler.h), which gives one sampler (a set of one, the reference) the values
 // of its scalar draws. The light slots of a lane that draws more than one light sample take its sets of
-// split draws (CmjSampler::getSplits2D) instead.
+// split draws (CmjSampler::getSplits2D) instead, and the BSDF slots of one that takes more than one BSDF
+// sample its sets of them.
 inline void drawVertices(CmjSampler* samplers, const Lanes& lanes, DrawsUsed used, VertexDraws* out) {
   double x[kWaveSize];
   Vec2 xy[kWaveSize];
-  Lanes single, split;
+  Lanes single, split, singleBsdf, splitBsdf;
   for (const int i : lanes) (out[i].lightSets == 1u ? single : split).add(i);
+  for (const int i : lanes) (out[i].bsdfSets == 1u ? singleBsdf : splitBsdf).add(i);
   for (int slot = 0; slot < VertexDraws::kDimensions; ++slot) {
     if ((slot == VertexDraws::kLightChoice && !used.lightChoice) || (slot == VertexDraws::kRoulette && !used.roulette)) {
       // Left as it was: the choice has one outcome (one light has all the power), roulette is not played.
       for (const int i : lanes) samplers[i].skip(1);
     } else {
       const bool light = slot == VertexDraws::kLightChoice || slot == VertexDraws::kLight;
-      const Lanes& batch = light ? single : lanes;
+      const bool bsdf = slot == VertexDraws::kLobe || slot == VertexDraws::kBsdf;
+      const Lanes& batch = light ? single : bsdf ? singleBsdf : lanes;
+      if (bsdf)
+        for (const int i : splitBsdf) {
+          if (slot == VertexDraws::kBsdf) samplers[i].getSplits2D(out[i].bsdfSets, out[i].bsdfs);
+          else samplers[i].getSplits1D(out[i].bsdfSets, out[i].lobes);
+        }
       if (light)
         for (const int i : split) {
           if (slot == VertexDraws::kLight) samplers[i].getSplits2D(out[i].lightSets, out[i].light);
