@@ -1,10 +1,11 @@
-// How many light samples (and BSDF samples, at the end) a camera path's first vertex takes: a function of the
-// BRDF there, so that each of a sheet's panels gets its own. A light sample pays for itself where the BRDF's own samples find the light
-// poorly: a broad lobe. On a lobe a few milliradians wide nearly all that a light sample could find is
-// weighted to the BSDF sample by MIS, and each further light sample costs a shadow ray, a light lookup and
-// a BRDF value for almost nothing. The count does not enter the estimator's expectation: MIS weighs the
-// vertex's light samples and its BSDF sample by the count actually taken (the power heuristic with sample
-// counts, direct_light.h), so any function gives an unbiased image; this one chooses for the variance.
+// How many light samples (and, at the end, BSDF samples) a camera path's first vertex takes: a function of
+// the BRDF there, so that each of a sheet's panels gets its own. A light sample pays for itself where the
+// BRDF's own samples find the light poorly: a broad lobe. On a lobe a few milliradians wide nearly all that
+// a light sample could find is weighted to the BSDF sample by MIS, and each further light sample costs a
+// shadow ray, a light lookup and a BRDF value for almost nothing. The count does not enter the estimator's
+// expectation: MIS weighs the vertex's light samples and its BSDF samples by the counts actually taken (the
+// power heuristic with sample counts, direct_light.h), so any function gives an unbiased image; this one
+// chooses for the variance.
 #pragma once
 
 #include "materials/models/brdf.h"

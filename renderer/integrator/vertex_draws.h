@@ -43,7 +43,7 @@ struct VertexDraws {
 };
 
 // Where the set of `count` samples (light or BSDF) starts among a vertex's draws of `sets`: after the
-// smaller sets; and how many those are.
+// smaller sets; and how many draws the sets make in all.
 inline int setOffset(uint32_t sets, int count) {
   int offset = 0;
   for (int k = 1; k < count; ++k) offset += (sets >> (k - 1) & 1u) ? k : 0;
