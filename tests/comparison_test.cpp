@@ -309,8 +309,8 @@ TEST(Comparison, IntervalsHoldWhereOnePixelCarriesTheDifference) {
 
 // A few pixels carry the difference (ν about 3–10), each replicate's difference one draw for all three
 // channels: ν is estimated from the same pixels' four replicates as the variance, and a draw whose pixels'
-// replicates happen to agree gets a small variance and a larger ν at once. t at that ν covers 93.7 % here;
-// at K − 1 = 3 degrees of freedom, 96.9 %.
+// replicates happen to agree gets a small variance and a larger ν at once. t at that ν falls short of the
+// coverage asserted below; K − 1 = 3 degrees of freedom reach it.
 TEST(Comparison, IntervalsHoldWhereAFewPixelsCarryTheDifference) {
   const double covered = coverageWhereAFewPixelsCarry(3, false, 1500, 11);
   std::printf("a few pixels carry the difference: r covered %.1f %%\n", 100.0 * covered);

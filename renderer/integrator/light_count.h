@@ -70,12 +70,11 @@ inline int lightSamplesFor(const Brdf& brdf, int most) {
 
 // The BSDF samples at a first vertex of this BRDF: kMaxBsdfSamples where its light samples carry under a
 // fifth of its light (a lobe that takes one light sample), else one. On such a lobe nearly all of a pixel's
-// noise is the BSDF sample's: how much of the map's light its narrow lobe happens to catch
-// (bench/direct_light_split.cpp: 86 % of the variance for aluminium's Microfacet fit under the studio map,
-// 85 % for steel's Cook-Torrance fit), which more light samples cannot reduce. Eight from one split set
-// share the camera ray, the light samples and the vertex, and only the first goes on as the path: each
-// further one costs a BRDF sample, a ray and a light lookup, not a whole path. The count, like the light
-// samples', only sets the variance: MIS weighs each sample by both counts (path_vertex.h).
+// noise is the BSDF sample's: how much of the map's light its narrow lobe happens to catch (measured by
+// bench/direct_light_split.cpp, docs/performance.md), which more light samples cannot reduce. Eight from
+// one split set share the camera ray, the light samples and the vertex, and only the first goes on as the
+// path: each further one costs a BRDF sample, a ray and a light lookup, not a whole path. The count, like
+// the light samples', only sets the variance: MIS weighs each sample by both counts (path_vertex.h).
 inline int bsdfSamplesFor(const Brdf& brdf) { return lightCarriedShare(brdf) < 0.2 ? kMaxBsdfSamples : 1; }
 static_assert(kMaxBsdfDraws == 1 + kMaxBsdfSamples, "the draws hold a set of one and one of kMaxBsdfSamples");
 

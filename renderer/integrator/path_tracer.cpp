@@ -144,8 +144,11 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
     for (PathContext& c : contexts) c.counts.drawn[m] = drawn, c.counts.bsdfDrawn[m] = bsdfDrawn;
   }
   const CameraRays cameraRays(camera, settings.width, settings.height);
-  // Split patterns for every count of light or BSDF samples a first vertex may take.
-  const CmjPattern pattern(uint32_t(std::max(1, settings.spp)), uint32_t(std::max(kMaxLightSamples, kMaxBsdfSamples)));
+  // Split patterns for every count of light or BSDF samples the panels' first vertices take.
+  int splits = 1;
+  for (const PathContext& c : contexts)
+    for (size_t m = 0; m < c.counts.taken.size(); ++m) splits = std::max({splits, c.counts.taken[m], c.counts.bsdf[m]});
+  const CmjPattern pattern(uint32_t(std::max(1, settings.spp)), uint32_t(splits));
   tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers(
       [&] { return std::make_unique<TileRenderer>(contexts, cameraRays, pattern, images); });
 
