@@ -1,4 +1,4 @@
-// CmjSampler's batch draws: get2D and get1D for many lanes, stage by stage over arrays of lanes, with the
+// CmjSampler's batch draws: get2D, get1D and their split forms for many lanes, stage by stage over arrays of lanes, with the
 // same arithmetic as the one-lane forms in cmj_sampler.h (so the same values, bit for bit).
 #include "renderer/sampling/cmj_sampler.h"
 
@@ -52,73 +52,127 @@ void permuteLanes(const uint32_t* in, const RangeLanes& range, const uint32_t* s
 
 }  // namespace
 
-void CmjSampler::get2D(CmjSampler* samplers, const int* lanes, int n, Vec2* out) {
+void CmjSampler::points2D(const CmjPattern& g, const CmjPixel::Seeds* seeds, const uint32_t* index, int count, Vec2* out) {
   using namespace cmj_detail;
+  uint32_t cell[kChunk], i[kChunk], c[kChunk];
+  uint32_t thinColumn[kChunk], thinRow[kChunk];
+  int band[kChunk];
+  // Zeroed only because GCC cannot see that count ≤ kChunk fills what permuteLanes reads.
+  RangeLanes range{};
+  // The three keys' halves: key[0][k] low, key[1][k] high for the cell; then the column's, the row's.
+  uint32_t key[6][kChunk]{};
+  for (int k = 0; k < count; ++k) {
+    const CmjPixel::Seeds& p = seeds[k];
+    key[0][k] = uint32_t(p.cell);
+    key[1][k] = uint32_t(p.cell >> 32);
+    key[2][k] = uint32_t(p.column);
+    key[3][k] = uint32_t(p.column >> 32);
+    key[4][k] = uint32_t(p.row);
+    key[5][k] = uint32_t(p.row >> 32);
+    range.set(k, g.countRange_);
+  }
+  permuteLanes(index, range, key[0], key[1], cell, count);
+  // The cell's column of its band, and its place in it; then the thin column (a permutation of i over
+  // the band's height) and the thin row (of c over its columns).
+  for (int k = 0; k < count; ++k) {
+    band[k] = cell[k] >= g.bands_[1].start;
+    const CmjPattern::Band& b = g.bands_[band[k]];
+    const uint32_t j = cell[k] - b.start;
+    i[k] = j / b.columns;
+    c[k] = j - i[k] * b.columns;
+    range.set(k, b.heightRange);
+  }
+  permuteLanes(i, range, key[2], key[3], thinColumn, count);
+  for (int k = 0; k < count; ++k) range.set(k, g.bands_[band[k]].columnRange);
+  permuteLanes(c, range, key[4], key[5], thinRow, count);
+  for (int k = 0; k < count; ++k) {
+    const CmjPattern::Band& b = g.bands_[band[k]];
+    const uint64_t jitter = mix(cell[k], key[1][k]);
+    out[k] = {belowOne((b.start + c[k] * b.height + thinColumn[k] + toUnit(uint32_t(jitter >> 32))) * g.perCount_),
+              belowOne((i[k] * b.columns + thinRow[k] + toUnit(uint32_t(jitter))) * b.perThinRow)};
+  }
+}
+
+void CmjSampler::points1D(const CmjPattern& g, const CmjPixel::Seeds* seeds, const uint32_t* index, int count, double* out) {
+  using namespace cmj_detail;
+  uint32_t interval[kChunk], low[kChunk]{}, high[kChunk]{};
+  RangeLanes range{};
+  for (int k = 0; k < count; ++k) {
+    low[k] = uint32_t(seeds[k].cell);
+    high[k] = uint32_t(seeds[k].cell >> 32);
+    range.set(k, g.countRange_);
+  }
+  permuteLanes(index, range, low, high, interval, count);
+  for (int k = 0; k < count; ++k) out[k] = belowOne((interval[k] + toUnit(hash(interval[k], high[k]))) * g.perCount_);
+}
+
+template <class T, class Points>
+void CmjSampler::draw(CmjSampler* samplers, const int* lanes, int n, T* out, Points points) {
   for (int first = 0; first < n; first += kChunk) {
     const int count = std::min(kChunk, n - first);
     const int* lane = lanes + first;
-    const CmjPattern& g = *samplers[lane[0]].pattern_;
-    uint32_t index[kChunk], cell[kChunk], i[kChunk], c[kChunk];
-    uint32_t thinColumn[kChunk], thinRow[kChunk];
-    int band[kChunk];
-    RangeLanes range;
-    // The three keys' halves: key[0][k] low, key[1][k] high for the cell; then the column's, the row's.
-    uint32_t key[6][kChunk];
+    CmjPixel::Seeds seeds[kChunk];
+    uint32_t index[kChunk];
+    T values[kChunk];
     for (int k = 0; k < count; ++k) {
       CmjSampler& s = samplers[lane[k]];
-      const CmjPixel::Seeds p = s.pixel_->seeds(s.dimension_++);
+      seeds[k] = s.pixel_->seeds(s.dimension_++);
       index[k] = s.index_;
-      key[0][k] = uint32_t(p.cell);
-      key[1][k] = uint32_t(p.cell >> 32);
-      key[2][k] = uint32_t(p.column);
-      key[3][k] = uint32_t(p.column >> 32);
-      key[4][k] = uint32_t(p.row);
-      key[5][k] = uint32_t(p.row >> 32);
-      range.set(k, g.countRange_);
     }
-    permuteLanes(index, range, key[0], key[1], cell, count);
-    // The cell's column of its band, and its place in it; then the thin column (a permutation of i over
-    // the band's height) and the thin row (of c over its columns).
+    points(*samplers[lane[0]].pattern_, seeds, index, count, values);
+    for (int k = 0; k < count; ++k) out[lane[k]] = values[k];
+  }
+}
+
+template <class T, class Points>
+void CmjSampler::drawSplits(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, T* const* out, Points points) {
+  for (int first = 0; first < n; first += kChunk) {
+    const int count = std::min(kChunk, n - first);
+    const int* lane = lanes + first;
+    CmjPixel::Seeds seeds[kChunk];
+    uint32_t all = 0;
+    int filled[kChunk] = {};  // the draws of each lane's smaller sets, written before
     for (int k = 0; k < count; ++k) {
-      band[k] = cell[k] >= g.bands_[1].start;
-      const CmjPattern::Band& b = g.bands_[band[k]];
-      const uint32_t j = cell[k] - b.start;
-      i[k] = j / b.columns;
-      c[k] = j - i[k] * b.columns;
-      range.set(k, b.heightRange);
+      CmjSampler& s = samplers[lane[k]];
+      seeds[k] = s.pixel_->seeds(s.dimension_++);
+      all |= sets[lane[k]];
     }
-    permuteLanes(i, range, key[2], key[3], thinColumn, count);
-    for (int k = 0; k < count; ++k) range.set(k, g.bands_[band[k]].columnRange);
-    permuteLanes(c, range, key[4], key[5], thinRow, count);
-    for (int k = 0; k < count; ++k) {
-      const CmjPattern::Band& b = g.bands_[band[k]];
-      const uint64_t jitter = mix(cell[k], key[1][k]);
-      out[lane[k]] = {belowOne((b.start + c[k] * b.height + thinColumn[k] + toUnit(uint32_t(jitter >> 32))) * g.perCount_),
-                      belowOne((i[k] * b.columns + thinRow[k] + toUnit(uint32_t(jitter))) * b.perThinRow)};
+    // Set by set, in increasing size as getSplits2D writes them: the draws of every lane that takes it,
+    // kChunk at a time.
+    for (uint32_t size = 1; all >> (size - 1) != 0; ++size) {
+      if (!(all >> (size - 1) & 1u)) continue;
+      const CmjPattern& g = samplers[lane[0]].pattern_->split(size);
+      CmjPixel::Seeds drawSeeds[kChunk];
+      uint32_t index[kChunk];
+      T values[kChunk], *target[kChunk];
+      int m = 0;
+      const auto flush = [&] {
+        points(g, drawSeeds, index, m, values);
+        for (int e = 0; e < m; ++e) *target[e] = values[e];
+        m = 0;
+      };
+      for (int k = 0; k < count; ++k) {
+        if (!(sets[lane[k]] >> (size - 1) & 1u)) continue;
+        for (uint32_t j = 0; j < size; ++j) {
+          drawSeeds[m] = seeds[k];
+          index[m] = samplers[lane[k]].index_ * size + j;
+          target[m] = out[lane[k]] + filled[k] + j;
+          if (++m == kChunk) flush();
+        }
+        filled[k] += int(size);
+      }
+      if (m > 0) flush();
     }
   }
 }
 
-void CmjSampler::get1D(CmjSampler* samplers, const int* lanes, int n, double* out) {
-  using namespace cmj_detail;
-  for (int first = 0; first < n; first += kChunk) {
-    const int count = std::min(kChunk, n - first);
-    const int* lane = lanes + first;
-    const CmjPattern& g = *samplers[lane[0]].pattern_;
-    uint32_t index[kChunk], interval[kChunk], low[kChunk], high[kChunk];
-    RangeLanes range;
-    for (int k = 0; k < count; ++k) {
-      CmjSampler& s = samplers[lane[k]];
-      const uint64_t key = s.pixel_->seeds(s.dimension_++).cell;
-      index[k] = s.index_;
-      low[k] = uint32_t(key);
-      high[k] = uint32_t(key >> 32);
-      range.set(k, g.countRange_);
-    }
-    permuteLanes(index, range, low, high, interval, count);
-    for (int k = 0; k < count; ++k)
-      out[lane[k]] = belowOne((interval[k] + toUnit(hash(interval[k], high[k]))) * g.perCount_);
-  }
+void CmjSampler::get2D(CmjSampler* samplers, const int* lanes, int n, Vec2* out) { draw(samplers, lanes, n, out, points2D); }
+void CmjSampler::get1D(CmjSampler* samplers, const int* lanes, int n, double* out) { draw(samplers, lanes, n, out, points1D); }
+void CmjSampler::getSplits2D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, Vec2* const* out) {
+  drawSplits(samplers, lanes, n, sets, out, points2D);
+}
+void CmjSampler::getSplits1D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, double* const* out) {
+  drawSplits(samplers, lanes, n, sets, out, points1D);
 }
 
 }  // namespace glossy

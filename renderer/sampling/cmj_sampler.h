@@ -233,6 +233,10 @@ class CmjSampler {
   // step. The samplers must share one pattern.
   static void get2D(CmjSampler* samplers, const int* lanes, int n, Vec2* out);
   static void get1D(CmjSampler* samplers, const int* lanes, int n, double* out);
+  // Likewise samplers[lanes[k]].getSplits2D(sets[lanes[k]], out[lanes[k]]) (getSplits1D): a vertex's
+  // several light or BSDF samples, all of them one batch.
+  static void getSplits2D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, Vec2* const* out);
+  static void getSplits1D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, double* const* out);
 
   // Passes over dimensions without computing them: a value depends on its dimension's index alone, so the
   // dimensions after them get what they would have had.
@@ -268,6 +272,16 @@ class CmjSampler {
     const uint32_t k = permute(index, g.countRange_, p.cell);
     return belowOne((k + toUnit(hash(k, uint32_t(p.cell >> 32)))) * g.perCount_);
   }
+
+  // The batch forms' stages (cmj_sampler.cpp): points index[k] of g in the dimensions of seeds[k], k < count
+  // ≤ 128, into out[k], as point2D (point1D) gives them; the draws of one dimension for many samplers; the
+  // sets of split draws for many.
+  static void points2D(const CmjPattern& g, const CmjPixel::Seeds* seeds, const uint32_t* index, int count, Vec2* out);
+  static void points1D(const CmjPattern& g, const CmjPixel::Seeds* seeds, const uint32_t* index, int count, double* out);
+  template <class T, class Points>
+  static void draw(CmjSampler* samplers, const int* lanes, int n, T* out, Points points);
+  template <class T, class Points>
+  static void drawSplits(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, T* const* out, Points points);
 
   const CmjPattern* pattern_ = nullptr;
   CmjPixel* pixel_ = nullptr;
