@@ -126,8 +126,9 @@ void expectUnbiased(const RgbImage& a, const RgbImage& b, const std::function<bo
 
 // Every configuration the wave batches differently: the environment alone (its batch lookups), with
 // emitters (lights chosen by power, per-light batches), a measured table (no batch forms), Russian
-// roulette, depths 1 (emitters only) and 8, and one, three or the default light samples at the first
-// vertex. A dimension drawn out of order in either fails this.
+// roulette, depths 1 (emitters only) and 8, one, three or the default light samples at the first vertex,
+// and a sharp lobe's several BSDF samples there, traced (a lamp emits) and resampled (none does). A
+// dimension drawn out of order in either fails this.
 TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
   const Environment sky = Environment::makeDefault();
   const Brdf cookTorrance = CookTorrance{Rgb(0.1, 0.08, 0.05), Rgb(0.8, 0.6, 0.4), 0.12, 1.6};
@@ -152,6 +153,7 @@ TEST(Integrator, TheWaveGivesTheReferencesImageBitForBit) {
       {"three light samples", cookTorrance, true, &sky, 8, 100, 3},
       {"three light samples everywhere", cookTorrance, true, &sky, 8, 100, 3, false},
       {"a sharp sphere on a diffuse floor", Brdf(CookTorrance{Rgb(0.02), Rgb(0.2), 0.0125, 1.7}), true, &sky, 8, 100},
+      {"a sharp sphere, its samples resampled", Brdf(CookTorrance{Rgb(0.02), Rgb(0.2), 0.0125, 1.7}), false, &sky, 8, 100},
   };
   const Camera camera = perspective({0, 1.5, 5}, {0, 0, 0}, 0.7);
   for (const Case& c : cases) {
@@ -264,9 +266,15 @@ TEST(LightCount, BroadLobesTakeMoreLightSamplesThanSharpOnes) {
   const Brdf sharp = CookTorrance{Rgb(0.02), Rgb(0.2), 0.0125, 1.7};  // a polished metal (steel's E2 fit)
   EXPECT_EQ(lightSamplesFor(sharp, 8), 1);
   // BSDF samples the other way round: several for the sharp lobe, one for the broad ones.
-  EXPECT_EQ(bsdfSamplesFor(sharp), kMaxBsdfSamples);
-  EXPECT_EQ(bsdfSamplesFor(Lambertian{Rgb(0.5)}), 1);
-  EXPECT_EQ(bsdfSamplesFor(CookTorrance{Rgb(0.1), Rgb(0.4), 0.3, 1.5}), 1);
+  EXPECT_EQ(bsdfSamplesFor(sharp, true), kMaxBsdfSamples);
+  EXPECT_EQ(bsdfSamplesFor(sharp, false), kTracedBsdfSamples);
+  for (const bool resampled : {true, false}) {
+    EXPECT_EQ(bsdfSamplesFor(Lambertian{Rgb(0.5)}, resampled), 1);
+    EXPECT_EQ(bsdfSamplesFor(CookTorrance{Rgb(0.1), Rgb(0.4), 0.3, 1.5}, resampled), 1);
+  }
+  // A sheet that chooses its spp gives all its panels eight where one of them is sharp.
+  EXPECT_EQ(sheetBsdfSamples(std::vector<Brdf>{Lambertian{Rgb(0.5)}, sharp}), kSheetBsdfSamples);
+  EXPECT_EQ(sheetBsdfSamples(std::vector<Brdf>{Lambertian{Rgb(0.5)}, Lambertian{Rgb(0.2)}}), 1);
   int last = 8;
   for (const double m : {0.5, 0.2, 0.1, 0.05, 0.02}) {  // a plastic: the lobe narrows, the count does not rise
     const int k = lightSamplesFor(CookTorrance{Rgb(0.1), Rgb(0.4), m, 1.5}, 8);
@@ -322,16 +330,16 @@ TEST(LightCount, AVertexsOwnCountLeavesTheImageUnbiased) {
   expectOwnCountsUnbiased(stage, environment, settings);
 }
 
-// The same for the BSDF samples of a sharp lobe (light_count.h: eight, one light sample): a polished floor
-// mirrors the lamp (the BSDF samples that hit it add its emission) under a map of bright panels (those
-// that leave the scene add the map's), rendered with its own counts and with one BSDF sample and the most
-// light samples; the two converge to the same image only if each of the eight is weighed by the counts
-// taken and by an eighth.
+// The same for the BSDF samples of a sharp lobe (light_count.h: several, one light sample): a polished
+// floor mirrors the lamp (the BSDF samples that hit it add its emission, each traced as a surface emits)
+// under a map of bright panels (those that leave the scene add the map's), rendered with its own counts
+// and with one BSDF sample and the most light samples; the two converge to the same image only if each of
+// the n is weighed by the counts taken and by 1/n.
 TEST(LightCount, ASharpLobesBsdfSamplesLeaveTheImageUnbiased) {
   const Rgb emission(10.0, 5.0, 2.0);
   LampOverFloor stage(emission);
   stage.brdfs[0] = CookTorrance{Rgb(0.02), Rgb(0.4), 0.05, 1.7};
-  ASSERT_EQ(bsdfSamplesFor(stage.brdfs[0]), kMaxBsdfSamples);
+  ASSERT_EQ(bsdfSamplesFor(stage.brdfs[0], false), kTracedBsdfSamples);
   ASSERT_EQ(lightSamplesFor(stage.brdfs[0], kMaxLightSamples), 1);
   const TempDir dir;
   writePanelsMap(dir / "panels.exr", 48, 25);
@@ -339,6 +347,25 @@ TEST(LightCount, ASharpLobesBsdfSamplesLeaveTheImageUnbiased) {
   RenderSettings settings = quiet(LampOverFloor::kSize, LampOverFloor::kSize, 256, 1);
   settings.maxDepth = 3;
   expectOwnCountsUnbiased(stage, environment, settings);  // the camera sees the lamp's mirror image
+}
+
+// Where no surface emits, the sharp lobe's further BSDF samples are resampled and only the chosen one's ray
+// traced (Paths::addOtherBsdfSamples). The plate over the floor is dark here, and a dark wall stands behind
+// it, occluders: about their mirror images' edges some of a vertex's samples see the map and some the
+// occluder, so the chosen ray's verdict stands for the others'. The image converges to the one rendered
+// with one BSDF sample and the most light samples.
+TEST(LightCount, AResampledSharpLobeLeavesTheImageUnbiased) {
+  LampOverFloor stage(Rgb(0.0));
+  stage.description.meshes.push_back(quad({-3, 0, -1}, {6, 0, 0}, {0, 1.5, 0}, 1));
+  stage.brdfs[0] = CookTorrance{Rgb(0.02), Rgb(0.4), 0.05, 1.7};
+  ASSERT_EQ(bsdfSamplesFor(stage.brdfs[0], true), kMaxBsdfSamples);
+  const TempDir dir;
+  writePanelsMap(dir / "panels.exr", 48, 25);
+  const Environment environment = Environment::load(dir / "panels.exr");
+  ASSERT_FALSE(LightSet(LightSources{stage.description, &environment, 10.0}).onSurfaces());
+  RenderSettings settings = quiet(LampOverFloor::kSize, LampOverFloor::kSize, 256, 1);
+  settings.maxDepth = 3;
+  expectOwnCountsUnbiased(stage, environment, settings);  // the camera sees the plate's mirror image
 }
 
 TEST(Integrator, TheLightChooserDrawsByPower) {

@@ -372,6 +372,7 @@ TEST(CliSheet, TargetErrorRendersUntilEveryIntervalIsThatNarrow) {
     EXPECT_LE(0.5 * (hi - lo), target * (1 + 1e-6)) << layer;
   }
   EXPECT_FALSE(attr("glossy:verdict").empty());
+  EXPECT_EQ(attr("glossy:bsdfSamples"), "1") << "every gold-paint panel is broad";
 
   // Capped by --spp; without a measured panel there is no interval to aim at: one pass.
   const RunResult capped = runGlossy({"sheet", "--material", (materialsDir() / "gold-paint.toml").string(), "--merl-dir",
@@ -386,6 +387,24 @@ TEST(CliSheet, TargetErrorRendersUntilEveryIntervalIsThatNarrow) {
                                      (tmp / "b.exr").string()});
   ASSERT_EQ(blind.status, 0) << blind.err;
   EXPECT_EQ(readImageAttribute(tmp / "b.exr", "glossy:passes"), "1");
+}
+
+// Where the run chooses the spp, a sheet with a sharp panel takes eight BSDF samples at the object (all
+// panels alike); at a fixed --spp one, as it always did.
+TEST(CliSheet, ASheetThatChoosesItsSppTakesBsdfSamplesOnSharpPanels) {
+  GLOSSY_REQUIRE_SHARED("merl/chrome.binary.xz");
+  TempDir tmp;
+  const auto sheet = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"sheet", "--material", (materialsDir() / "chrome.toml").string(), "--merl-dir",
+                                     (sharedDir() / "merl").string(), "--width", "16", "--height", "16", "-o", (tmp / name).string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const RunResult r = runGlossy(args);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return readImageAttribute(tmp / name, "glossy:bsdfSamples");
+  };
+  EXPECT_EQ(sheet("target.exr", {"--target-error", "0.05", "--spp", "32"}), "8");
+  EXPECT_EQ(sheet("time.exr", {"--time", "0.2", "--spp", "8"}), "8");
+  EXPECT_EQ(sheet("fixed.exr", {"--spp", "8"}), "1");
 }
 
 TEST(CliSheets, RendersEachMaterialOnceResumesAndShards) {

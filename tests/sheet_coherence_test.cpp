@@ -64,7 +64,7 @@ TEST(CoherentPanels, EachPanelIsItsSoloRender) {
   std::set<int> counts, bsdfCounts;
   for (const RenderScene& scene : scenes) {  // withObject: defaultBrdf is the object's
     counts.insert(lightSamplesFor(scene.defaultBrdf, settings.lightSamples));
-    bsdfCounts.insert(bsdfSamplesFor(scene.defaultBrdf));
+    bsdfCounts.insert(bsdfSamplesFor(scene.defaultBrdf, true));
   }
   EXPECT_GE(counts.size(), 2u);
   EXPECT_GE(bsdfCounts.size(), 2u);

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 
 namespace glossy {
 
@@ -68,14 +69,34 @@ inline int lightSamplesFor(const Brdf& brdf, int most) {
   return best;
 }
 
-// The BSDF samples at a first vertex of this BRDF: kMaxBsdfSamples where its light samples carry under a
-// fifth of its light (a lobe that takes one light sample), else one. On such a lobe nearly all of a pixel's
-// noise is the BSDF sample's: how much of the map's light its narrow lobe happens to catch (measured by
-// bench/direct_light_split.cpp, docs/performance.md), which more light samples cannot reduce. Eight from
-// one split set share the camera ray, the light samples and the vertex, and only the first goes on as the
-// path: each further one costs a BRDF sample, a ray and a light lookup, not a whole path. The count, like
-// the light samples', only sets the variance: MIS weighs each sample by both counts (path_vertex.h).
-inline int bsdfSamplesFor(const Brdf& brdf) { return lightCarriedShare(brdf) < 0.2 ? kMaxBsdfSamples : 1; }
-static_assert(kMaxBsdfDraws == 1 + kMaxBsdfSamples, "the draws hold a set of one and one of kMaxBsdfSamples");
+// The BSDF samples at a first vertex of this BRDF where its further samples are resampled (no surface
+// emits, so only the chosen one is traced, path_vertex.h) or traced each: kMaxBsdfSamples or
+// kTracedBsdfSamples where its light samples carry under a fifth of its light (a lobe that takes one light
+// sample), else one. On such a lobe nearly all of a pixel's noise is the BSDF sample's: how much of the
+// map's light its narrow lobe happens to catch (bench/direct_light_split.cpp, docs/performance.md), which
+// more light samples cannot reduce. The samples of one split set share the camera ray, the light samples
+// and the vertex, and only the first goes on as the path: a further one costs a BRDF sample and a light
+// lookup, and a ray if traced, not a whole path. The counts are those measured most efficient each way.
+// The count, like the light samples', only sets the variance: MIS weighs each sample by both counts.
+constexpr int kTracedBsdfSamples = 8;
+inline int bsdfSamplesFor(const Brdf& brdf, bool resampled) {
+  return lightCarriedShare(brdf) < 0.2 ? (resampled ? kMaxBsdfSamples : kTracedBsdfSamples) : 1;
+}
+
+// The BSDF samples every object vertex of a sheet takes when the sheet chooses its spp (--target-error,
+// --time): its panels must share one count to share their samples. kSheetBsdfSamples unless the light
+// samples carry at least two fifths of every panel's light; on such broad lobes the further samples cost
+// more than the noise they take away. Fewer than a render's kMaxBsdfSamples: each further sample is paid
+// by every panel, and the count and the threshold are those that reached a --target-error soonest on the
+// supplement's sheets (docs/sheets.md).
+constexpr int kSheetBsdfSamples = 8;
+inline int sheetBsdfSamples(std::span<const Brdf> panels) {
+  for (const Brdf& brdf : panels)
+    if (lightCarriedShare(brdf) < 0.4) return kSheetBsdfSamples;
+  return 1;
+}
+
+static_assert(kTracedBsdfSamples <= kMaxBsdfSamples && kSheetBsdfSamples <= kMaxBsdfSamples);
+static_assert(kMaxBsdfDraws == 1 + kMaxBsdfSamples, "the draws hold a set of one and one of up to kMaxBsdfSamples");
 
 }  // namespace glossy

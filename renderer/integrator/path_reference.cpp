@@ -61,7 +61,7 @@ Lanes Paths<N>::reflect(int depth, const Lanes& lanes, Ray* rays, Rgb* radiance)
   Lanes more;
   for (const int i : lanes)
     if (point[i].bsdfSamples > 1) more.add(i);
-  if (more.n > 0) addOtherBsdfSamples(more, radiance);
+  if (more.n > 0) addOtherBsdfSamples(depth, more, radiance);
   Lanes alive;
   for (const int i : lanes)
     if (continuePath(depth, context_.settings, point[i], bsdf_[i], draws[i], path[i], rays[i])) alive.add(i);
@@ -69,45 +69,61 @@ Lanes Paths<N>::reflect(int depth, const Lanes& lanes, Ray* rays, Rgb* radiance)
 }
 
 template <int N>
-void Paths<N>::addOtherBsdfSamples(const Lanes& lanes, Rgb* radiance) {
+void Paths<N>::addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance) {
+  // Where no ray can hit a light, what a further sample finds is the distant lights' emission if its ray
+  // leaves the scene, else nothing: resample them (below) rather than trace each. Resampling hashes its
+  // uniforms from the roulette draw, which a vertex that plays no roulette leaves unused (vertex_draws.h).
+  const bool resample = !context_.lights.onSurfaces() && depth < context_.settings.rouletteDepth;
   int most = 1;
-  for (const int i : lanes) most = std::max(most, point[i].bsdfSamples);
+  for (const int i : lanes) {
+    most = std::max(most, point[i].bsdfSamples);
+    PathState& p = otherPath_[i];  // what the samples share: their vertex and its counts
+    p.lightSamples = point[i].lightSamples;
+    p.bsdfSamples = point[i].bsdfSamples;
+    p.from = receiver(point[i]);
+    from_[i] = p.from;
+    resampled_[i] = Resampled(draws[i].roulette);
+    ownSet_[i] = setOffset(draws[i].bsdfSets, point[i].bsdfSamples);
+  }
   for (int j = 1; j < most; ++j) {
     Lanes sampled;
     for (const int i : lanes)
-      if (j < point[i].bsdfSamples) {
-        takeBsdfDraw(draws[i], point[i].bsdfSamples, j, otherDraws_[i]);
+      if (j < point[i].bsdfSamples) {  // takeBsdfDraw's j-th, from a set of more than one
+        otherDraws_[i].lobe = draws[i].lobes[ownSet_[i] + j];
+        otherDraws_[i].bsdf = draws[i].bsdfs[ownSet_[i] + j];
         sampled.add(i);
       }
     sampleBsdfs<N>(context_.settings, sampled, point, otherDraws_, other_);
-    Lanes traced;
-    bool active[N] = {};
+    Lanes valid;
     for (const int i : sampled) {
       const BrdfSample& s = other_[i];
       if (!s.valid()) continue;
-      const Vec3 wi = point[i].frame.toWorld(s.L);
-      if (glm::dot(wi, point[i].ng) <= 0.0) continue;
-      otherRays_[i] = spawnRay(point[i].position, point[i].ng, point[i].margin, wi);
-      PathState& p = otherPath_[i];
-      p.throughput = path[i].throughput * s.weight;
-      p.bsdfPdf = s.pdf;
-      p.lightSamples = point[i].lightSamples;
-      p.bsdfSamples = point[i].bsdfSamples;
-      p.from = receiver(point[i]);
+      direction_[i] = point[i].frame.toWorld(s.L);
+      if (glm::dot(direction_[i], point[i].ng) <= 0.0) continue;
+      otherPath_[i].throughput = path[i].throughput * s.weight;
+      otherPath_[i].bsdfPdf = s.pdf;
+      valid.add(i);
+    }
+    if (resample) {
+      for (const int i : valid) candidate_[i] = Rgb(0.0);
+      addDistantEmission(valid, otherPath_, candidate_);
+      for (const int i : valid) choose(i, j);
+      continue;
+    }
+    bool active[N] = {};
+    for (const int i : valid) {
+      otherRays_[i] = spawnRay(point[i].position, point[i].ng, point[i].margin, direction_[i]);
       active[i] = true;
-      traced.add(i);
     }
     if constexpr (N % kPacketSize == 0) {
       for (int p = 0; p < N; p += kPacketSize) context_.scene.bvh->intersect(active + p, otherRays_ + p, otherHit_ + p, otherFound_ + p);
     } else {
-      for (const int i : traced) otherFound_[i] = context_.scene.bvh->intersect(otherRays_[i], otherHit_[i]);
+      for (const int i : valid) otherFound_[i] = context_.scene.bvh->intersect(otherRays_[i], otherHit_[i]);
     }
     Lanes escaped;
-    for (const int i : traced) {
+    for (const int i : valid) {
       if (!otherFound_[i]) {
         escaped.add(i);
-        direction_[i] = otherRays_[i].dir;
-        from_[i] = otherPath_[i].from;
       } else if (const ChosenLight light = context_.lights.at(otherHit_[i])) {
         double pdf = 0.0;
         const Rgb emitted = light.light->emitted(otherHit_[i], otherPath_[i].from, pdf);
@@ -115,6 +131,55 @@ void Paths<N>::addOtherBsdfSamples(const Lanes& lanes, Rgb* radiance) {
       }
     }
     addDistantEmission(escaped, otherPath_, radiance);
+  }
+  if (!resample) return;
+  // Each channel's chosen sample's ray, traced, once where channels chose the same sample: the channel's
+  // emission, Σ c over its probability c_j / Σ c of being chosen times c_j, arrives if the ray leaves the
+  // scene. Where nothing blocks them, exactly the samples' sum.
+  bool visible[N][3] = {};
+  for (int c = 0; c < 3; ++c) {
+    Lanes traced;
+    bool active[N] = {}, blocked[N] = {};
+    for (const int i : lanes) {
+      const Resampled& r = resampled_[i];
+      if (!(r.sum[c] > 0.0)) continue;
+      const int same = c > 0 && r.chosen[c - 1] == r.chosen[c] ? c - 1 : c > 1 && r.chosen[0] == r.chosen[c] ? 0 : -1;
+      if (same >= 0) {
+        visible[i][c] = visible[i][same];
+        continue;
+      }
+      otherRays_[i] = spawnRay(point[i].position, point[i].ng, point[i].margin, r.direction[c]);
+      active[i] = true;
+      traced.add(i);
+    }
+    if constexpr (N % kPacketSize == 0) {
+      for (int p = 0; p < N; p += kPacketSize) context_.scene.bvh->occluded(active + p, otherRays_ + p, blocked + p);
+    } else {
+      for (const int i : traced) blocked[i] = context_.scene.bvh->occluded(otherRays_[i]);
+    }
+    for (const int i : traced) visible[i][c] = !blocked[i];
+  }
+  for (const int i : lanes)
+    for (int c = 0; c < 3; ++c)
+      if (visible[i][c]) radiance[i][c] += resampled_[i].sum[c];
+}
+
+template <int N>
+void Paths<N>::choose(int i, int j) {
+  // Weighted reservoir sampling in each channel: candidate j replaces the one kept with probability
+  // c / (the channel's sum so far), so that in the end each is kept with c_j / Σ c. The candidate's
+  // uniform, hashed from the vertex's draw and j, is the same in every channel, so where their candidates
+  // are in proportion the channels keep the same one.
+  Resampled& r = resampled_[i];
+  const double u = cmj_detail::toUnit(cmj_detail::hash(r.seed, uint32_t(j)));
+  for (int c = 0; c < 3; ++c) {
+    const double w = candidate_[i][c];
+    if (!(w > 0.0)) continue;
+    r.sum[c] += w;
+    if (u * r.sum[c] < w) {
+      r.chosen[c] = j;
+      r.direction[c] = direction_[i];
+    }
   }
 }
 

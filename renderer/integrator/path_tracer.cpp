@@ -106,14 +106,20 @@ class TileRenderer {
 
 // The panel's own light and BSDF samples per material at a first vertex (light_count.h), each drawn as
 // their one set.
-LightCounts lightCounts(const RenderScene& scene, const RenderSettings& settings) {
+LightCounts lightCounts(const RenderScene& scene, const RenderSettings& settings, const LightSet& lights) {
   const int most = std::clamp(settings.lightSamples, 1, kMaxLightSamples);
+  // Fixed counts give settings.bsdfSamples to a sheet's object (its materials), or everywhere outside sheets.
+  std::vector<bool> object(scene.brdfs.size() + 1, scene.objectMeshes.empty());
+  for (size_t mesh = 0; mesh < scene.objectMeshes.size(); ++mesh)
+    if (scene.objectMeshes[mesh]) object[size_t(scene.description->meshes[mesh].material + 1)] = true;
   LightCounts counts;
   for (size_t m = 0; m <= scene.brdfs.size(); ++m) {
     const Brdf& brdf = m == 0 ? scene.defaultBrdf : scene.brdfs[m - 1];
     counts.taken.push_back(settings.lightSamplesPerBrdf ? lightSamplesFor(brdf, most) : most);
     counts.drawn.push_back(1u << (counts.taken.back() - 1));
-    counts.bsdf.push_back(settings.lightSamplesPerBrdf ? bsdfSamplesFor(brdf) : 1);
+    counts.bsdf.push_back(settings.lightSamplesPerBrdf ? bsdfSamplesFor(brdf, !lights.onSurfaces())
+                          : object[m]                  ? std::clamp(settings.bsdfSamples, 1, kMaxBsdfSamples)
+                                                       : 1);
     counts.bsdfDrawn.push_back(1u << (counts.bsdf.back() - 1));
   }
   return counts;
@@ -137,7 +143,7 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
   std::vector<RgbImage> images(panels.size(), RgbImage(settings.width, settings.height));
   const LightSet lights(LightSources{*panels.front().description, panels.front().environment, panels.front().bvh->boundsRadius()});
   std::vector<PathContext> contexts;
-  for (const RenderScene& panel : panels) contexts.push_back({panel, settings, lights, lightCounts(panel, settings)});
+  for (const RenderScene& panel : panels) contexts.push_back({panel, settings, lights, lightCounts(panel, settings, lights)});
   for (size_t m = 0; m < contexts[0].counts.drawn.size(); ++m) {  // every panel draws the sets all of them take
     uint32_t drawn = 0, bsdfDrawn = 0;
     for (const PathContext& c : contexts) drawn |= c.counts.drawn[m], bsdfDrawn |= c.counts.bsdfDrawn[m];

@@ -22,8 +22,8 @@ namespace glossy {
 // samples a first vertex takes (light_count.h: a sharp lobe's).
 constexpr int kMaxLightSamples = 8;
 constexpr int kMaxLightDraws = 1 + 2 + 4 + 8;
-constexpr int kMaxBsdfSamples = 8;
-constexpr int kMaxBsdfDraws = 1 + 8;  // the sets a sheet's panels may take (light_count.h: 1 or 8)
+constexpr int kMaxBsdfSamples = 24;
+constexpr int kMaxBsdfDraws = 1 + 24;  // the sets a sheet's panels may take (light_count.h: 1 and one more)
 
 struct RenderSettings {
   int width = 512, height = 512;
@@ -33,9 +33,11 @@ struct RenderSettings {
   int rouletteDepth = 4;  // Russian roulette from this depth on
   // Light samples at a camera path's first vertex (path_vertex.h), at most, 1 … kMaxLightSamples; one at
   // the others. With lightSamplesPerBrdf each BRDF takes its own count up to this, and its own count of
-  // BSDF samples there (light_count.h), else every first vertex takes this many and one BSDF sample.
+  // BSDF samples there (light_count.h), else every first vertex takes this many, and bsdfSamples BSDF
+  // samples (1 … kMaxBsdfSamples) where it is on a sheet's object (everywhere outside sheets), else one.
   int lightSamples = 4;
   bool lightSamplesPerBrdf = true;
+  int bsdfSamples = 1;
   uint32_t seed = 0;
   int threads = 0;        // 0 = all cores
   bool progress = true;

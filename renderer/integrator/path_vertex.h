@@ -95,11 +95,19 @@ class Paths {
   // The vertices' BRDFs act: the direct light, then their samples continue the paths (rays). The lanes whose
   // paths go on.
   Lanes reflect(int depth, const Lanes& lanes, Ray* rays, Rgb* radiance);
-  // The lanes' vertices' BSDF samples after the first (ShadingPoint::bsdfSamples): each traced to what it
-  // finds, adding its emission (a light hit, the distant lights when it leaves the scene); none continues.
-  void addOtherBsdfSamples(const Lanes& lanes, Rgb* radiance);
+  // The lanes' vertices' BSDF samples after the first (ShadingPoint::bsdfSamples), none of which continues:
+  // each adds the emission it finds (a light hit, the distant lights when it leaves the scene). Each is
+  // traced to what it finds; where no ray can hit a light, one of them is chosen, in each colour channel,
+  // in proportion to the emission it would find there if nothing were in the way (resampled importance
+  // sampling, Talbot et al. 2005), and only its ray is traced: that emission, over its probability of
+  // being chosen, if the ray leaves the scene. Unbiased, as the choice only weighs the sum's terms; where
+  // nothing blocks the samples, as on a convex object under a map, exactly what tracing them all gives,
+  // colour included, for one ray (more only where the channels chose different samples).
+  void addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance);
+  // Offers lane i's resampling its j-th sample's candidate_, found along direction_[i].
+  void choose(int i, int j);
   // The distant lights' emission for the escaped lanes, whose rays' directions and vertices are in
-  // direction_ and from_, weighted as paths[i]'s (addEmission).
+  // direction_ and from_, weighted as paths[i]'s (addEmission), added to radiance[i].
   void addDistantEmission(const Lanes& escaped, const PathState* paths, Rgb* radiance);
 
   // Each lane's path, its last hit, and its vertex there before the BRDF acts.
@@ -112,19 +120,33 @@ class Paths {
  private:
   const PathContext& context_;
   bool found_[N];
-  Vec3 direction_[N];  // of the rays that left the scene
+  Vec3 direction_[N];  // of the rays that left the scene (addOtherBsdfSamples: of its samples)
   Receiver from_[N];   // their vertices
   Rgb arriving_[N], throughput_[N];
   double pdf_[N];
   DirectLight<N> direct_;
   BrdfSample bsdf_[N];
-  // addOtherBsdfSamples' scratch: each lane's sample, as the draws, the ray and hit and the path it makes.
+  // addOtherBsdfSamples' scratch: where each lane's own set starts among its BSDF draws (setOffset); its
+  // sample, as the draws, the ray and hit and the path it makes (its direction in direction_).
+  int ownSet_[N];
   VertexDraws otherDraws_[N];
   BrdfSample other_[N];
   Ray otherRays_[N];
   Hit otherHit_[N];
   bool otherFound_[N];
   PathState otherPath_[N];
+  // The resampling's: a candidate's emission; the seed of the candidates' uniforms, and per channel the
+  // candidates' sum and the sample kept with its direction.
+  struct Resampled {
+    Resampled() = default;
+    explicit Resampled(double u) : seed(uint32_t(u * 0x1p32)) {}
+    uint32_t seed = 0;
+    double sum[3] = {};
+    int chosen[3] = {-1, -1, -1};
+    Vec3 direction[3];
+  };
+  Rgb candidate_[N];
+  Resampled resampled_[N];
 };
 
 }  // namespace glossy

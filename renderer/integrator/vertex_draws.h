@@ -1,9 +1,9 @@
 // What a vertex takes of the sampler. The sampler dimensions of a path: the camera's film position (one 2D
 // draw), then at every vertex that reflects, VertexDraws's slots in their declared order. Vertex k always
 // owns the same kDimensions dimensions, so each stays stratified across the pixel's samples. A dimension
-// the vertex cannot use (the light choice when one light has all the power, roulette before rouletteDepth)
-// is skipped, not computed: a value depends only on its dimension's index, so skipping gives every other
-// dimension what drawing would.
+// the vertex cannot use (the light choice when one light has all the power, roulette before rouletteDepth
+// where no resampling takes its value) is skipped, not computed: a value depends only on its dimension's
+// index, so skipping gives every other dimension what drawing would.
 //
 // The first vertex of a camera path takes K light samples, K set by its BRDF (light_count.h), drawn from
 // the pixel's pattern of spp × K points (CmjSampler::getSplits2D), and deeper vertices one: what the first
@@ -39,7 +39,9 @@ struct VertexDraws {
   uint32_t bsdfSets = 1;
   double lobes[kMaxBsdfDraws] = {};
   Vec2 bsdfs[kMaxBsdfDraws] = {};
-  double roulette = 0.0;     // whether the path survives Russian roulette
+  // Whether the path survives Russian roulette; at a vertex that takes several BSDF samples, which plays no
+  // roulette (a first vertex, before RenderSettings::rouletteDepth), which of them is traced (resampling).
+  double roulette = 0.0;
 };
 
 // Where the set of `count` samples (light or BSDF) starts among a vertex's draws of `sets`: after the
@@ -76,27 +78,36 @@ struct DrawsUsed {
 inline void drawVertices(CmjSampler* samplers, const Lanes& lanes, DrawsUsed used, VertexDraws* out) {
   double x[kWaveSize];
   Vec2 xy[kWaveSize];
+  uint32_t sets[kWaveSize];
+  Vec2* to2D[kWaveSize];
+  double* to1D[kWaveSize];
   Lanes single, split, singleBsdf, splitBsdf;
   for (const int i : lanes) (out[i].lightSets == 1u ? single : split).add(i);
   for (const int i : lanes) (out[i].bsdfSets == 1u ? singleBsdf : splitBsdf).add(i);
   for (int slot = 0; slot < VertexDraws::kDimensions; ++slot) {
-    if ((slot == VertexDraws::kLightChoice && !used.lightChoice) || (slot == VertexDraws::kRoulette && !used.roulette)) {
-      // Left as it was: the choice has one outcome (one light has all the power), roulette is not played.
+    if (slot == VertexDraws::kRoulette && !used.roulette) {
+      // Roulette is not played: the draw is the resampling's choice where the vertex takes several BSDF
+      // samples (Paths::addOtherBsdfSamples), else left as it was.
+      CmjSampler::get1D(samplers, splitBsdf.lane, splitBsdf.n, x);
+      for (const int i : splitBsdf) out[i].roulette = x[i];
+      for (const int i : singleBsdf) samplers[i].skip(1);
+    } else if (slot == VertexDraws::kLightChoice && !used.lightChoice) {
+      // Left as it was: the choice has one outcome (one light has all the power).
       for (const int i : lanes) samplers[i].skip(1);
     } else {
       const bool light = slot == VertexDraws::kLightChoice || slot == VertexDraws::kLight;
       const bool bsdf = slot == VertexDraws::kLobe || slot == VertexDraws::kBsdf;
       const Lanes& batch = light ? single : bsdf ? singleBsdf : lanes;
-      if (bsdf)
-        for (const int i : splitBsdf) {
-          if (slot == VertexDraws::kBsdf) samplers[i].getSplits2D(out[i].bsdfSets, out[i].bsdfs);
-          else samplers[i].getSplits1D(out[i].bsdfSets, out[i].lobes);
+      if (bsdf || light) {
+        const Lanes& splits = bsdf ? splitBsdf : split;
+        for (const int i : splits) {
+          sets[i] = bsdf ? out[i].bsdfSets : out[i].lightSets;
+          to2D[i] = bsdf ? out[i].bsdfs : out[i].light;
+          to1D[i] = bsdf ? out[i].lobes : out[i].lightChoice;
         }
-      if (light)
-        for (const int i : split) {
-          if (slot == VertexDraws::kLight) samplers[i].getSplits2D(out[i].lightSets, out[i].light);
-          else samplers[i].getSplits1D(out[i].lightSets, out[i].lightChoice);
-        }
+        if (slot == VertexDraws::kBsdf || slot == VertexDraws::kLight) CmjSampler::getSplits2D(samplers, splits.lane, splits.n, sets, to2D);
+        else CmjSampler::getSplits1D(samplers, splits.lane, splits.n, sets, to1D);
+      }
       const bool is2D = slot == VertexDraws::kLight || slot == VertexDraws::kBsdf;
       if (is2D) CmjSampler::get2D(samplers, batch.lane, batch.n, xy); else CmjSampler::get1D(samplers, batch.lane, batch.n, x);
       for (const int i : batch) {

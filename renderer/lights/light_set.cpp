@@ -32,6 +32,7 @@ LightSet::LightSet(const LightSources& sources) {
       std::vector<int>& triangles = surface_[size_t(f.mesh)];
       if (triangles.size() <= f.triangle) triangles.resize(size_t(f.triangle) + 1, -1);
       triangles[f.triangle] = int(lights_.size());
+      onSurfaces_ = true;
     }
     const double power = f.light->power();
     powers.push_back(std::isfinite(power) && power > 0.0 ? power : 0.0);

@@ -37,6 +37,8 @@ class LightSet {
   // The surface light covering a hit's triangle, with its probability of being chosen; none if the
   // triangle emits nothing.
   ChosenLight at(const Hit& hit) const;
+  // Whether a ray can hit a light: some surface emits.
+  bool onSurfaces() const { return onSurfaces_; }
   // The lights a ray that leaves the scene sees, with their probabilities.
   std::span<const ChosenLight> distant() const { return distant_; }
 
@@ -45,6 +47,7 @@ class LightSet {
   std::vector<ChosenLight> chosen_;  // each light with its probability
   Distribution1D power_;
   int lightsWithPower_ = 0;
+  bool onSurfaces_ = false;
   std::vector<ChosenLight> distant_;
   std::vector<std::vector<int>> surface_;  // [mesh][triangle]: index into lights_, or −1
 };

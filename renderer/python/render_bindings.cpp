@@ -297,6 +297,8 @@ with its interval (flip, flip_ci). A figure the sheet cannot give is None.
       .def_property_readonly("material", [](const PySheet& x) { return x.made.material.name; })
       .def_property_readonly("spp", [](const PySheet& x) { return x.made.sheet.spp; })
       .def_property_readonly("passes", [](const PySheet& x) { return x.made.sheet.passes; })
+      .def_property_readonly("bsdf_samples", [](const PySheet& x) { return x.made.sheet.bsdfSamples; },
+                             "BSDF samples at the object's vertices: 8 where the passes chose the spp and a panel is sharp, else 1.")
       .def_property_readonly("seconds", [](const PySheet& x) { return x.made.seconds; })
       .def_property_readonly("flip_noise_floor", [](const PySheet& x) {
              return optionalNumber(x.made.sheet.flipNoiseFloor >= 0.0, x.made.sheet.flipNoiseFloor);

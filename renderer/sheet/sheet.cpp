@@ -5,6 +5,7 @@
 #include "renderer/camera/camera_rays.h"
 #include "renderer/image/colour_maps.h"
 #include "renderer/image/flip.h"
+#include "renderer/integrator/light_count.h"
 #include "renderer/scene/material_binding.h"
 
 #include <OpenImageIO/imagebuf.h>
@@ -26,6 +27,8 @@ namespace {
 // say: where the noise swamps the error, a seed that misses the rare bright paths underestimates both the
 // error and its spread (tests/sweep/sheet_coverage_sweep_test.cpp, docs/sheets.md).
 constexpr double kNoiseDominates = 0.8;
+// From this many spp the intervals held whatever the noise's share (the coverage sweep's lowest count).
+constexpr int kTrustedSpp = 64;
 
 // The largest share of noise in a model's plain figure's square: 1 − r*² / noisy².
 double noiseShare(const std::vector<PanelFigures>& figures) {
@@ -53,9 +56,12 @@ class PassPlan {
       // No interval to refine (no measured panel, or it is black over the object): nothing to aim at.
       if (!std::isfinite(widest) || (widest <= s_.targetError && !noisy) || done >= cap) return 0;
       // Half-widths shrink as 1/√samples: aim a little past the estimate, at most quadrupling; while noise
-      // dominates, a narrow interval is not yet to be trusted, so double.
-      const double ratio = std::max(widest / s_.targetError, noisy ? std::sqrt(2.0) : 0.0);
-      const double wanted = std::min(4.0 * done, std::ceil(1.1 * done * ratio * ratio));
+      // dominates, a narrow interval is not yet to be trusted: double, but no further than the spp from
+      // which it is.
+      const double ratio = widest / s_.targetError;
+      double wanted = std::ceil(1.1 * done * ratio * ratio);
+      if (noisy) wanted = std::max(wanted, std::min(std::ceil(2.2 * done), std::ceil(double(kTrustedSpp) / replicates_)));
+      wanted = std::min(4.0 * done, wanted);
       int n = std::clamp(int(wanted) - done, 1, cap - done);
       if (budget_ > 0.0) {
         const double perSample = lastPassSeconds / std::max(1, lastPass_);
@@ -184,6 +190,7 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
   // Each panel with a BRDF becomes a scene that differs from the others only on the object.
   std::vector<RenderScene> scenes;
   std::vector<size_t> rendered;  // the panel of each scene
+  std::vector<Brdf> brdfs;       // its object's
   for (const SheetPanel& panel : settings.panels) {
     PanelRender r;
     r.panel = panel;
@@ -203,12 +210,17 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     r.image = RgbImage(w, h);
     if (brdf) {
       r.empty = false;
+      brdfs.push_back(*brdf);
       scenes.push_back(scene.withObject(*brdf));
       rendered.push_back(sheet.panels.size());
     }
     sheet.panels.push_back(std::move(r));
   }
 
+  // Where the run chooses the spp, the object's vertices take the BSDF samples that reach a given noise
+  // soonest; at a fixed spp the settings' (one unless the caller asks), so that a sheet takes the time that
+  // spp always took.
+  sheet.bsdfSamples = settings.targetError > 0.0 || settings.secondsPerPanel > 0.0 ? sheetBsdfSamples(brdfs) : settings.bsdfSamples;
   // The passes: each renders every replicate, each replicate its own pattern (a pass's first sample index,
   // unique per replicate and pass, seeds it), all panels of a replicate together.
   PassPlan plan(settings, int(scenes.size()));
@@ -221,7 +233,7 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
   Comparison figures;
   // Noise dominates below 64 spp (where the intervals were shown to hold): a model that matches the measured
   // panel keeps a noise share near 1 at any spp, which must not keep the passes going for ever.
-  const auto noisy = [&] { return sheet.replicates * done < 64 && noiseShare(figures.panels) > kNoiseDominates; };
+  const auto noisy = [&] { return sheet.replicates * done < kTrustedSpp && noiseShare(figures.panels) > kNoiseDominates; };
   const auto compare = [&] {
     std::vector<std::vector<RgbImage>> analytic;
     const PanelRender* m = sheet.measured();
@@ -238,7 +250,7 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     const auto passStart = std::chrono::steady_clock::now();
     for (int j = 0; j < sheet.replicates; ++j) {
       RenderSettings r = settings;
-      r.spp = n, r.firstSample = sheet.replicates * done + j * n;
+      r.spp = n, r.firstSample = sheet.replicates * done + j * n, r.bsdfSamples = sheet.bsdfSamples;
       r.progress = settings.progress && settings.secondsPerPanel <= 0.0 && settings.targetError <= 0.0;
       RenderStats stats;
       const std::vector<RgbImage> images = renderPanels(scenes, *scene.camera, r, stats);
@@ -288,6 +300,7 @@ Sheet renderSheet(const SheetScene& scene, const MaterialFile& material, std::sh
     for (int j = 0; j < sheet.replicates; ++j) {
       RenderSettings r = settings;
       r.seed = noiseFloorSeed(settings.seed), r.spp = done, r.firstSample = j * done, r.progress = false;
+      r.bsdfSamples = sheet.bsdfSamples;
       r.pixels = &sheet.objectMask;
       RenderStats stats;
       floor.replicates.push_back(std::move(renderPanels(alone, *scene.camera, r, stats).front()));
@@ -434,6 +447,7 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
   metadata.push_back({"glossy:verdict", verdictText(sheet)});
   metadata.push_back({"glossy:replicates", sheet.replicates});
   metadata.push_back({"glossy:passes", sheet.passes});
+  metadata.push_back({"glossy:bsdfSamples", sheet.bsdfSamples});
   metadata.push_back({"glossy:objectShare", float(sheet.objectShare)});
   writeLayeredExr(path, layers, metadata, type);
 }

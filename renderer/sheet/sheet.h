@@ -94,6 +94,7 @@ struct Sheet {
   int spp = 0;                      // per pixel, every panel alike
   int replicates = 0;
   int passes = 0;
+  int bsdfSamples = 1;              // at the object's vertices (light_count.h, sheetBsdfSamples)
   double seconds = 0.0;             // rendering all panels
   uint64_t droppedSamples = 0;      // non-finite samples, over all panels
   double objectShare = 0.0;         // of the paths: reached the object, where the panels part ways

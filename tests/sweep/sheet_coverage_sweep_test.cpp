@@ -7,7 +7,9 @@
 //
 // The cases are those of docs/sheets.md's table "Where the intervals hold" (bench/sheet_coverage prints the
 // same figures from the same renders, cached): blue-acrylic and chrome, and two materials of other kinds,
-// gold-paint and brass (the last from its Neural-BRDF network), at 64², 128² and 256², 16 and 64 spp. More
+// gold-paint and brass (the last from its Neural-BRDF network), at 64², 128² and 256², 16 and 64 spp; and
+// blue-acrylic and chrome with eight BSDF samples at the object, as a sheet that chooses its spp takes
+// them (light_count.h, sheetBsdfSamples), which the table's figures do not include. More
 // seeds where a seed is cheap: at 40 seeds a panel whose intervals cover 95 % of the time shows 85 % or
 // less once in 20 (binomial), at 200 once in 10⁵. One thread, so that the renders are the bench's.
 #include "materials/merl/merl_table.h"
@@ -29,10 +31,12 @@ struct Stage {
   SheetScene scene = makeSheetScene(description, bvh, environment, description.cameras.front());
 };
 
-Sheet renderAt(const Stage& stage, const MaterialFile& m, std::shared_ptr<const MerlTable> table, int size, int spp, uint32_t seed) {
+Sheet renderAt(const Stage& stage, const MaterialFile& m, std::shared_ptr<const MerlTable> table, int size, int spp, uint32_t seed,
+               int bsdfSamples) {
   SheetSettings s;
   s.width = s.height = size;
   s.spp = spp;
+  s.bsdfSamples = bsdfSamples;
   s.seed = seed;
   s.threads = 1;  // bench/sheet_coverage's renders, and so docs/sheets.md's figures, exactly
   s.progress = false;
@@ -48,16 +52,20 @@ struct Moments {
 };
 
 // The converged sheet (seed 1000) has convergedSpp samples per pixel, so that its own noise is at most a
-// quarter of a 64-spp seed's σ: bench/sheet_coverage's references, docs/sheets.md.
+// quarter of a 64-spp seed's σ: bench/sheet_coverage's references, docs/sheets.md. bsdfSamples: at the
+// object's vertices, as a sheet that chooses its spp may take them (light_count.h, sheetBsdfSamples).
 struct Case {
   const char* material;
-  int size, spp, seeds, convergedSpp;
+  int size, spp, seeds, convergedSpp, bsdfSamples = 1;
 };
 
-void PrintTo(const Case& c, std::ostream* os) { *os << c.material << ' ' << c.size << "² " << c.spp << " spp, " << c.seeds << " seeds"; }
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.material << ' ' << c.size << "² " << c.spp << " spp, BSDF samples " << c.bsdfSamples << ", " << c.seeds << " seeds";
+}
 
 std::string name(const ::testing::TestParamInfo<Case>& info) {
   std::string n = formatted("%s_%d_%dspp", info.param.material, info.param.size, info.param.spp);
+  if (info.param.bsdfSamples > 1) n += formatted("_%dbsdf", info.param.bsdfSamples);
   for (char& c : n)
     if (c == '-') c = '_';
   return n;
@@ -73,14 +81,14 @@ TEST_P(SheetIntervals, CoverTheConvergedValues) {
   const auto measured = std::make_shared<const MerlTable>(
       table->extension() == ".nbrdf" ? NeuralBrdf::load(*table).tabulate() : MerlTable::load(*table));
   const Stage stage;
-  const Sheet converged = renderAt(stage, m, measured, c.size, c.convergedSpp, 1000);
+  const Sheet converged = renderAt(stage, m, measured, c.size, c.convergedSpp, 1000, c.bsdfSamples);
   const size_t n = converged.panels.size();
   std::vector<int> rmseCovered(n), ratioCovered(n), flipCovered(n);
   std::vector<Moments> rmse(n), rmseSigma(n), flip(n);
   std::vector<std::vector<Interval>> flipCis(n);
   int named = 0, wrong = 0;
   for (uint32_t seed = 1; seed <= uint32_t(c.seeds); ++seed) {
-    const Sheet sheet = renderAt(stage, m, measured, c.size, c.spp, seed);
+    const Sheet sheet = renderAt(stage, m, measured, c.size, c.spp, seed, c.bsdfSamples);
     for (size_t k = 0; k < n; ++k) {
       const PanelFigures& f = sheet.panels[k].figures;
       const PanelFigures& conv = converged.panels[k].figures;
@@ -123,7 +131,8 @@ INSTANTIATE_TEST_SUITE_P(SheetFigures, SheetIntervals,
                                            Case{"gold-paint", 128, 64, 100, 1024},
                                            Case{"blue-acrylic", 256, 16, 80, 1024}, Case{"blue-acrylic", 256, 64, 40, 1024},
                                            Case{"chrome", 256, 16, 80, 1024}, Case{"chrome", 256, 64, 40, 1024},
-                                           Case{"gold-paint", 256, 16, 80, 1024}),
+                                           Case{"gold-paint", 256, 16, 80, 1024},
+                                           Case{"blue-acrylic", 64, 16, 200, 4096, 8}, Case{"chrome", 64, 16, 200, 4096, 8}),
                          name);
 
 }  // namespace
