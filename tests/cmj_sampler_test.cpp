@@ -104,8 +104,8 @@ TEST(CmjSampler, SplitDrawsOfAPixelAreStratifiedTogether) {
         plain.skip(2);
         Vec2 out[8];
         double line[8];
-        s.getSplit2D(out);
-        s.getSplit1D(line);
+        s.getSplits2D(1u << (splits - 1), out);
+        s.getSplits1D(1u << (splits - 1), line);
         if (splits == 1) {
           ASSERT_EQ(out[0], plain.get2D());
           ASSERT_EQ(line[0], plain.get1D());

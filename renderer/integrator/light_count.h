@@ -97,6 +97,5 @@ inline int sheetBsdfSamples(std::span<const Brdf> panels) {
 }
 
 static_assert(kTracedBsdfSamples <= kMaxBsdfSamples && kSheetBsdfSamples <= kMaxBsdfSamples);
-static_assert(kMaxBsdfDraws == 1 + kMaxBsdfSamples, "the draws hold a set of one and one of up to kMaxBsdfSamples");
 
 }  // namespace glossy

@@ -56,7 +56,10 @@ Lanes Paths<N>::reflect(int depth, const Lanes& lanes, Ray* rays, Rgb* radiance)
   // The direct light, weighed by the BRDFs; then the BSDF samples, which continue the paths.
   for (const int i : lanes) throughput_[i] = path[i].throughput;
   direct_.add(context_.settings, lanes, point, light, throughput_, radiance);
-  for (const int i : lanes) takeBsdfDraw(draws[i], point[i].bsdfSamples, 0, draws[i]);
+  for (const int i : lanes) {
+    ownSet_[i] = setOffset(draws[i].bsdfSets, point[i].bsdfSamples);
+    takeBsdfDraw(draws[i], ownSet_[i], 0, draws[i]);
+  }
   sampleBsdfs<N>(context_.settings, lanes, point, draws, bsdf_);
   Lanes more;
   for (const int i : lanes)
@@ -83,14 +86,12 @@ void Paths<N>::addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance)
     p.from = receiver(point[i]);
     from_[i] = p.from;
     resampled_[i] = Resampled(draws[i].roulette);
-    ownSet_[i] = setOffset(draws[i].bsdfSets, point[i].bsdfSamples);
   }
   for (int j = 1; j < most; ++j) {
     Lanes sampled;
     for (const int i : lanes)
-      if (j < point[i].bsdfSamples) {  // takeBsdfDraw's j-th, from a set of more than one
-        otherDraws_[i].lobe = draws[i].lobes[ownSet_[i] + j];
-        otherDraws_[i].bsdf = draws[i].bsdfs[ownSet_[i] + j];
+      if (j < point[i].bsdfSamples) {
+        takeBsdfDraw(draws[i], ownSet_[i], j, otherDraws_[i]);
         sampled.add(i);
       }
     sampleBsdfs<N>(context_.settings, sampled, point, otherDraws_, other_);

@@ -23,7 +23,7 @@ namespace glossy {
 constexpr int kMaxLightSamples = 8;
 constexpr int kMaxLightDraws = 1 + 2 + 4 + 8;
 constexpr int kMaxBsdfSamples = 24;
-constexpr int kMaxBsdfDraws = 1 + 24;  // the sets a sheet's panels may take (light_count.h: 1 and one more)
+constexpr int kMaxBsdfDraws = 1 + kMaxBsdfSamples;  // the sets a sheet's panels may take: 1 and one more
 
 struct RenderSettings {
   int width = 512, height = 512;

@@ -126,9 +126,9 @@ class Paths {
   double pdf_[N];
   DirectLight<N> direct_;
   BrdfSample bsdf_[N];
-  // addOtherBsdfSamples' scratch: where each lane's own set starts among its BSDF draws (setOffset); its
-  // sample, as the draws, the ray and hit and the path it makes (its direction in direction_).
-  int ownSet_[N];
+  int ownSet_[N];  // where each lane's own set starts among its BSDF draws (setOffset)
+  // addOtherBsdfSamples' scratch: each lane's sample, as the draws, the ray and hit and the path it makes
+  // (its direction in direction_).
   VertexDraws otherDraws_[N];
   BrdfSample other_[N];
   Ray otherRays_[N];

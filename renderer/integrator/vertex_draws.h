@@ -53,13 +53,13 @@ inline int setOffset(uint32_t sets, int count) {
 }
 inline int setDraws(uint32_t sets) { return setOffset(sets, std::max(kMaxLightSamples, kMaxBsdfSamples) + 1); }
 
-// The j-th of a vertex's own `count` BSDF samples in d, as out's lobe and bsdf (out may be d).
-inline void takeBsdfDraw(const VertexDraws& d, int count, int j, VertexDraws& out) {
+// The j-th of a vertex's own BSDF samples in d, as out's lobe and bsdf (out may be d); its own set starts
+// at `first` among the sets drawn (setOffset of its count), unless it drew a set of one.
+inline void takeBsdfDraw(const VertexDraws& d, int first, int j, VertexDraws& out) {
   if (d.bsdfSets == 1u) {
     out.lobe = d.lobe, out.bsdf = d.bsdf;
   } else {
-    const int k = setOffset(d.bsdfSets, count) + j;
-    out.lobe = d.lobes[k], out.bsdf = d.bsdfs[k];
+    out.lobe = d.lobes[first + j], out.bsdf = d.bsdfs[first + j];
   }
 }
 

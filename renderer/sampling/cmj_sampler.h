@@ -93,7 +93,7 @@ inline double belowOne(double x) { return x < 1.0 ? x : 0x1.fffffffffffffp-1; }
 class CmjPattern {
  public:
   // splits > 1: the pattern also holds one of count · k points for each k ≤ splits, from which a sample
-  // may take k draws of one dimension (CmjSampler::getSplit2D, getSplits2D).
+  // may take k draws of one dimension (CmjSampler::getSplits2D).
   explicit CmjPattern(uint32_t count, uint32_t splits = 1) : count_(count == 0 ? 1 : count) {
     splits_ = splits > 1 ? splits : 1;
     for (uint32_t k = 2; k <= splits_; ++k) splitBy_.push_back(std::make_shared<const CmjPattern>(count_ * k));
@@ -197,23 +197,10 @@ class CmjSampler {
   // a permutation of i and its thin row one of c, the same permutations in every column of a height (the
   // "correlated" offsets, which put one point in each thin column and row), plus jitter.
   Vec2 get2D() { return point2D(*pattern_, pixel_->seeds(dimension_++), index_); }
-  // The pattern's splits() draws of the next dimension for this sample: points index·splits() + k of the
-  // pixel's split pattern, so that the N samples' N·splits() draws are stratified together, as a pattern
-  // of N·splits() samples would stratify them. With splits() = 1, get2D() (get1D()).
-  void getSplit2D(Vec2* out) {
-    const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
-    const uint32_t k = pattern_->splits();
-    for (uint32_t j = 0; j < k; ++j) out[j] = point2D(pattern_->split(), p, index_ * k + j);
-  }
-  void getSplit1D(double* out) {
-    const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
-    const uint32_t k = pattern_->splits();
-    for (uint32_t j = 0; j < k; ++j) out[j] = point1D(pattern_->split(), p, index_ * k + j);
-  }
-  uint32_t splits() const { return pattern_->splits(); }
-  // Several sets of split draws of the next dimension: for each k whose bit k − 1 is set in `sets`
-  // (k ≤ splits()), in increasing k, k draws from the pattern of N·k points, as getSplit2D with that many
-  // splits would give them; each set is stratified on its own. A set of one is get2D()'s value.
+  // Sets of split draws of the next dimension for this sample: for each k whose bit k − 1 is set in `sets`
+  // (k ≤ the pattern's splits()), in increasing k, k draws, points index·k + j of the pixel's pattern of
+  // N·k points, so that the N samples' N·k draws are stratified together, as a pattern of N·k samples
+  // would stratify them; each set is stratified on its own. A set of one is get2D()'s (get1D()'s) value.
   void getSplits2D(uint32_t sets, Vec2* out) {
     const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
     for (uint32_t k = 1; sets != 0; ++k, sets >>= 1)
