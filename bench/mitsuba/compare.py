@@ -43,6 +43,10 @@ between one emitter sample and one BSDF sample per vertex, the environment visib
  3. Agreement (the same scene): converged images of both (each the mean of two half renders, cached in
     OUT/ref), relative RMSE between them over the sphere and the background, beside the noise floor the
     halves measure; the same for a grey Lambertian sphere (the environment orientation check).
+ 4. Highlight (bench/mitsuba/highlight.py): the light a sharp Cook-Torrance E2 lobe's highlight of a small
+    bright source carries (a 512 x 256 map of 0.1 with a 2 x 2 or 1 x 1 texel source of radiance 2000, five
+    places, three fits down to m = 0.0125) in glossy (`glossy render`) and Mitsuba, against an independent
+    NumPy quadrature; each renderer's image minus its render of the background alone.
 
 relative RMSE(img, ref) = sqrt(mean((img - ref)^2)) / sqrt(mean(ref^2)), over the pixels and the three
 channels of the region named (all pixels unless stated). Results: OUT/results.json (the sections run).
@@ -71,6 +75,7 @@ import mitsuba as mi  # noqa: E402
 
 mi.set_variant("llvm_ad_rgb")
 import cook_torrance  # noqa: E402  (these need the variant)
+import highlight  # noqa: E402
 import measured  # noqa: E402
 import microfacet  # noqa: E402
 
@@ -432,7 +437,7 @@ def efficiency_summary(g_t, g_img, m_t, m_img):
 
 
 # -------------------------------------------------------------------------------------------------- main
-SECTIONS = ("efficiency", "rays", "agreement")
+SECTIONS = ("efficiency", "rays", "agreement", "highlight")
 
 
 def csv_of(choices):
@@ -481,6 +486,8 @@ def main():
                    help="the material of sphere.gltf: the rays and agreement sections' and bench/compare-builds'")
     p.add_argument("--sphere-fit", default="cook-torrance:E2")
     p.add_argument("--fresh", action="store_true", help="agreement: re-render the cached converged images")
+    p.add_argument("--highlight-spp", type=int, default=256, help="highlight: spp of every render of both renderers")
+    p.add_argument("--highlight-seeds", type=int, default=2, help="highlight: renders per renderer and case (seeds 1 ...)")
     p.add_argument("--json", type=Path, default=None, help="results file (default OUT/results.json)")
     p.add_argument("--scene-only", action="store_true", help="write the scene files and the sky, then stop")
     a = p.parse_args()
@@ -554,6 +561,9 @@ def main():
             results.update(agreement(a, glossy, mts, out, refdir, rounding, exe, model, metric, material_file))
         glossy.close()
 
+    if "highlight" in a.only:
+        results["highlight"] = highlight_cases(a, root, build, out, rounding)
+
     results["wall_seconds"] = time.perf_counter() - wall
     results["load_average_start"] = load_start
     results["load_average"] = os.getloadavg()
@@ -564,6 +574,8 @@ def main():
         print_rays(results)
     if "agreement" in results:
         print_agreement(results)
+    if "highlight" in results:
+        print_highlight(results)
     print(f"\nwall time {results['wall_seconds']:.0f} s; load average at the start {load_start[0]:.2f}, at the end "
           f"{', '.join(f'{x:.2f}' for x in results['load_average'])} (1, 5, 15 min; this benchmark's own is about "
           f"{a.threads})")
@@ -659,6 +671,71 @@ def agreement(a, glossy, mts, out, refdir, rounding, exe, model, metric, materia
     return {"agreement": result,
             "reference": {"spp": a.ref_spp, "check_spp": a.check_spp, "glossy_noise_rel": g_ref_noise / rms_ref,
                           "mitsuba_noise_rel": m_ref_noise / rms_ref}}
+
+
+def highlight_cases(a, root, build, out, rounding):
+    """Section 4: the light of a sharp lobe's highlight of a small bright source (bench/mitsuba/highlight.py),
+    glossy (its render command, defaults but for the scene's size and depth) and Mitsuba against the
+    quadrature, each renderer's excess the mean over its seeds, z from their spread."""
+    if rounding.largest_at_most(a.highlight_spp) != a.highlight_spp:
+        raise SystemExit(f"compare.py: the {a.sampler} sampler does not render {a.highlight_spp} spp as asked")
+    work = out / "highlight"
+    work.mkdir(parents=True, exist_ok=True)
+    exe = build / "renderer/glossy"
+    background = work / "background.exr"
+    write_exr(background, np.full((highlight.HEIGHT, highlight.WIDTH, 3), highlight.BACKGROUND))
+
+    def glossy_image(env, material, fit, seed):
+        path = work / "glossy.exr"
+        subprocess.run([str(exe), "render", "--scene", str(out / "sphere.gltf"), "--env", str(env), "--material",
+                        str(root / material), "--fit", fit, "--width", str(a.size), "--height", str(a.size),
+                        "--max-depth", str(a.max_depth), "--spp", str(a.highlight_spp), "--seed", str(seed),
+                        "--threads", str(a.threads), "-o", str(path)], check=True, capture_output=True)
+        return read_exr(path)
+
+    def mitsuba_image(env, bsdf, seed):
+        scene = mitsuba_scene(out, a.size, a.max_depth, bsdf, a.sampler, {"type": "envmap", "filename": str(env)})
+        return mitsuba_render_chunked(scene, a.highlight_spp, seed, rounding)
+
+    cases = []
+    for label, material, fit_id in highlight.MATERIALS:
+        model, metric = fit_id.split(":")
+        fit = fit_of(root / material, model, metric)
+        bsdf = cook_torrance.bsdf_dict(fit)
+        seeds = range(1, a.highlight_seeds + 1)
+        g_background = [glossy_image(background, material, fit_id, s) for s in seeds]
+        m_background = [mitsuba_image(background, bsdf, s) for s in seeds]
+        for column, row, size in highlight.PLACES:
+            env = work / f"source-{column}-{row}-{size}.exr"
+            write_exr(env, highlight.source_map(column, row, size))
+            expected, window = highlight.quadrature(fit, column, row, size, a.size)
+            g = [highlight.light(glossy_image(env, material, fit_id, s) - b, window) for s, b in zip(seeds, g_background)]
+            m = [highlight.light(mitsuba_image(env, bsdf, s) - b, window) for s, b in zip(seeds, m_background)]
+            q = highlight.light(expected, window)
+            se = math.sqrt(statistics.variance(g) / len(g) + statistics.variance(m) / len(m))
+            cases.append({"material": label, "column": column, "row": row, "size": size, "quadrature": q,
+                          "glossy": statistics.mean(g), "mitsuba": statistics.mean(m), "glossy_seeds": g,
+                          "mitsuba_seeds": m, "z": (statistics.mean(g) - statistics.mean(m)) / se if se > 0 else 0.0})
+            c = cases[-1]
+            log(f"  highlight {label:15} source {column},{row} ({size}x{size}): quadrature {q:.2f}, glossy "
+                f"{c['glossy']:.2f}, Mitsuba {c['mitsuba']:.2f}, z {c['z']:+.1f}")
+    return {"spp": a.highlight_spp, "seeds": a.highlight_seeds, "map": [highlight.WIDTH, highlight.HEIGHT],
+            "background": highlight.BACKGROUND, "radiance": highlight.RADIANCE, "cases": cases}
+
+
+def print_highlight(r):
+    h = r["highlight"]
+    print(f"\nHighlight of a small source (map {h['map'][0]}x{h['map'][1]}, background {h['background']}, source "
+          f"radiance {h['radiance']:g}; {h['seeds']} renders of {h['spp']} spp per renderer; light = excess "
+          f"luminance summed over the highlight's window)\n")
+    print("| material | source texel (size) | quadrature | glossy | Mitsuba 3 | glossy / quadrature | "
+          "Mitsuba / quadrature | glossy / Mitsuba | z |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for c in h["cases"]:
+        q = c["quadrature"]
+        print(f"| {c['material']} | {c['column']},{c['row']} ({c['size']}x{c['size']}) | {q:.2f} | {c['glossy']:.2f} | "
+              f"{c['mitsuba']:.2f} | {c['glossy'] / q:.3f} | {c['mitsuba'] / q:.3f} | {c['glossy'] / c['mitsuba']:.3f} | "
+              f"{c['z']:+.1f} |")
 
 
 def print_efficiency(r):
