@@ -276,6 +276,42 @@ TEST(Environment, BrightTexelsLightTheDirectionsTheSpecGives) {
   EXPECT_GT(glm::dot(bestDir, Vec3(1, 0, 0)), std::cos(2.0 * kPi / 180.0));
 }
 
+// A Radiance .hdr of w × h texels with the resolution line `axes` (e.g. "-Y 4 +X 8"), its scanlines flat
+// RGBE in the order stored, each texel dim (1) but for one bright one (8) at stored position (x, y).
+void writeHdr(const std::filesystem::path& path, const std::string& axes, int w, int h, int x, int y) {
+  std::string bytes = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n" + axes + "\n";
+  for (int row = 0; row < h; ++row)
+    for (int column = 0; column < w; ++column) {
+      const char e = char(column == x && row == y ? 132 : 129);  // 128/256 · 2^(e − 128): 8 or 1
+      bytes += std::string{char(128), char(128), char(128), e};
+    }
+  writeText(path, bytes);
+}
+
+// A file may list its rows bottom to top, or its columns right to left, and say so in its header: the map
+// is the image as the file shows it, row 0 at the top (+Y). A .hdr written "+Y H +X W" stores its bottom row
+// first; read as stored, every feature would land at the mirror latitude.
+TEST(Environment, ReadsAFileInTheOrientationItDeclares) {
+  const int w = 8, h = 4;
+  const TempDir dir;
+  const auto brightAt = [&](const std::string& axes, int x, int y) {
+    writeHdr(dir / "map.hdr", axes, w, h, x, y);
+    const Environment env = Environment::load(dir / "map.hdr");
+    int found = 0, column = -1, row = -1;
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        const Vec2 uv{(i + 0.5) / w, double(j) / (h - 1)};
+        if (env.radiance(specDirection(uv.x, uv.y)).r > 4.0) ++found, column = i, row = j;
+      }
+    EXPECT_EQ(found, 1) << axes;
+    return std::pair{column, row};
+  };
+  EXPECT_EQ(brightAt("-Y 4 +X 8", 2, 1), std::pair(2, 1)) << "top to bottom, as stored";
+  EXPECT_EQ(brightAt("+Y 4 +X 8", 2, 1), std::pair(2, 2)) << "bottom row stored first";
+  EXPECT_EQ(brightAt("-Y 4 -X 8", 2, 1), std::pair(5, 1)) << "columns right to left";
+  EXPECT_EQ(brightAt("+Y 4 -X 8", 2, 1), std::pair(5, 2)) << "both";
+}
+
 TEST(Environment, RotationTurnsTheMapRightHandedAboutY) {
   const int w = 10, h = 5;
   const auto pixels = rgbMap(w, h, [](int column, int row) -> Rgb {

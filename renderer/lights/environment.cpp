@@ -53,6 +53,17 @@ void checkRotation(double rotateDegrees) {
 // measures 18.1 for a 16k map), with room to spare.
 constexpr double kEnvironmentBytesPerTexel = 20.0;
 
+void flipRows(LatLongImage& image) {
+  for (int top = 0, bottom = image.height - 1; top < bottom; ++top, --bottom)
+    std::swap_ranges(image.at(0, top), image.at(0, top) + std::size_t(image.width) * LatLongImage::kStride, image.at(0, bottom));
+}
+
+void flipColumns(LatLongImage& image) {
+  for (int row = 0; row < image.height; ++row)
+    for (int left = 0, right = image.width - 1; left < right; ++left, --right)
+      std::swap_ranges(image.at(left, row), image.at(left, row) + LatLongImage::kStride, image.at(right, row));
+}
+
 LatLongImage readLatLong(const std::filesystem::path& path) {
   const std::string name = path.string();
   auto fail = [&](const std::string& problem) { return InputError(name + ": " + oneLine(problem)); };
@@ -85,6 +96,13 @@ LatLongImage readLatLong(const std::filesystem::path& path) {
     throw fail(formatted("environment map is %dx%d texels; glossy loads at most %d on a side and %lld in all",
                          spec.width, spec.height, Environment::kMaxSide, (long long)Environment::kMaxTexels));
 
+  // Orientations 5–8 transpose the image (Exif's convention, which OpenImageIO follows): a lat-long map
+  // stored on its side is no map glossy can read as one.
+  const int orientation = spec.get_int_attribute("Orientation", 1);
+  if (orientation < 1 || orientation > 4)
+    throw fail("environment map's orientation " + std::to_string(orientation) +
+               " transposes it (only orientations 1–4, the image flipped or not, are lat-long maps)");
+
   // Rows are interpolated pole to pole, so a single row stands for both poles (copied below).
   LatLongImage image(spec.width, std::max(spec.height, 2));
   // Channels 0–2 only, converted to float by OpenImageIO straight into the texels' RGB (the stride skips
@@ -92,6 +110,12 @@ LatLongImage readLatLong(const std::filesystem::path& path) {
   if (!input->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, image.texels.data(), LatLongImage::kStride * sizeof(float)))
     throw fail("cannot read environment map pixels (" + input->geterror() + ")");
   input->close();
+  // A file may store its rows or columns in another order and say so (a Radiance .hdr whose resolution line
+  // reads "+Y H +X W" lists its rows bottom to top; OpenImageIO reports that as Orientation 4 and hands the
+  // rows over as stored). The map's row 0 must be its top (+Y), as the file shows it.
+  // (A single row is its own flip; the second row is its copy, made below.)
+  if (orientation == 2 || orientation == 3) flipColumns(image);
+  if ((orientation == 3 || orientation == 4) && spec.height > 1) flipRows(image);
   if (spec.height == 1) std::copy_n(image.at(0, 0), std::size_t(spec.width) * LatLongImage::kStride, image.at(0, 1));
 
   for (int row = 0; row < image.height; ++row)
