@@ -9,6 +9,7 @@
 // several seeds, for the analytic models, GGX and measured data, at the lobe's peak, beside it and at a
 // grazing view, and every estimator (the wave, the reference, cosine sampling with eight light samples,
 // one light and one BSDF sample, a sheet's panels) must agree with it.
+#include "materials/core/lane_math.h"
 #include "materials/merl/merl_table.h"
 #include "materials/params/material_file.h"
 #include "renderer/image/exr_image.h"
@@ -232,6 +233,15 @@ constexpr std::initializer_list<Estimator> kAll = {Estimator::Wave, Estimator::R
 
 TEST(Highlight, CookTorranceCarriesTheLightOfASmallSource) {
   expectCarriesTheLight({"ss440 CT E2 (m = 0.0136)", libraryFit("ss440", "cook-torrance:E2")}, kAll);
+}
+
+// The map's lookups and the models' batches call libmvec's AVX2 variants where the CPU has them, its SSE2
+// ones elsewhere (lane_math.h): the highlight must not depend on which.
+TEST(Highlight, TheBaselineVectorPathCarriesTheSameLight) {
+  const lanes::Isa saved = lanes::isa();
+  ASSERT_TRUE(lanes::setIsa(lanes::Isa::Sse2));
+  expectCarriesTheLight({"ss440 CT E2 (m = 0.0136), SSE2", libraryFit("ss440", "cook-torrance:E2")}, {Estimator::Wave});
+  lanes::setIsa(saved);
 }
 
 TEST(Highlight, EveryModelCarriesTheLightOfASmallSource) {
