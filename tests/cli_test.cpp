@@ -264,6 +264,13 @@ TEST(CliList, ListsTheLibrary) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("100 materials, 600 of the grid's fits"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("alum-bronze"), std::string::npos);
+  // The fits no column shows are listed too, by id: a model outside the grid, and glossy's refits.
+  const size_t at = r.out.find("\nalum-bronze ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::string line = r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
+  for (const char* other : {"ggx:E2:glossy 0.", "cook-torrance:E2:glossy 0.", "microfacet:E2:glossy 0."})
+    EXPECT_NE(line.find(other), std::string::npos) << other << " missing from: " << line;
+  EXPECT_EQ(r.out.find(" 0 other fits"), std::string::npos) << r.out;
 }
 
 // With no path, from the checkout: a section per database folder that holds parameter files, headed by its
