@@ -203,4 +203,11 @@ def test_input_errors_are_one_safe_line(tmp_path):
         glossy.load_material(bad)
     message = str(e.value)
     assert not any(ord(c) < 0x20 or ord(c) == 0x7f or c == "\u202e" for c in message), repr(message)
-    assert "characters)" in message and len(message) < 1200, message
+    assert len(message) < 1200, message
+
+    long = tmp_path / ("x" * 200) / ("y" * 200) / ("z" * 200) / ("w" * 200) / ("v" * 200) / "m.toml"
+    with pytest.raises(glossy.InputError) as e:
+        glossy.load_material(long)
+    message = str(e.value)
+    assert "characters) …" in message and len(message) < 1200, message
+    assert message.endswith("cannot open material file: not found"), message
