@@ -3,6 +3,7 @@
 #include "materials/params/material_file.h"
 #include "tests/support/test_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -176,6 +177,40 @@ TEST(Cli, UsageErrorsExitTwo) {
   EXPECT_EQ(runGlossy({"import"}).status, 2);
 }
 
+// Every message is one safe line (materials/core/text.h, safeLine, applied where InputError is formed):
+// escape sequences, line breaks, NUL and bidirectional overrides from arguments, globs, panel names and
+// file contents are shown escaped, and a long echo is cut with its length.
+TEST(Cli, MessagesAreOneSafeLine) {
+  TempDir tmp;
+  const std::string esc = "\x1b[2J\x1b]0;owned\x07";
+  const auto expectSafe = [](const RunResult& r, const std::string& mention) {
+    expectOneLineError(r, mention);
+    EXPECT_EQ(r.err.find("\xe2\x80\xae"), std::string::npos) << "a bidirectional override passed: " << r.err;
+    EXPECT_LT(r.err.size(), 1200u) << r.err;
+  };
+  // Arguments: a file name, a panel list, an unknown option (CLI11's own message).
+  RunResult r = runGlossy({"render", "--scene", (tmp / (esc + "\nglossy: all good\n.gltf")).string(), "-o", (tmp / "x.exr").string()});
+  expectSafe(r, "\\x1b[2J");
+  expectSafe(r, "\\nglossy: all good\\n.gltf");
+  r = runGlossy({"sheet", "--material", (materialsDir() / "chrome.toml").string(), "--panels", "measured," + esc + "\xe2\x80\xae:E2",
+                 "-o", (tmp / "s.exr").string()});
+  expectSafe(r, "\\x1b]0;owned\\x07");
+  expectSafe(r, "\\u202e");
+  r = runGlossy({"render", "--bogus" + esc});
+  expectSafe(r, "\\x1b");
+  // A glob of a study file, and a long one: cut, with its length.
+  writeText(tmp / "study.toml", "materials = [\"merl/\\u001b[31m\\u0000red*\"]\n[lightings]\nsky = { sky = true }\n");
+  r = runGlossy({"study", (tmp / "study.toml").string(), "-o", (tmp / "out").string()});
+  expectSafe(r, "\\x1b[31m\\x00red*");
+  writeText(tmp / "study.toml", "materials = [\"merl/" + std::string(5000, 'a') + "*\"]\n[lightings]\nsky = { sky = true }\n");
+  r = runGlossy({"study", (tmp / "study.toml").string(), "-o", (tmp / "out").string()});
+  expectSafe(r, "(5,006 characters)");
+  // A file's content: a material's name with a NUL, an escape and a line break in it.
+  writeText(tmp / "m.toml", "name = \"evil\\u0000\\u001b[1A\\nx\"\n");
+  expectSafe(runGlossy({"eval", "--material", (tmp / "m.toml").string(), "--fit", "smooth:E2"}),
+             "m.toml");
+}
+
 TEST(Cli, EverySubcommandHasHelp) {
   for (const char* sub : {"eval", "import", "list", "render", "sample"}) {
     const RunResult r = runGlossy({sub, "--help"});
@@ -229,6 +264,13 @@ TEST(CliList, ListsTheLibrary) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("100 materials, 600 of the grid's fits"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("alum-bronze"), std::string::npos);
+  // The fits no column shows are listed too, by id: a model outside the grid, and glossy's refits.
+  const size_t at = r.out.find("\nalum-bronze ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::string line = r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
+  for (const char* other : {"ggx:E2:glossy 0.", "cook-torrance:E2:glossy 0.", "microfacet:E2:glossy 0."})
+    EXPECT_NE(line.find(other), std::string::npos) << other << " missing from: " << line;
+  EXPECT_EQ(r.out.find(" 0 other fits"), std::string::npos) << r.out;
 }
 
 // With no path, from the checkout: a section per database folder that holds parameter files, headed by its

@@ -130,6 +130,31 @@ TEST(CliFit, AddsItsFitBesideThePublishedOneAndNeverReplacesItUnasked) {
   EXPECT_EQ(sheet("glossys"), std::pair(std::string("CT E2 (glossy fit)"), std::string("cook-torrance:E2:glossy")));
 }
 
+// A fit goes only into its own material's file: alum-bronze's table fitted into chrome.toml would store
+// alum-bronze's fit as chrome's own (and replace chrome's). Refused before fitting, the file untouched,
+// whether the file names its material by `measured` or, having none, by `name`.
+TEST(CliFit, AFitOfOneMaterialIntoAnothersFileIsRefused) {
+  TempDir dir;
+  const auto table = writeTable(dir, "alum-bronze", kTruth);
+  const auto chrome = dir / "chrome.toml";
+  copyPublishedFits("chrome", chrome);
+  writeText(dir / "nameonly.toml", "name = \"gold-paint\"\n\n[[fit]]\nmodel = \"lambertian\"\nmetric = \"E2\"\nkd = [0.1, 0.1, 0.1]\n");
+  for (const auto& toml : {chrome, dir / "nameonly.toml"}) {
+    SCOPED_TRACE(toml.string());
+    const std::string before = readText(toml);
+    const RunResult r = runGlossy({"fit", "--measured", table.string(), "--model", "cook-torrance", "--metric", "E2", "--starts", "1",
+                                   "--max-iterations", "5", "-o", toml.string()});
+    expectOneLineError(r, toml.string());
+    expectOneLineError(r, "alum-bronze.binary");
+    EXPECT_EQ(readText(toml), before);
+  }
+  // Its own file, under any file name, takes it.
+  const auto mine = dir / "my-copy.toml";
+  copyPublishedFits("alum-bronze", mine);
+  EXPECT_EQ(runGlossy({"fit", "--measured", table.string(), "--model", "cook-torrance", "--metric", "E2", "--starts", "1",
+                       "--max-iterations", "5", "-o", mine.string()}).status, 0);
+}
+
 TEST(CliFit, WithoutAnOutputFileWritesTheNewMaterialToStdout) {
   TempDir dir;
   const auto table = writeTable(dir, "plain", Lambertian{Rgb(0.3, 0.2, 0.1)});

@@ -35,6 +35,7 @@ void expectFiniteAtMost(const std::vector<float>& values, float largest) {
 }  // namespace
 
 TEST(HalfOutput, WriterClampsInfinityAndZeroesNaNCountingThePixels) {
+  takeNotes();  // what earlier tests of this process noted is not this test's
   RgbImage img(2, 2);
   const float inf = std::numeric_limits<float>::infinity();
   const float values[4][3] = {{inf, 1, 1}, {std::nanf(""), 0, 0}, {1e5f, 1, -inf}, {1, 1, 1}};
@@ -55,6 +56,10 @@ TEST(HalfOutput, WriterClampsInfinityAndZeroesNaNCountingThePixels) {
   writeExr(tmp / "f.exr", img, {}, PixelType::Float);
   expectFiniteAtMost(allChannels(tmp / "f.exr"), std::numeric_limits<float>::max());
   EXPECT_EQ(readImageAttribute(tmp / "f.exr", "glossy:nonFinitePixels"), "3");
+  // A float EXR clips only what is not finite: counted, and said too.
+  const std::vector<std::string> floatNotes = takeNotes();
+  ASSERT_EQ(floatNotes.size(), 1u);
+  EXPECT_EQ(floatNotes[0], (tmp / "f.exr").string() + ": 3 of 4 pixels were not finite (an overflow or a NaN), written as the largest float or 0");
   EXPECT_EQ(readRgbImage(tmp / "f.exr").pixels[6], 1e5f);
 
   img.pixels.assign(img.pixels.size(), 0.5f);

@@ -126,7 +126,7 @@ TEST(Importer, SupplementBeatsFitLinesWhateverTheOrderAndOtherFitsAreKept) {
     if (supplementFirst) imp.addFile(sharedDir() / "seed/supplement.txt");
     imp.addFile(sharedDir() / "fits/low_ashikhminshirley_E1.fit");
     if (!supplementFirst) imp.addFile(sharedDir() / "seed/supplement.txt");
-    // An existing file with a fit the sources don't give, and a stale copy of one they do.
+    // An existing file with a fit the sources don't give, and a copy of one they do (to bbm's rounding).
     MaterialFile existing;
     existing.name = "alum-bronze";
     existing.measured = "alum-bronze.binary";
@@ -138,7 +138,7 @@ TEST(Importer, SupplementBeatsFitLinesWhateverTheOrderAndOtherFitsAreKept) {
     Fit stale;
     stale.id = {"ashikhmin-shirley", "E1"};
     stale.params = fitOf(byName(importSupplement(readText(sharedDir() / "seed/supplement.txt"), "s"), "alum-bronze"), "ashikhmin-shirley:E1").params;
-    stale.params.set("n", 1.0);
+    stale.params.set("n", 6679.52);
     existing.put(stale);
 
     const MaterialFile m = imp.mergeInto(existing, "alum-bronze");
@@ -151,6 +151,43 @@ TEST(Importer, SupplementBeatsFitLinesWhateverTheOrderAndOtherFitsAreKept) {
     // Materials only the .fit file has keep bbm's values.
     EXPECT_EQ(fitOf(imp.mergeInto({}, "aluminium"), "ashikhmin-shirley:E1").params.scalar("n"), 292101.373392);
   }
+}
+
+// A published fit is never replaced: values that contradict one already in the file, or one an earlier
+// source gave, are refused naming the file and the fit (a crafted .fit cannot pass for the paper's).
+TEST(Importer, NeverReplacesAPublishedFit) {
+  GLOSSY_REQUIRE_SHARED("fits/low_ashikhminshirley_E1.fit");
+  TempDir tmp;
+  const std::string real = readText(sharedDir() / "fits/low_ashikhminshirley_E1.fit");
+  const size_t at = real.find("alum-bronze");
+  ASSERT_NE(at, std::string::npos);
+  std::string line = real.substr(at, real.find('\n', at) - at);
+  const size_t n = line.find("sharpness = ");
+  ASSERT_NE(n, std::string::npos) << line;
+  line.replace(n, line.find_first_of(",)", n) - n, "sharpness = 12.5");
+  std::filesystem::create_directories(tmp / "crafted");
+  writeText(tmp / "crafted/low_ashikhminshirley_E1.fit", line + "\n");
+
+  // Against the file a genuine import wrote.
+  ASSERT_EQ(runGlossy({"import", (sharedDir() / "fits/low_ashikhminshirley_E1.fit").string(), "-o", (tmp / "out").string()}).status, 0);
+  const std::string before = readText(tmp / "out/alum-bronze.toml");
+  for (const char* flag : {"", "--replace"}) {
+    SCOPED_TRACE(flag);
+    std::vector<std::string> args{"import", (tmp / "crafted/low_ashikhminshirley_E1.fit").string(), "-o", (tmp / "out").string()};
+    if (*flag) args.push_back(flag);
+    const RunResult r = runGlossy(args);
+    expectOneLineError(r, "alum-bronze.toml");
+    expectOneLineError(r, "ashikhmin-shirley:E1");
+    EXPECT_EQ(readText(tmp / "out/alum-bronze.toml"), before);
+  }
+  // Against an earlier source in the same import.
+  const RunResult r = runGlossy({"import", (sharedDir() / "fits/low_ashikhminshirley_E1.fit").string(),
+                                 (tmp / "crafted/low_ashikhminshirley_E1.fit").string(), "-o", (tmp / "fresh").string()});
+  expectOneLineError(r, "crafted/low_ashikhminshirley_E1.fit");
+  EXPECT_FALSE(std::filesystem::exists(tmp / "fresh/alum-bronze.toml"));
+  // The same fits again change nothing.
+  ASSERT_EQ(runGlossy({"import", (sharedDir() / "fits/low_ashikhminshirley_E1.fit").string(), "-o", (tmp / "out").string()}).status, 0);
+  EXPECT_EQ(readText(tmp / "out/alum-bronze.toml"), before);
 }
 
 TEST(Importer, RejectsFilesOfNeitherKind) {

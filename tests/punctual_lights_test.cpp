@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <tuple>
 
 namespace glossy::test {
 
@@ -258,6 +259,56 @@ TEST(PunctualLights, MalformedLightsExitTwoNamingTheFileAndTheLight) {
     expectOneLineError(r, what == "light that does not exist" ? "light 7" : what == "infinite intensity" ? "overflow" : "light 'Bad'");
     EXPECT_FALSE(std::filesystem::exists(dir / "x.exr"));
   }
+}
+
+// A light's fields have physical bounds and the schema's types: colour × intensity beyond what the float
+// image holds (alone, through its colour, or as one of several lights) is refused naming the light, as
+// --env-constant's radiance is, never dropped to a black image or clipped at the largest float; a field of
+// the wrong type is refused, never read as its default.
+TEST(PunctualLights, LightsBeyondTheirBoundsOrWithFieldsOfTheWrongTypeAreRefused) {
+  const json point = {{"type", "point"}, {"name", "Bad"}, {"intensity", 1.0}};
+  const auto with = [&](json change) {
+    json l = point;
+    l.update(change);
+    return l;
+  };
+  const json fine = {{"type", "point"}, {"name", "Fine"}, {"intensity", 2.0}};
+  const std::vector<std::tuple<std::string, GltfDoc, std::string>> cases = {
+      {"intensity 1e300", boxWithLights(json::array({with({{"intensity", 1e300}})}), {json::object()}), "color × intensity"},
+      {"colour times intensity", boxWithLights(json::array({with({{"intensity", 1e7}, {"color", {1e7, 0, 0}}})}), {json::object()}), "color × intensity"},
+      {"colour 1e200 times intensity 1e200",
+       boxWithLights(json::array({with({{"intensity", 1e200}, {"color", {1, 1e200, 1}}})}), {json::object()}), "color × intensity"},
+      {"two lights", boxWithLights(json::array({fine, with({{"intensity", 1e300}})}), {json::object(), json::object()}), "color × intensity"},
+      {"intensity as text", boxWithLights(json::array({with({{"intensity", "1e300"}})}), {json::object()}), "intensity must be a number"},
+      {"colour as text", boxWithLights(json::array({with({{"color", "red"}})}), {json::object()}), "color must be an array of three numbers"},
+      {"colour of text", boxWithLights(json::array({with({{"color", {"1", 1, 1}}})}), {json::object()}), "color must be an array of three numbers"},
+      {"type as a number", boxWithLights(json::array({with({{"type", 3}})}), {json::object()}), "type must be a string"},
+      {"no type", boxWithLights(json::array({json{{"name", "Bad"}}}), {json::object()}), "has no type"},
+      {"range as a bool", boxWithLights(json::array({with({{"range", true}})}), {json::object()}), "range must be a number"},
+      {"spot as text", boxWithLights(json::array({with({{"type", "spot"}, {"spot", "wide"}})}), {json::object()}), "spot must be an object"},
+      {"cone as text", boxWithLights(json::array({with({{"type", "spot"}, {"spot", {{"outerConeAngle", "0.5"}}}})}), {json::object()}),
+       "spot.outerConeAngle must be a number"},
+  };
+  for (const auto& [what, g, why] : cases) {
+    SCOPED_TRACE(what);
+    TempDir dir;
+    const std::filesystem::path scene = g.writeExternal(dir, "lamp");
+    for (const char* command : {"render", "sheet"}) {
+      std::vector<std::string> args{command, "--scene", scene.string(), "--width", "8", "--height", "8", "--spp", "1"};
+      if (std::string(command) == "sheet") args.insert(args.end(), {"--material", (materialsDir() / "chrome.toml").string()});
+      args.insert(args.end(), {"-o", (dir / "x.exr").string()});
+      const RunResult r = runGlossy(args);
+      expectOneLineError(r, "lamp.gltf");
+      expectOneLineError(r, "light 'Bad'");
+      expectOneLineError(r, why);
+      EXPECT_FALSE(std::filesystem::exists(dir / "x.exr"));
+    }
+  }
+  // The bound itself is a light glossy renders, finite.
+  TempDir dir;
+  const std::filesystem::path scene = boxWithLights(json::array({with({{"intensity", 1e12}})}), {json::object()}).writeExternal(dir, "lamp");
+  const RunResult r = runGlossy({"render", "--scene", scene.string(), "--width", "8", "--height", "8", "--spp", "1", "-o", (dir / "x.exr").string()});
+  EXPECT_EQ(r.status, 0) << r.err;
 }
 
 }  // namespace glossy::test

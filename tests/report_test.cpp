@@ -347,6 +347,38 @@ TEST(ReportInput, BoxesBeyondTheImageAreRefusedWhateverTheirSize) {
   }
 }
 
+// A figure is read only inside its domain: a negative relative RMSE, a ꟻLIP above 1 or a reversed interval
+// is a crafted or corrupt sheet, refused naming the file and the figure rather than analysed as real.
+TEST(ReportInput, FiguresOutsideTheirDomainAreRefused) {
+  TempDir tmp;
+  const std::string e = "glossy:error.smooth_E2.";
+  for (const auto& [key, value] : std::vector<std::pair<std::string, std::string>>{{e + "relativeRmse", "-0.25"},
+                                                                                 {e + "relativeRmseNoisy", "-1"},
+                                                                                 {e + "flip", "1.5"},
+                                                                                 {e + "luminanceRatio", "-2"},
+                                                                                 {e + "E2", "-3"},
+                                                                                 {e + "relativeRmseCi", "0.5 0.1"},
+                                                                                 {e + "relativeRmseCi", "-0.1 0.2"},
+                                                                                 {e + "flipCi", "0.2 0.1"},
+                                                                                 {"glossy:flipNoiseFloor", "2"}}) {
+    SCOPED_TRACE(key + " = " + value);
+    fs::remove_all(tmp / "sheets");
+    modifiedSheet("chrome", tmp / "sheets/chrome", {{key, value}});
+    RunResult r = report(tmp / "sheets", tmp / "site");
+    expectOneLineError(r, "chrome.exr");
+    EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(tmp / "site"));
+    r = runGlossy({"merge", "sheets", (tmp / "sheets").string(), "--csv", (tmp / "t.csv").string()});
+    expectOneLineError(r, "chrome.exr");
+    EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(tmp / "t.csv"));
+  }
+  // The edges of a domain are figures a sheet can carry.
+  fs::remove_all(tmp / "sheets");
+  modifiedSheet("chrome", tmp / "sheets/chrome", {{e + "relativeRmse", "0"}, {e + "flip", "1"}, {e + "luminanceRatioCi", "-0.5 1.5"}});
+  EXPECT_EQ(report(tmp / "sheets", tmp / "site").status, 0);
+}
+
 // The material's name is the sheet's own (glossy:materialName), not its file name; two sheets of one
 // material, or a name that cannot name a page, are refused.
 TEST(ReportInput, TheMaterialNameComesFromTheSheet) {

@@ -96,6 +96,32 @@ TEST(StudyReport, EveryRowLinksToItsSheetsPageAndEveryLinkIsInTheSite) {
   EXPECT_EQ(readText(site / "index.html"), index);
 }
 
+// The study page renders its summary's markdown (never as raw text, never letting markup through),
+// captions each figure by what it shows, and gives the filter every text column's words to match, its count
+// naming rows.
+TEST(StudyReport, TheSummaryIsRenderedEachFigureCaptionedAndRowsFoundByEveryColumn) {
+  TempDir tmp;
+  const RunResult r = runGlossy({"report", studyDir().string(), "-o", (tmp / "site").string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string index = readText(tmp / "site/index.html");
+  EXPECT_NE(index.find("<h3>Study summary</h3>"), std::string::npos) << "the summary's heading, rendered";
+  EXPECT_EQ(index.find("# Study summary"), std::string::npos) << "no raw markdown";
+  EXPECT_NE(index.find("<code>results.json</code>"), std::string::npos);
+  EXPECT_EQ(index.find("```"), std::string::npos);
+  EXPECT_NE(index.find("<figcaption>Relative RMSE r* per material, the materials sorted"), std::string::npos) << "error_curves captioned";
+  EXPECT_NE(index.find("<figcaption>Critical-difference diagram"), std::string::npos);
+  EXPECT_EQ(index.find("<figcaption>error_curves.svg</figcaption>"), std::string::npos);
+  EXPECT_NE(index.find("data-noun=\"rows\""), std::string::npos);
+  const std::vector<study::StudyRow> rows = study::readStudyRows(studyDir());
+  ASSERT_FALSE(rows.empty());
+  const study::StudyRow& row = rows.front();
+  const std::regex name("<tr data-name=\"([^\"]*)\"");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(index, m, name));
+  for (const std::string& word : {row.material, row.database, row.lighting, row.scene, row.fit})
+    if (!word.empty()) EXPECT_NE(m[1].str().find(word), std::string::npos) << word << " not in the filter's words: " << m[1].str();
+}
+
 // A study with a sheet missing is refused, naming it, and nothing is written.
 TEST(StudyReport, AnUnfinishedStudyIsRefused) {
   TempDir tmp;

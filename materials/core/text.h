@@ -43,10 +43,17 @@ std::string joined(const Items& items, std::string_view separator, Text text = {
   return out;
 }
 
-// `text` for an error message: at most 40 characters, so a 309-digit number does not fill the screen.
-inline std::string shortened(std::string_view text) {
-  return text.size() <= 40 ? std::string(text) : std::string(text.substr(0, 37)) + "...";
-}
+// `text` as a message's one safe line, the form every message takes before it reaches a terminal or
+// Python (InputError, notes, the command line's errors): control characters, line breaks, bytes that are
+// not well-formed UTF-8 and the Unicode characters that reorder or break a line are escaped ("\n", "\x1b",
+// "\u202e"), so a file name or a file's content cannot move the cursor, forge a second line or hide
+// part of the message; a message of more than `maxCharacters` characters keeps its start and its end around
+// "… (N characters) …", so the file it names and the problem it states both stay.
+std::string safeLine(std::string_view text, size_t maxCharacters = 1000);
+
+// `text` echoed in a message: at most `maxCharacters` characters, then "… (5,012 characters)", so a 309-digit
+// number or a pasted file does not fill the screen. (safeLine escapes it with the rest of the message.)
+std::string shortened(std::string_view text, size_t maxCharacters = 40);
 
 inline std::optional<double> parseNumber(std::string_view text) {
   if (text.starts_with('+')) text.remove_prefix(1);

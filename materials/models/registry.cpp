@@ -38,7 +38,7 @@ const ModelInfo* findModel(std::string_view name) {
 
 const ModelInfo& requireModel(std::string_view name, const std::string& context) {
   if (const ModelInfo* m = findModel(name)) return *m;
-  throw InputError(context + ": unknown model '" + std::string(name) + "' (known: " + knownModelNames() + ")");
+  throw InputError(context + ": unknown model '" + shortened(name) + "' (known: " + knownModelNames() + ")");
 }
 
 std::string knownModelNames() {

@@ -204,19 +204,48 @@ void Importer::addFile(const std::filesystem::path& path) {
   // The supplement's text for all 100 materials is well under a megabyte.
   const std::string s = readInputFile(path, 64 << 20, "supplement or .fit file");
   if (s.find("Aggregate(") != std::string::npos)
-    add(importFitLines(s, path.string()), kPrecisionFitLines);
+    add(importFitLines(s, path.string()), kPrecisionFitLines, path.string());
   else if (s.find("Material Name:") != std::string::npos)
-    add(importSupplement(s, path.string()), kPrecisionSupplement);
+    add(importSupplement(s, path.string()), kPrecisionSupplement, path.string());
   else
     throw InputError(path.string() + ": neither the supplement's text (no 'Material Name:') nor .fit lines (no 'Aggregate(')");
 }
 
-void Importer::add(std::vector<MaterialFile> materials, int precision) {
+namespace {
+
+// The same fit, to the precision of the sources (bbm's .fit lines round to 5 decimals): the same
+// parameters, each value within 1e-5 (absolute, or relative for large values) of the other's.
+bool sameFitValues(const Fit& a, const Fit& b) {
+  const auto close = [](double x, double y) { return std::abs(x - y) <= 1e-5 * std::max(1.0, std::max(std::abs(x), std::abs(y))); };
+  const auto& va = a.params.values();
+  const auto& vb = b.params.values();
+  if (va.size() != vb.size()) return false;
+  for (const auto& [key, value] : va) {
+    const auto other = vb.find(key);
+    if (other == vb.end() || value.index() != other->second.index()) return false;
+    if (const double* x = std::get_if<double>(&value)) {
+      if (!close(*x, std::get<double>(other->second))) return false;
+    } else if (const Rgb* c = std::get_if<Rgb>(&value)) {
+      const Rgb& d = std::get<Rgb>(other->second);
+      if (!close(c->r, d.r) || !close(c->g, d.g) || !close(c->b, d.b)) return false;
+    } else if (value != other->second) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+void Importer::add(std::vector<MaterialFile> materials, int precision, const std::string& from) {
   for (MaterialFile& m : materials) {
     auto [it, fresh] = entries_.try_emplace(m.name);
     Entry& e = it->second;
     if (fresh) e.material = measuredMaterial(m.name, m.source);
     for (Fit& fit : m.fits) {
+      if (const Fit* earlier = e.material.findExact(fit.id); earlier && !sameFitValues(*earlier, fit))
+        throw InputError((from.empty() ? std::string("import") : from) + ": gives " + m.name + "'s " + fit.id.str() +
+                         " fit other values than an earlier source; which is the paper's cannot be told");
       auto p = e.precision.find(fit.id.str());
       if (p != e.precision.end() && p->second > precision) continue;
       e.precision[fit.id.str()] = precision;
@@ -231,9 +260,12 @@ MaterialFile Importer::mergeInto(MaterialFile existing, const std::string& name)
   if (existing.name.empty()) existing = measuredMaterial(name, "");
   // Make every fit's provenance explicit, merge, then let the material's source be the one most fits
   // share; a fit whose provenance differs keeps its own `source` key.
+  checkKeepsPublished(existing, name);
   for (Fit& f : existing.fits)
     if (f.source.empty()) f.source = existing.source;
-  for (const Fit& f : e.material.fits) existing.put(f);
+  // A published fit the sources give again (checked the same) is taken only at the supplement's precision.
+  for (const Fit& f : e.material.fits)
+    if (!existing.findExact(f.id) || e.precision.at(f.id.str()) >= kPrecisionSupplement) existing.put(f);
   std::map<std::string, int> votes;
   for (const Fit& f : existing.fits) ++votes[f.source];
   if (!votes.empty())
@@ -242,6 +274,14 @@ MaterialFile Importer::mergeInto(MaterialFile existing, const std::string& name)
   for (Fit& f : existing.fits)
     if (f.source == existing.source) f.source.clear();
   return existing;
+}
+
+void Importer::checkKeepsPublished(const MaterialFile& existing, const std::string& name) const {
+  const Entry& e = entries_.at(name);
+  for (const Fit& f : e.material.fits)
+    if (const Fit* old = existing.findExact(f.id); old && !sameFitValues(*old, f))
+      throw InputError((existing.path.empty() ? existing.name : existing.path.string()) + ": its published " + f.id.str() +
+                       " fit differs from the one imported; a published fit is never replaced (remove it from the file first)");
 }
 
 std::vector<std::string> Importer::names() const {

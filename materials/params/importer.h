@@ -30,9 +30,15 @@ class Importer {
  public:
   // Detects the kind of file from its content; throws InputError for a file of neither kind.
   void addFile(const std::filesystem::path& path);
-  void add(std::vector<MaterialFile> materials, int precision);
-  // Merges the gathered fits into `existing` (fits of the same id are replaced, others kept).
+  // Two sources that give one fit different values (beyond the less precise one's rounding) are refused,
+  // naming `from`: which of them is the paper's cannot be told.
+  void add(std::vector<MaterialFile> materials, int precision, const std::string& from = "");
+  // Merges the gathered fits into `existing`: fits it does not have are added, others kept. A published fit
+  // is never replaced: one the sources give again (to their precision) stays as it is, one they contradict
+  // is refused (InputError naming the file and the fit) — a crafted .fit cannot pass for the paper's.
   MaterialFile mergeInto(MaterialFile existing, const std::string& name) const;
+  // mergeInto's refusal alone: throws when the sources contradict a published fit of `existing`.
+  void checkKeepsPublished(const MaterialFile& existing, const std::string& name) const;
   std::vector<std::string> names() const;
   size_t fitCount() const;
 

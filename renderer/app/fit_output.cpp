@@ -1,6 +1,7 @@
 #include "renderer/app/fit_output.h"
 
 #include "renderer/util/atomic_file.h"
+#include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "materials/params/material_name.h"
 #include "renderer/app/brdf_options.h"
@@ -40,7 +41,17 @@ std::string materialNameOf(const std::filesystem::path& data) {
 }
 
 MaterialFile materialForFit(const std::filesystem::path& path, const std::filesystem::path& data) {
-  if (std::error_code ec; !path.empty() && std::filesystem::exists(path, ec)) return loadMaterialFile(path);
+  if (std::error_code ec; !path.empty() && std::filesystem::exists(path, ec)) {
+    MaterialFile material = loadMaterialFile(path);
+    // A fit belongs in its own material's file only: A's fit stored in B's file would pass for B's, and
+    // replace B's own. The file's material is its measured data's, or its name when it names no data.
+    const std::string ofData = materialNameOf(data);
+    const std::string ofFile = material.measured.empty() ? material.name : materialNameOf(material.measured);
+    if (ofFile != ofData)
+      throw InputError(path.string() + ": is the parameter file of " + ofFile + (material.measured.empty() ? "" : " (measured by " + material.measured + ")") +
+                       ", not of " + data.filename().string() + "; a fit goes into its own material's file");
+    return material;
+  }
   // `measured` names the data as resolveMeasured() finds it again: NAME.binary also finds NAME.binary.xz.
   std::string measured = data.filename().string();
   if (measured.ends_with(".xz")) measured.resize(measured.size() - 3);

@@ -33,7 +33,18 @@ int runImport(const ImportOptions& o) {
   for (const std::string& name : importer.names()) {
     const std::filesystem::path path = dir / (name + ".toml");
     MaterialFile existing;
-    if (!o.replace && std::filesystem::exists(path, ec)) existing = loadMaterialFile(path);
+    if (std::filesystem::exists(path, ec)) {
+      try {
+        existing = loadMaterialFile(path);
+        // Even --replace never replaces a published fit with other values (importer.h).
+        importer.checkKeepsPublished(existing, name);
+      } catch (const InputError&) {
+        // --replace writes over a file that does not load (it holds no fit that could be read), never over
+        // one whose published fit the sources contradict.
+        if (!o.replace || !existing.name.empty()) throw;
+      }
+      if (o.replace) existing = {};
+    }
     merged.push_back(importer.mergeInto(std::move(existing), name));
   }
   size_t fits = 0;
@@ -54,10 +65,10 @@ Command addImportCommand(CLI::App& parent) {
       "Import published fits into parameter files, one NAME.toml per material in the output folder. Sources are "
       "the supplement's text (sections 'Material Name: X') and bbm .fit files (low_<model>_<E1|E2>.fit). Where "
       "both give a fit, the supplement's more precise values win. Fits already in an existing NAME.toml that the "
-      "sources do not give are kept (unless --replace).");
+      "sources do not give are kept (unless --replace); a published fit there is never replaced by other values.");
   app->add_option("sources", o->sources, "Supplement text or .fit files")->required();
   app->add_option("-o,--out", o->outDir, "Output folder for the TOML files")->required();
-  app->add_flag("--replace", o->replace, "Overwrite existing files instead of merging into them");
+  app->add_flag("--replace", o->replace, "Overwrite existing files instead of merging into them (a published fit in them that the sources contradict is still refused)");
   return {app, [o] { return runImport(*o); }};
 }
 

@@ -1,6 +1,7 @@
 // glossy list: the material library at a glance, a section per database folder, with each fit's head-on
 // albedo.
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 #include "materials/models/albedo.h"
 #include "materials/nbrdf/neural_brdf.h"
 #include "materials/params/material_file.h"
@@ -55,11 +56,12 @@ int runList(const ListOptions& o) {
 
   std::printf("Head-on directional albedo a(N) = ∫ρ(L,N) cos θ_L dω_L of each fit (mean of R, G, B), a section\n"
               "per database folder; 'measured' says whether the material's MERL table was found (--merl-dir,\n"
-              "$GLOSSY_MERL_DIR), or only the Neural BRDF network beside it ('network').\n");
+              "$GLOSSY_MERL_DIR), or only the Neural BRDF network beside it ('network'); 'other fits' are the fits\n"
+              "no column shows (models outside the grid, glossy's refits beside the published ones).\n");
   // A section per folder, headed by its database; the files of each come sorted from materialFiles.
   std::map<std::filesystem::path, std::vector<std::filesystem::path>> byFolder;
   for (const auto& file : files) byFolder[file.parent_path()].push_back(file);
-  int bad = 0, fits = 0;
+  int bad = 0, fits = 0, otherFits = 0;
   for (const auto& [folder, members] : byFolder) {
     const std::string label = databaseLabel(folder);
     std::printf("\n%s%s%s, %zu material%s\n", label.c_str(), label.empty() ? "" : " — ",
@@ -67,7 +69,7 @@ int runList(const ListOptions& o) {
     std::printf("%-26s %-9s", "material", "measured");
     for (const SheetPanel& c : sheetPanels())
       if (!c.fit.empty()) std::printf(" %*s", width(c), c.label.c_str());
-    std::printf("\n");
+    std::printf("  other fits\n");
     for (const auto& file : members) {
       MaterialFile m;
       try {
@@ -78,6 +80,11 @@ int runList(const ListOptions& o) {
         continue;
       }
       std::printf("%-26s %-9s", m.name.c_str(), measuredState(m, o.merlDir).c_str());
+      const auto albedo = [](const Fit& f) {
+        const Rgb a = albedoAtNormalIncidence(makeBrdf(f));
+        return (a.r + a.g + a.b) / 3.0;
+      };
+      std::set<const Fit*> shown;
       for (const SheetPanel& c : sheetPanels()) {
         if (c.fit.empty()) continue;
         const Fit* f = m.find(FitId::parse(c.fit, c.label));
@@ -85,14 +92,21 @@ int runList(const ListOptions& o) {
           std::printf(" %*s", width(c), "-");
           continue;
         }
-        const Rgb a = albedoAtNormalIncidence(makeBrdf(*f));
-        std::printf(" %*.4f", width(c), (a.r + a.g + a.b) / 3.0);
+        std::printf(" %*.4f", width(c), albedo(*f));
+        shown.insert(f);
         ++fits;
       }
-      std::printf("\n");
+      // The fits no column shows (a model outside the grid, glossy's refits beside the paper's), by id.
+      std::string others;
+      for (const Fit& f : m.fits)
+        if (!shown.count(&f)) {
+          others += formatted("%s%s %.4f", others.empty() ? "  " : ", ", f.id.str().c_str(), albedo(f));
+          ++otherFits;
+        }
+      std::printf("%s\n", others.c_str());
     }
   }
-  std::printf("\n%zu materials, %d of the grid's fits", files.size() - size_t(bad), fits);
+  std::printf("\n%zu materials, %d of the grid's fits, %d other fits", files.size() - size_t(bad), fits, otherFits);
   if (bad) std::printf(", %d unreadable (see stderr)", bad);
   std::printf("\n");
   return bad ? 2 : 0;

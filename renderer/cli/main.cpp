@@ -2,6 +2,7 @@
 // 0 success, 2 bad usage or bad input (one line on stderr naming the file and problem), 1 anything else.
 #include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 #include "renderer/util/notes.h"
 #include "renderer/cli/command.h"
 
@@ -25,9 +26,11 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // CLI11's message quotes the argument as given: it passes safeLine like every other message.
     std::string what = e.what();
+    while (!what.empty() && what.back() == '\n') what.pop_back();
     std::replace(what.begin(), what.end(), '\n', ' ');
-    std::cerr << "glossy: " << what << " (see glossy --help)\n";
+    std::cerr << "glossy: " << safeLine(what) << " (see glossy --help)\n";
     return 2;
   }
 
@@ -46,7 +49,7 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const std::exception& e) {
     flushNotes();
-    std::cerr << "glossy: " << e.what() << "\n";
+    std::cerr << "glossy: " << safeLine(e.what()) << "\n";
     return 1;
   }
 }

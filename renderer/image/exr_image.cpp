@@ -101,6 +101,9 @@ void writeLayeredExr(const std::filesystem::path& path, const std::vector<ExrLay
   if (type == PixelType::Half && clamped > 0)
     note(formatted("%s: %lld of %lld pixels had a value above 65504, the largest half, written as 65504 (a float EXR keeps them)",
                    path.string().c_str(), (long long)clamped, (long long)changed.size()));
+  else if (clamped > 0)
+    note(formatted("%s: %lld of %lld pixels were not finite (an overflow or a NaN), written as the largest float or 0",
+                   path.string().c_str(), (long long)clamped, (long long)changed.size()));
 }
 
 void writeRgb8(const std::filesystem::path& path, int width, int height, const std::vector<unsigned char>& rgb) {

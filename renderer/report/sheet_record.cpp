@@ -16,6 +16,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -64,20 +65,39 @@ class Header {
     if (!lo || !hi || !std::isfinite(*lo) || !std::isfinite(*hi)) return std::nullopt;
     return std::pair{*lo, *hi};
   }
-  Figure figure(const std::string& name) const {
+  // A number that must lie in [lo, hi] (what the figure can be: an RMSE is never negative, ꟻLIP never
+  // above 1): a crafted or corrupt sheet is refused, not analysed as if its figure were real.
+  std::optional<double> bounded(const std::string& name, double lo, double hi) const {
+    const std::optional<double> v = number(name);
+    if (v && !(*v >= lo && *v <= hi)) fail(formatted("%s = %g is outside its domain %s", name.c_str(), *v, domain(lo, hi).c_str()));
+    return v;
+  }
+  // A figure in [lo, hi]; its interval must be ordered, and reach into the domain (`intervalLo` is how far
+  // below it the interval may start: a luminance ratio's normal interval may begin below 0).
+  Figure figure(const std::string& name, double lo, double hi, double intervalLo) const {
     Figure f;
-    f.value = number(name);
+    f.value = bounded(name, lo, hi);
     if (const auto ci = interval(name + "Ci")) {
+      if (!(ci->first <= ci->second))
+        fail(formatted("%sCi = %g %g is a reversed interval (its low end above its high end)", name.c_str(), ci->first, ci->second));
+      if (!(ci->first >= intervalLo && ci->second >= lo && ci->second <= hi))
+        fail(formatted("%sCi = %g %g is outside its domain %s", name.c_str(), ci->first, ci->second, domain(intervalLo, hi).c_str()));
       f.lo = ci->first;
       f.hi = ci->second;
     }
     return f;
   }
   ImageFigures figures(const std::string& prefix) const {
-    return {figure(prefix + ".relativeRmse"), figure(prefix + ".luminanceRatio"), figure(prefix + ".flip"),
-            number(prefix + ".relativeRmseNoisy")};
+    const double inf = std::numeric_limits<double>::infinity();
+    return {figure(prefix + ".relativeRmse", 0.0, inf, 0.0), figure(prefix + ".luminanceRatio", 0.0, inf, -inf),
+            figure(prefix + ".flip", 0.0, 1.0, 0.0), bounded(prefix + ".relativeRmseNoisy", 0.0, inf)};
   }
   [[noreturn]] void fail(const std::string& why) const { throw InputError(path_.string() + ": " + why); }
+
+  static std::string domain(double lo, double hi) {
+    const auto end = [](double v) { return std::isinf(v) ? std::string(v < 0 ? "-inf" : "inf") : formatted("%g", v); };
+    return formatted("[%s, %s]", end(lo).c_str(), end(hi).c_str());
+  }
 
  private:
   std::filesystem::path path_;
@@ -239,7 +259,7 @@ SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::file
   r.spp = h.text("glossy:spp");
   r.pngExposure = h.number("glossy:pngExposure").value_or(0.0);
   if (std::abs(r.pngExposure) > 64.0) h.fail("glossy:pngExposure out of range");
-  r.flipNoiseFloor = h.number("glossy:flipNoiseFloor");
+  r.flipNoiseFloor = h.bounded("glossy:flipNoiseFloor", 0.0, 1.0);
   r.warnings = h.lines("glossy:warnings");
   if (h.number("glossy:noiseFloor.relativeRmseNoisy")) r.noiseFloor = h.figures("glossy:noiseFloor");
   r.settings = sheetSettings(spec);
@@ -275,8 +295,8 @@ SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::file
       for (const SheetPanel& known : sheetPanels())
         if (known.layer == layer && !known.fit.empty()) p.colour = known.colour;
     p.empty = h.number(key + ".empty").value_or(0.0) != 0.0;
-    p.e1 = h.number(error + ".E1");
-    p.e2 = h.number(error + ".E2");
+    p.e1 = h.bounded(error + ".E1", 0.0, std::numeric_limits<double>::infinity());
+    p.e2 = h.bounded(error + ".E2", 0.0, std::numeric_limits<double>::infinity());
     p.noiseFree = h.text(error + ".noiseFree");
     r.panels.push_back(std::move(p));
   }

@@ -3,8 +3,11 @@
 
 #include "materials/core/text.h"
 #include "renderer/report/html_text.h"
+#include "renderer/report/markdown.h"
 #include "renderer/report/site_layout.h"
 
+#include <filesystem>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -21,6 +24,20 @@ std::string numberCell(const std::optional<double>& v, const std::string& extra 
 }
 
 std::string list(const std::vector<std::string>& names) { return joined(names, ", ", escapeHtml); }
+
+// What a figure of the analysis shows (docs/study.md, "The files"), by its file's stem; a figure the page
+// does not know is captioned by its file name.
+std::string figureCaption(const std::string& file) {
+  static const std::map<std::string, std::string> kCaptions = {
+      {"error_curves", "Relative RMSE r* per material, the materials sorted by the reference model's r* (log axis)"},
+      {"heat_map", "Relative RMSE r* per material and model, on a log colour scale"},
+      {"critical_difference", "Critical-difference diagram: the models' mean ranks, joined where they do not differ significantly"},
+      {"brdf_vs_image", "BRDF-space error (E1, E2) against image error r*, log-log, one point per material and model"},
+      {"perceptual", "r*, \xEA\x9F\xBBLIP, E1 and E2 of the shared fits against the perceived distance"},
+  };
+  const auto it = kCaptions.find(std::filesystem::path(file).stem().string());
+  return it != kCaptions.end() ? it->second : file;
+}
 
 // The table's text columns, then its number columns, in order.
 constexpr const char* kTextColumns[] = {"Material", "Database", "Class", "Lighting", "Scene", "Model", "Fit"};
@@ -52,13 +69,15 @@ std::string studyPage(const study::StudyPlan& plan, const std::vector<study::Stu
   h << ".</p>\n</header>\n<main>\n";
 
   if (!files.summary.empty())
-    h << "<h2 id=\"summary-heading\">Summary</h2>\n<pre class=\"study-summary\" style=\"white-space:pre-wrap\">" << escapeHtml(files.summary) << "</pre>\n";
+    h << "<h2 id=\"summary-heading\">Summary</h2>\n<div class=\"study-summary\">\n" << markdownToHtml(files.summary) << "</div>\n";
   if (!files.figures.empty()) {
     h << "<h2 id=\"figures-heading\">Figures</h2>\n";
     for (const std::string& f : files.figures) {
       const std::string src = escapeHtml(study_layout::analysisFile(f));
-      h << "<figure class=\"study-figure\"><a href=\"" << src << "\"><img src=\"" << src << "\" alt=\"" << escapeHtml(f)
-        << "\" loading=\"lazy\" style=\"max-width:100%\"></a><figcaption>" << escapeHtml(f) << "</figcaption></figure>\n";
+      const std::string caption = figureCaption(f);
+      h << "<figure class=\"study-figure\"><a href=\"" << src << "\"><img src=\"" << src << "\" alt=\"" << escapeHtml(caption)
+        << "\" loading=\"lazy\" style=\"max-width:100%\"></a><figcaption>" << escapeHtml(caption) << " (<code>" << escapeHtml(f)
+        << "</code>)</figcaption></figure>\n";
     }
   }
   if (!files.others.empty()) {
@@ -69,9 +88,9 @@ std::string studyPage(const study::StudyPlan& plan, const std::vector<study::Stu
   }
 
   h << "<h2 id=\"materials-heading\">Rows</h2>\n<div class=\"controls\"><label for=\"filter\">Filter</label>"
-       "<input id=\"filter\" type=\"search\" placeholder=\"material, lighting, scene or model\" autocomplete=\"off\">"
+       "<input id=\"filter\" type=\"search\" placeholder=\"words of a material, database, lighting, scene, model or fit\" autocomplete=\"off\">"
        "<span id=\"shown\" class=\"muted\" aria-live=\"polite\">"
-    << rows.size() << " rows</span></div>\n<div class=\"table-wrap\">\n<table id=\"materials\" aria-labelledby=\"materials-heading\">\n<thead><tr>";
+    << rows.size() << " rows</span></div>\n<div class=\"table-wrap\">\n<table id=\"materials\" data-noun=\"rows\" aria-labelledby=\"materials-heading\">\n<thead><tr>";
   int col = 0;
   for (const char* c : kTextColumns)
     h << "<th scope=\"col\" class=\"text\" data-col=\"" << col++ << "\" data-type=\"text\"><button class=\"sort\" type=\"button\">" << c
@@ -82,7 +101,9 @@ std::string studyPage(const study::StudyPlan& plan, const std::vector<study::Stu
   h << "<th scope=\"col\" class=\"text\">Warning</th></tr></thead>\n<tbody class=\"rows\">\n";
   for (const study::StudyRow& r : rows) {
     const std::string page = study_layout::sheetsSite(r.scene, r.lighting) + layout::materialPage(r.material);
-    h << "<tr data-name=\"" << escapeHtml(r.material + " " + r.lighting + " " + r.scene + " " + r.label) << "\" data-verdict=\""
+    // Every text column's words, so the filter finds a row by any of them.
+    h << "<tr data-name=\"" << escapeHtml(joined(std::vector<std::string>{r.material, r.database, r.materialClass, r.lighting, r.scene, r.label, r.fit, r.fitSource}, " "))
+      << "\" data-verdict=\""
       << escapeHtml(r.closest ? "closest" : r.tied ? "tie" : "") << "\">"
       << "<td class=\"name\" data-value=\"" << escapeHtml(r.material) << "\"><a href=\"" << escapeHtml(page) << "\">"
       << escapeHtml(r.material) << "</a></td><td class=\"text\">" << escapeHtml(r.database) << "</td><td class=\"text\">"

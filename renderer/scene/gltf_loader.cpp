@@ -30,6 +30,10 @@ namespace glossy {
 
 namespace {
 
+// The brightest colour × intensity a punctual light may have: the bound --env-constant's radiance has
+// (renderer/app/scene_options.cpp), so that it times the brightest accepted BRDF peak stays finite in float.
+constexpr double kMaxLightIntensity = 1e12;
+
 std::string label(const char* kind, const std::string& name, int index) {
   return name.empty() ? std::string(kind) + " " + std::to_string(index) : std::string(kind) + " '" + name + "'";
 }
@@ -262,6 +266,12 @@ class GltfReader {
     if (color.size() != 3 || !allFinite(color) || *std::min_element(color.begin(), color.end()) < 0.0)
       fail(where + ": color must be three finite values ≥ 0");
     if (!(l.intensity >= 0.0) || !std::isfinite(l.intensity)) fail(where + ": intensity must be finite and ≥ 0");
+    // Bounded as --env-constant's radiance is: a light of 1e300 would overflow the float image (or drop out
+    // of light selection as infinite power) instead of lighting it; 1e12 is brighter than any lamp by far.
+    const double brightest = *std::max_element(color.begin(), color.end()) * l.intensity;
+    if (!(brightest <= kMaxLightIntensity))
+      fail(where + formatted(": color × intensity is %g, beyond %g (candela for point and spot lights, lux for directional)",
+                             brightest, kMaxLightIntensity));
     out.intensity = Rgb(color[0], color[1], color[2]) * l.intensity;
     if (l.type == "spot") {
       out.innerConeAngle = l.spot.innerConeAngle;

@@ -55,6 +55,49 @@ std::string jsonText(const std::filesystem::path& path) {
   return text;
 }
 
+// KHR_lights_punctual's lights, each field of the type the extension's schema gives it: tinygltf reads a
+// field of another type as if it were absent, so `"intensity": "1e300"` or `"color": "red"` would light the
+// scene with the default instead of being refused.
+void checkPunctualLights(const std::filesystem::path& path, const nlohmann::json& doc) {
+  const auto extensions = doc.find("extensions");
+  if (extensions == doc.end()) return;
+  if (!extensions->is_object()) fail(path, "extensions is not an object");
+  const auto punctual = extensions->find("KHR_lights_punctual");
+  if (punctual == extensions->end()) return;
+  if (!punctual->is_object()) fail(path, "extensions.KHR_lights_punctual is not an object");
+  const auto lights = punctual->find("lights");
+  if (lights == punctual->end()) return;
+  if (!lights->is_array()) fail(path, "KHR_lights_punctual.lights is not an array");
+  for (size_t i = 0; i < lights->size(); ++i) {
+    const nlohmann::json& light = (*lights)[i];
+    // Named as the loader names a light: "light 'Lamp'", or "light 3" when it has no name.
+    std::string where = "light " + std::to_string(i);
+    if (!light.is_object()) fail(path, where + " of KHR_lights_punctual is not an object");
+    if (const auto name = light.find("name"); name != light.end()) {
+      if (!name->is_string()) fail(path, where + ": name must be a string, not " + name->type_name());
+      if (!name->get<std::string>().empty()) where = "light '" + shortened(name->get<std::string>()) + "'";
+    }
+    const auto field = [&](const nlohmann::json& object, const char* key, const char* what, bool (nlohmann::json::*is)() const noexcept,
+                           const std::string& prefix = "") {
+      const auto f = object.find(key);
+      if (f != object.end() && !((*f).*is)()) fail(path, where + ": " + prefix + key + " must be " + what + ", not " + f->type_name());
+    };
+    const auto type = light.find("type");
+    if (type == light.end()) fail(path, where + " has no type (point, spot or directional)");
+    field(light, "type", "a string", &nlohmann::json::is_string);
+    field(light, "intensity", "a number", &nlohmann::json::is_number);
+    field(light, "range", "a number", &nlohmann::json::is_number);
+    field(light, "spot", "an object", &nlohmann::json::is_object);
+    if (const auto color = light.find("color"); color != light.end())
+      if (!color->is_array() || color->size() != 3 || !std::all_of(color->begin(), color->end(), [](const nlohmann::json& c) { return c.is_number(); }))
+        fail(path, where + ": color must be an array of three numbers");
+    if (const auto spot = light.find("spot"); spot != light.end()) {
+      field(*spot, "innerConeAngle", "a number", &nlohmann::json::is_number, "spot.");
+      field(*spot, "outerConeAngle", "a number", &nlohmann::json::is_number, "spot.");
+    }
+  }
+}
+
 }  // namespace
 
 void preflightGltf(const std::filesystem::path& path) {
@@ -88,6 +131,7 @@ void preflightGltf(const std::filesystem::path& path) {
   if (version == asset->end() || !version->is_string()) fail(path, "asset.version is missing or not a string");
   const std::string v = version->get<std::string>();
   if (v.rfind("2.", 0) != 0) fail(path, "asset.version is '" + v + "'; glossy reads glTF 2.x only");
+  checkPunctualLights(path, doc);
 }
 
 }  // namespace glossy

@@ -1,5 +1,7 @@
 #include "renderer/util/notes.h"
 
+#include "materials/core/text.h"
+
 #include <cstdio>
 #include <mutex>
 #include <utility>
@@ -28,7 +30,7 @@ std::vector<std::string>& pending() {
 
 void note(std::string line) {
   std::lock_guard guard(lock());
-  pending().push_back(std::move(line));
+  pending().push_back(safeLine(line));  // one safe line, as an error's message is (input_error.h)
 }
 
 void flushNotes() {

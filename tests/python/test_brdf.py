@@ -184,3 +184,30 @@ def test_measured_data_knows_its_source_and_notes_become_warnings(tmp_path):
     assert [str(w.message) for w in caught] == [f"{path}: 2 of 1458000 bins unmeasured (they evaluate to 0)"]
     cli = run_cli("eval", "--measured", path, stdin="0,0,1,0,0,1\n")
     assert cli.stderr == f"glossy: {path}: 2 of 1458000 bins unmeasured (they evaluate to 0)\n"
+
+
+def test_input_errors_are_one_safe_line(tmp_path):
+    """InputError's message is the command line's one safe line: control characters from a file name or a
+    file's content come escaped, and a long echo is cut with its length (materials/core/text.h, safeLine)."""
+    evil = tmp_path / "evil\x1b[2J\nsecond\x07.toml"
+    with pytest.raises(glossy.InputError) as e:
+        glossy.load_material(evil)
+    message = str(e.value)
+    assert not any(ord(c) < 0x20 or ord(c) == 0x7f for c in message), repr(message)
+    assert "evil\\x1b[2J\\nsecond\\x07.toml" in message
+    assert message == cli_error("eval", "--material", evil, "--fit", "smooth:E2")
+
+    bad = tmp_path / "m.toml"
+    bad.write_text('name = "a\\u0000\\u001b[1A\\u202e' + "b" * 5000 + '"\n')
+    with pytest.raises(glossy.InputError) as e:
+        glossy.load_material(bad)
+    message = str(e.value)
+    assert not any(ord(c) < 0x20 or ord(c) == 0x7f or c == "\u202e" for c in message), repr(message)
+    assert len(message) < 1200, message
+
+    long = tmp_path / ("x" * 200) / ("y" * 200) / ("z" * 200) / ("w" * 200) / ("v" * 200) / "m.toml"
+    with pytest.raises(glossy.InputError) as e:
+        glossy.load_material(long)
+    message = str(e.value)
+    assert "characters) …" in message and len(message) < 1200, message
+    assert message.endswith("cannot open material file: not found"), message

@@ -100,6 +100,9 @@ void expectOneLineError(const RunResult& r, const std::string& mention) {
   EXPECT_TRUE(r.out.empty()) << r.out;
   ASSERT_FALSE(r.err.empty());
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
+  // One safe line (materials/core/text.h, safeLine): no control character a terminal would act on.
+  const bool control = std::any_of(r.err.begin(), r.err.end() - 1, [](char c) { return (unsigned char)c < 0x20 || c == 0x7f; });
+  EXPECT_FALSE(control) << "a control character in: " << r.err;
   EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
 }
 

@@ -48,18 +48,22 @@ function sortRows(body, col, isText, ascending) {
   for (const r of rows) body.appendChild(r.row);
 }
 
-// Filtering: rows whose material name or verdict contains the text (any case) stay shown.
+// Filtering: rows whose words (data-name: the material, and on the study page its database, lighting,
+// scene, model and fit) and verdict contain every word of the text (any case) stay shown: "studio smooth"
+// keeps the Smooth rows under the studio lighting. The count names what the table's rows are (data-noun:
+// "materials" on the index, "rows" on the study page).
 function setUpFilter(input, table, status) {
   const rows = Array.from(table.querySelectorAll("tbody.rows tr"));
+  const noun = table.dataset.noun || "materials";
   const apply = () => {
-    const q = input.value.trim().toLowerCase();
+    const words = input.value.trim().toLowerCase().split(/\s+/).filter((w) => w !== "");
     let shown = 0;
     for (const row of rows) {
       const text = ((row.dataset.name || "") + " " + (row.dataset.verdict || "")).toLowerCase();
-      row.hidden = q !== "" && !text.includes(q);
+      row.hidden = !words.every((w) => text.includes(w));
       if (!row.hidden) ++shown;
     }
-    if (status) status.textContent = shown + " of " + rows.length + " materials shown";
+    if (status) status.textContent = shown + " of " + rows.length + " " + noun + " shown";
   };
   input.addEventListener("input", apply);
   apply();
