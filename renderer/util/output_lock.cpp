@@ -51,7 +51,10 @@ OutputLock::OutputLock(const std::filesystem::path& destination, std::string_vie
 void OutputLock::take(const std::filesystem::path& destination, std::string_view option) {
   const std::string where = std::string(option) + ": " + destination.string();
   const std::filesystem::path folder = destination.has_parent_path() ? destination.parent_path() : std::filesystem::path(".");
-  lockPath_ = folder / ("." + destination.filename().string() + ".lock");
+  // Appended in place: GCC 12's -Wrestrict misreads the inlined `"." + name + ".lock"` as an overlapping copy.
+  std::string lockName = ".";
+  lockName.append(destination.filename().string()).append(".lock");
+  lockPath_ = folder / lockName;
   std::error_code ec;
   for (std::filesystem::path f = folder; !f.empty() && !std::filesystem::exists(f, ec); f = f.parent_path()) {
     madeFolders_.push_back(f);
