@@ -73,4 +73,31 @@ TEST(MeasuredResolution, EvalOfANameFoundUnderMerlDirIsEvalOfThePath) {
   EXPECT_EQ(byName.out, byPath.out);
 }
 
+// A material file finds what sits beside it — its embedded network — by one rule, whatever the working folder:
+// run in the material's own folder with a bare file name, in its parent, or with an absolute path, every
+// command that reads a material's measured data reads the same network (materialFolder, resolveMeasured).
+TEST(MeasuredResolution, AMaterialFindsItsNetworkWhateverTheWorkingFolder) {
+  TempDir tmp;
+  std::filesystem::create_directories(tmp / "lib");
+  for (const char* f : {"alum-bronze.toml", "alum-bronze.nbrdf"}) std::filesystem::copy_file(materialsDir() / f, tmp / "lib" / f);
+  // The figures of `glossy error`, past its first line (which names the data by its path from here).
+  const auto figures = [](const RunResult& r) { return r.out.substr(std::min(r.out.find('\n'), r.out.size())); };
+  std::string expected;
+  for (const auto& [cwd, material] : std::vector<std::pair<std::filesystem::path, std::string>>{
+           {tmp / "lib", "alum-bronze.toml"}, {tmp.path(), "lib/alum-bronze.toml"}, {tmp / "lib", (tmp / "lib/alum-bronze.toml").string()}}) {
+    SCOPED_TRACE(cwd.string() + ": " + material);
+    const RunResult error = runGlossyIn(cwd, {"GLOSSY_MERL_DIR"}, {"error", "--material", material});
+    ASSERT_EQ(error.status, 0) << error.err;
+    EXPECT_NE(error.out.find("NBRDF"), std::string::npos) << error.out;
+    if (expected.empty()) expected = figures(error);
+    EXPECT_EQ(figures(error), expected);
+    const RunResult sheet = runGlossyIn(cwd, {"GLOSSY_MERL_DIR"},
+                                        {"sheet", "--material", material, "--width", "8", "--height", "8", "--spp", "1", "--panels",
+                                         "measured,cook-torrance:E2", "-o", (tmp / "out/s.exr").string()});
+    ASSERT_EQ(sheet.status, 0) << sheet.err;
+    EXPECT_EQ((sheet.out + sheet.err).find("no measured"), std::string::npos) << sheet.out << sheet.err;
+    EXPECT_EQ((sheet.out + sheet.err).find("no MERL data"), std::string::npos) << sheet.out << sheet.err;
+  }
+}
+
 }  // namespace glossy::test

@@ -330,9 +330,20 @@ std::optional<std::filesystem::path> resolveMeasured(const std::string& measured
   for (const char* extension : {".xz", ".binary", ".nbrdf"})
     if (stem.extension() == extension) stem = stem.stem();
   if (stem.empty() || stem == "." || stem == "..") return std::nullopt;
-  const std::filesystem::path network = materialDir / (stem.string() + ".nbrdf");
+  // Beside a material file named bare (its folder "."), the network is "NAME.nbrdf", not "./NAME.nbrdf".
+  const std::filesystem::path network = materialDir == "." ? std::filesystem::path(stem.string() + ".nbrdf")
+                                                           : materialDir / (stem.string() + ".nbrdf");
   if (std::filesystem::is_regular_file(network, ec)) return network;
   return std::nullopt;
+}
+
+std::filesystem::path materialFolder(const std::filesystem::path& materialFile) {
+  return materialFile.has_parent_path() ? materialFile.parent_path() : std::filesystem::path(".");
+}
+
+std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& material, const std::filesystem::path& merlDir) {
+  // A material made in memory (measuredMaterial) has no file, so nothing beside one.
+  return resolveMeasured(material.measured, merlDir, material.path.empty() ? std::filesystem::path() : materialFolder(material.path));
 }
 
 }  // namespace glossy

@@ -85,6 +85,15 @@ Brdf makeBrdf(const Fit& fit);
 std::optional<std::filesystem::path> resolveMeasured(const std::string& measured, const std::filesystem::path& merlDir = {},
                                                      const std::filesystem::path& materialDir = {});
 
+// The folder of a material file, where what belongs to it sits (its embedded network): the file's own
+// folder, "." for a bare file name — so that the rule is the same whatever the working folder, the file's
+// folder never being mistaken for "no folder".
+std::filesystem::path materialFolder(const std::filesystem::path& materialFile);
+
+// A loaded material's measured data by the rule above, beside the file it was loaded from. Every command
+// resolves a material's own data through this, never through its path's parent_path().
+std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& material, const std::filesystem::path& merlDir);
+
 // A new material measured by the MERL table of its name ("alum-bronze" by "alum-bronze.binary").
 inline MaterialFile measuredMaterial(const std::string& name, std::string_view source) {
   return {.name = name, .measured = name + ".binary", .source = std::string(source), .fits = {}, .path = {}};
