@@ -94,6 +94,12 @@ std::filesystem::path materialFolder(const std::filesystem::path& materialFile);
 // resolves a material's own data through this, never through its path's parent_path().
 std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& material, const std::filesystem::path& merlDir);
 
+// The folders of MERL tables given to a command: `merlDir` (from `option`, "--merl-dir"; skipped when
+// empty) and $GLOSSY_MERL_DIR when set and non-empty must each be a folder that exists. A missing one, a
+// file or a FIFO would otherwise be passed over in silence and the tables looked for elsewhere; InputError
+// "OPTION PATH: ..." (or "$GLOSSY_MERL_DIR PATH: ...").
+void checkMerlDirs(const std::filesystem::path& merlDir, std::string_view option = "--merl-dir");
+
 // A new material measured by the MERL table of its name ("alum-bronze" by "alum-bronze.binary").
 inline MaterialFile measuredMaterial(const std::string& name, std::string_view source) {
   return {.name = name, .measured = name + ".binary", .source = std::string(source), .fits = {}, .path = {}};
