@@ -38,9 +38,9 @@ void OutputLock::removeMadeFolders() const {
     if (::rmdir(f.c_str()) != 0) break;  // not empty: the output (or another run's) is in it
 }
 
-OutputLock::OutputLock(const std::filesystem::path& destination, std::string_view option) {
+OutputLock::OutputLock(const std::filesystem::path& destination, std::string_view option, Busy busy) {
   try {
-    take(destination, option);
+    take(destination, option, busy);
   } catch (...) {
     if (fd_ >= 0) ::close(fd_);
     removeMadeFolders();
@@ -48,7 +48,7 @@ OutputLock::OutputLock(const std::filesystem::path& destination, std::string_vie
   }
 }
 
-void OutputLock::take(const std::filesystem::path& destination, std::string_view option) {
+void OutputLock::take(const std::filesystem::path& destination, std::string_view option, Busy busy) {
   const std::string where = std::string(option) + ": " + destination.string();
   const std::filesystem::path folder = destination.has_parent_path() ? destination.parent_path() : std::filesystem::path(".");
   // Appended in place: GCC 12's -Wrestrict misreads the inlined `"." + name + ".lock"` as an overlapping copy.
@@ -77,7 +77,7 @@ void OutputLock::take(const std::filesystem::path& destination, std::string_view
       throw InputError(where + ": cannot make the lock file " + lockPath_.string() + ": " + std::strerror(errno));
     }
     if (!regularFile(fd_)) throw InputError(where + ": its lock file " + lockPath_.string() + " is not a file");
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    if (::flock(fd_, busy == Busy::Wait ? LOCK_EX : LOCK_EX | LOCK_NB) != 0) {
       const int e = errno;
       ::close(fd_);
       fd_ = -1;
