@@ -7,8 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
+#include <future>
 #include <map>
+#include <set>
+#include <thread>
 
 using namespace glossy;
 using namespace glossy::test;
@@ -16,6 +20,12 @@ using namespace glossy::test;
 namespace fs = std::filesystem;
 
 namespace {
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
 
 // Two materials of two databases × two lightings, 16² panels at 16 spp, four panels: seconds in all.
 const std::string kTinyStudy = R"(# a tiny study (docs/study.md)
@@ -176,4 +186,91 @@ TEST(StudyCli, BadStudyFilesAreRefusedBeforeAnyWork) {
   writeText(tmp / "theirs/notes.txt", "mine");
   expectOneLineError(runStudy(tmp / "good.toml", tmp / "theirs"), "not a study's output");
   expectOneLineError(runStudy(tmp / "good.toml", tmp / "out", {"--shard", "0/2", "--analyse"}), "--analyse");
+}
+
+// An output folder is a study's own only when glossy says so (renderer/study/study_folder.h): a folder whose
+// study.json glossy did not write, or that another study's run claimed, is refused before any work and left
+// as it was.
+TEST(StudyCli, AFolderIsAStudysOwnOnlyWhenGlossySaysSo) {
+  TempDir tmp;
+  writeText(tmp / "tiny.toml", kTinyStudy);
+  // A user's folder that merely holds a file of that name.
+  const std::string notes = "{\"my\": \"notes\"}\n";
+  fs::create_directories(tmp / "theirs");
+  writeText(tmp / "theirs/study.json", notes);
+  expectOneLineError(runStudy(tmp / "tiny.toml", tmp / "theirs"), "-o " + (tmp / "theirs").string() + ": its study.json is not a plan glossy wrote");
+  EXPECT_EQ(readText(tmp / "theirs/study.json"), notes);
+  EXPECT_FALSE(fs::exists(tmp / "theirs/sheets")) << "no sheet written among the user's files";
+
+  // Another study's folder, at other settings: neither re-rendered nor re-analysed.
+  ASSERT_EQ(runStudy(tmp / "tiny.toml", tmp / "out").status, 0);
+  const auto before = outputs(tmp / "out");
+  writeText(tmp / "other.toml", replaced(kTinyStudy, "spp = 16", "spp = 8"));
+  expectOneLineError(runStudy(tmp / "other.toml", tmp / "out"), "-o " + (tmp / "out").string() + ": holds the output of another study");
+  EXPECT_TRUE(outputs(tmp / "out") == before) << "the other study's folder is left as it was";
+
+  // The same study file, edited, is the same study: run again, it does what is left.
+  writeText(tmp / "tiny.toml", replaced(kTinyStudy, "resamples = 200", "resamples = 300"));
+  const RunResult edited = runStudy(tmp / "tiny.toml", tmp / "out");
+  EXPECT_EQ(edited.status, 0) << edited.err;
+}
+
+// Two runs of different studies started on one folder: the second is refused, and the first analyses the plan
+// it rendered (held in memory), not the one the second would have put in the folder.
+TEST(StudyCli, TwoStudiesStartedOnOneFolderDoNotShareIt) {
+  TempDir tmp;
+  writeText(tmp / "a.toml", kTinyStudy);
+  writeText(tmp / "b.toml", replaced(kTinyStudy, R"(materials = ["merl/gold-paint", "nielsen2015/bluebook"])", R"(materials = ["merl/chrome"])"));
+  auto first = std::async(std::launch::async, [&] { return runStudy(tmp / "a.toml", tmp / "out"); });
+  for (int i = 0; i < 1200 && !fs::exists(tmp / "out/study.json"); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+  const RunResult second = runStudy(tmp / "b.toml", tmp / "out");
+  const RunResult a = first.get();
+  ASSERT_EQ(a.status, 0) << a.err;
+  expectOneLineError(second, "holds the output of another study");
+  EXPECT_FALSE(fs::exists(tmp / "out/sheets/preview/sky/chrome.exr")) << "the second study rendered nothing there";
+  std::set<std::string> materials;
+  for (const auto& row : readCsv(tmp / "out/analysis/rows.csv")) materials.insert(row.at("material"));
+  EXPECT_EQ(materials, (std::set<std::string>{"bluebook", "gold-paint"})) << "the first study's rows, and only them";
+}
+
+// No command writes through a symlink leading out of its output folder (renderer/output/inside_folder.h):
+// OUT/analysis or OUT/sheets/SCENE/LIGHTING made a link elsewhere is refused, and nothing is written there.
+TEST(StudyCli, NothingIsWrittenThroughASymlinkOutOfTheFolder) {
+  TempDir tmp;
+  writeText(tmp / "tiny.toml", kTinyStudy);
+  ASSERT_EQ(runStudy(tmp / "tiny.toml", tmp / "out").status, 0);
+  fs::create_directories(tmp / "elsewhere");
+  for (const char* link : {"analysis", "sheets/preview/sky"}) {
+    SCOPED_TRACE(link);
+    fs::rename(tmp / "out" / link, tmp / "moved");
+    fs::create_directory_symlink(tmp / "elsewhere", tmp / "out" / link);
+    expectOneLineError(runStudy(tmp / "tiny.toml", tmp / "out"), std::string(link) + " is a symlink leading out of it");
+    EXPECT_TRUE(fs::is_empty(tmp / "elsewhere")) << "nothing written outside OUT";
+    fs::remove(tmp / "out" / link);
+    fs::rename(tmp / "moved", tmp / "out" / link);
+  }
+  // glossy sheets likewise: a sheet's place a link out of -o.
+  fs::create_directories(tmp / "sheets");
+  writeText(tmp / "elsewhere/notes.exr", "mine");
+  fs::create_symlink(tmp / "elsewhere/notes.exr", tmp / "sheets/chrome.exr");
+  expectOneLineError(runGlossy({"sheets", (materialsDir() / "chrome.toml").string(), "--width", "8", "--height", "8", "--spp", "1", "-o",
+                                (tmp / "sheets").string()}),
+                     "chrome.exr is a symlink leading out of it");
+  EXPECT_EQ(readText(tmp / "elsewhere/notes.exr"), "mine");
+}
+
+// An analysis is written whole (renderer/util/fresh_folder.h): a rerun leaves no file of an earlier run's
+// analysis behind — a perceptual.svg from a run with perceptual data, here planted — and no fresh folder.
+TEST(StudyCli, AnAnalysisIsWrittenWhole) {
+  TempDir tmp;
+  writeText(tmp / "tiny.toml", kTinyStudy);
+  ASSERT_EQ(runStudy(tmp / "tiny.toml", tmp / "out").status, 0);
+  const auto first = outputs(tmp / "out/analysis");
+  writeText(tmp / "out/analysis/perceptual.svg", "<svg/>");
+  const RunResult again = runStudy(tmp / "tiny.toml", tmp / "out");
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_FALSE(fs::exists(tmp / "out/analysis/perceptual.svg")) << "an earlier run's figure left beside this run's";
+  EXPECT_TRUE(outputs(tmp / "out/analysis") == first);
+  for (const auto& e : fs::directory_iterator(tmp / "out"))
+    EXPECT_EQ(e.path().filename().string().find(".tmp.glossy-"), std::string::npos) << e.path();
 }

@@ -330,9 +330,38 @@ std::optional<std::filesystem::path> resolveMeasured(const std::string& measured
   for (const char* extension : {".xz", ".binary", ".nbrdf"})
     if (stem.extension() == extension) stem = stem.stem();
   if (stem.empty() || stem == "." || stem == "..") return std::nullopt;
-  const std::filesystem::path network = materialDir / (stem.string() + ".nbrdf");
+  // Beside a material file named bare (its folder "."), the network is "NAME.nbrdf", not "./NAME.nbrdf".
+  const std::filesystem::path network = materialDir == "." ? std::filesystem::path(stem.string() + ".nbrdf")
+                                                           : materialDir / (stem.string() + ".nbrdf");
   if (std::filesystem::is_regular_file(network, ec)) return network;
   return std::nullopt;
+}
+
+std::filesystem::path materialFolder(const std::filesystem::path& materialFile) {
+  return materialFile.has_parent_path() ? materialFile.parent_path() : std::filesystem::path(".");
+}
+
+std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& material, const std::filesystem::path& merlDir) {
+  // A material made in memory (measuredMaterial) has no file, so nothing beside one.
+  return resolveMeasured(material.measured, merlDir, material.path.empty() ? std::filesystem::path() : materialFolder(material.path));
+}
+
+namespace {
+
+void checkMerlFolder(const std::filesystem::path& dir, const std::string& where) {
+  std::error_code ec;
+  const std::filesystem::file_status s = std::filesystem::status(dir, ec);
+  if (!std::filesystem::exists(s)) throw InputError(where + ": no such folder");
+  if (std::filesystem::is_regular_file(s)) throw InputError(where + ": is a file, not a folder of MERL tables");
+  if (!std::filesystem::is_directory(s)) throw InputError(where + ": is not a folder (a FIFO, device or socket)");
+}
+
+}  // namespace
+
+void checkMerlDirs(const std::filesystem::path& merlDir, std::string_view option) {
+  if (!merlDir.empty()) checkMerlFolder(merlDir, std::string(option) + " " + printableLine(merlDir.string(), 200));
+  if (const char* env = std::getenv("GLOSSY_MERL_DIR"); env && *env)
+    checkMerlFolder(env, "$GLOSSY_MERL_DIR " + printableLine(env, 200));
 }
 
 }  // namespace glossy

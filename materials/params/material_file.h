@@ -85,6 +85,21 @@ Brdf makeBrdf(const Fit& fit);
 std::optional<std::filesystem::path> resolveMeasured(const std::string& measured, const std::filesystem::path& merlDir = {},
                                                      const std::filesystem::path& materialDir = {});
 
+// The folder of a material file, where what belongs to it sits (its embedded network): the file's own
+// folder, "." for a bare file name — so that the rule is the same whatever the working folder, the file's
+// folder never being mistaken for "no folder".
+std::filesystem::path materialFolder(const std::filesystem::path& materialFile);
+
+// A loaded material's measured data by the rule above, beside the file it was loaded from. Every command
+// resolves a material's own data through this, never through its path's parent_path().
+std::optional<std::filesystem::path> resolveMeasured(const MaterialFile& material, const std::filesystem::path& merlDir);
+
+// The folders of MERL tables given to a command: `merlDir` (from `option`, "--merl-dir"; skipped when
+// empty) and $GLOSSY_MERL_DIR when set and non-empty must each be a folder that exists. A missing one, a
+// file or a FIFO would otherwise be passed over in silence and the tables looked for elsewhere; InputError
+// "OPTION PATH: ..." (or "$GLOSSY_MERL_DIR PATH: ...").
+void checkMerlDirs(const std::filesystem::path& merlDir, std::string_view option = "--merl-dir");
+
 // A new material measured by the MERL table of its name ("alum-bronze" by "alum-bronze.binary").
 inline MaterialFile measuredMaterial(const std::string& name, std::string_view source) {
   return {.name = name, .measured = name + ".binary", .source = std::string(source), .fits = {}, .path = {}};

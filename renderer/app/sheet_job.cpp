@@ -29,7 +29,7 @@ constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 std::shared_ptr<const MerlTable> measuredOf(const MaterialFile& m, const SheetJob& o, const std::string& explicitPath,
                                             std::string& note) {
   const std::optional<std::filesystem::path> path = explicitPath.empty()
-                                                        ? resolveMeasured(m.measured, o.merlDir, m.path.parent_path())
+                                                        ? resolveMeasured(m, o.merlDir)
                                                         : findMeasured(explicitPath, o.merlDir);
   if (!path) {
     note = m.measured.empty() ? "the material names no measured data"
@@ -50,7 +50,7 @@ void applyPassLimits(SheetSettings& s, bool sppGiven) {
 
 std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetJob& o, const std::string& explicitMeasured) {
   const std::optional<std::filesystem::path> measured = explicitMeasured.empty()
-                                                            ? resolveMeasured(m.measured, o.merlDir, m.path.parent_path())
+                                                            ? resolveMeasured(m, o.merlDir)
                                                             : std::optional(std::filesystem::path(explicitMeasured));
   using namespace options;
   const SheetSettings& s = o.settings;
@@ -178,7 +178,7 @@ constexpr double kMeasuredPanelCost = 2.5;
 double sheetCost(const MaterialFile& m, const SheetJob& job) {
   double cost = 0.0;
   for (const SheetPanel& p : job.settings.panels)
-    if (p.fit.empty() ? resolveMeasured(m.measured, job.merlDir, m.path.parent_path()).has_value()
+    if (p.fit.empty() ? resolveMeasured(m, job.merlDir).has_value()
                       : m.find(FitId::parse(p.fit, m.path.string())) != nullptr)
       cost += p.fit.empty() ? kMeasuredPanelCost : 1.0;
   return std::max(cost, 1.0);  // an empty sheet still costs its scene and files

@@ -246,6 +246,7 @@ StudyFile loadStudyFile(const fs::path& path, const fs::path& library) {
   study.path = path;
   std::error_code ec;
   const Reader r{path.string(), fs::weakly_canonical(path, ec).parent_path()};
+  study.plan.study = fs::weakly_canonical(fs::absolute(path, ec), ec);
   const toml::table root = parseToml(readInputFile(path, kMaxStudyFileBytes, "study file"), r.source);
   r.keys(root, "", {"materials", "perceptual", "lightings", "scenes", "settings", "analysis"});
 

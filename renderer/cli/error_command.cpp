@@ -23,7 +23,7 @@ int runError(const ErrorOptions& o) {
   const MaterialFile material = loadMaterialFile(o.material);
   std::filesystem::path tablePath;
   if (!o.measured.empty()) tablePath = findMeasured(o.measured, o.merlDir);
-  else if (auto p = resolveMeasured(material.measured, o.merlDir, material.path.parent_path())) tablePath = *p;
+  else if (auto p = resolveMeasured(material, o.merlDir)) tablePath = *p;
   else throw InputError(o.material + ": names no measured data that exists; pass --measured FILE");
   const auto table = loadMeasured(tablePath);
   const MetricData e1(*table, Metric::E1), e2(*table, Metric::E2);

@@ -9,6 +9,7 @@
 #include "materials/models/registry.h"
 #include "renderer/app/brdf_options.h"
 #include "renderer/app/destination.h"
+#include "renderer/output/inside_folder.h"
 #include "renderer/app/fit_output.h"
 #include "renderer/app/shard.h"
 #include "renderer/cli/command.h"
@@ -126,6 +127,7 @@ int runBatch(const FitOptions& o) {
   size_t done = 0;
   for (size_t t = 0; t < tables.size(); ++t) {
     const std::filesystem::path out = std::filesystem::path(o.outDir) / (materialNameOf(tables[t]) + ".toml");
+    checkWriteInside(o.outDir, out, "--out-dir");
     const MaterialFile existing = materialForFit(out, tables[t]);
     for (const auto& model : models)
       for (Metric metric : metrics) {

@@ -3,6 +3,7 @@
 #include "materials/core/input_error.h"
 #include "materials/params/importer.h"
 #include "renderer/app/destination.h"
+#include "renderer/output/inside_folder.h"
 #include "renderer/cli/command.h"
 
 #include <iostream>
@@ -32,6 +33,7 @@ int runImport(const ImportOptions& o) {
   std::vector<MaterialFile> merged;
   for (const std::string& name : importer.names()) {
     const std::filesystem::path path = dir / (name + ".toml");
+    checkWriteInside(dir, path, "-o");
     MaterialFile existing;
     if (std::filesystem::exists(path, ec)) {
       try {

@@ -30,7 +30,7 @@ int width(const SheetPanel& column) { return std::max(9, int(column.label.size()
 // "found" (a table), "network" (only the embedded Neural BRDF), "missing", or "-" when it names none.
 std::string measuredState(const MaterialFile& m, const std::string& merlDir) {
   if (m.measured.empty()) return "-";
-  const auto path = resolveMeasured(m.measured, merlDir, m.path.parent_path());
+  const auto path = resolveMeasured(m, merlDir);
   return !path ? "missing" : path->extension() == ".nbrdf" ? "network" : "found";
 }
 

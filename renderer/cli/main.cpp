@@ -4,6 +4,7 @@
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "renderer/util/notes.h"
+#include "materials/params/material_file.h"
 #include "renderer/cli/command.h"
 
 #include <algorithm>
@@ -38,6 +39,13 @@ int main(int argc, char** argv) {
   try {
     for (const cli::Command& c : commands)
       if (c.app->parsed()) {
+        // Checked here for every command that takes --merl-dir: a folder that is not one would otherwise be
+        // passed over in silence, the tables looked for elsewhere or not at all.
+        if (const CLI::Option* merlDir = c.app->get_option_no_throw("--merl-dir")) {
+          const std::string given = merlDir->count() > 0 ? merlDir->as<std::string>() : std::string();
+          if (merlDir->count() > 0 && given.empty()) throw InputError("--merl-dir: an empty path");
+          checkMerlDirs(given, "--merl-dir");
+        }
         const int status = c.run();
         flushNotes();
         return status;

@@ -9,6 +9,7 @@
 #include "materials/core/text.h"
 #include "materials/params/material_file.h"
 #include "renderer/app/destination.h"
+#include "renderer/output/inside_folder.h"
 #include "renderer/cli/command.h"
 #include "renderer/report/sheet_record.h"
 
@@ -61,6 +62,7 @@ int runMergeFits(const MergeOptions& o) {
       throw InputError(path.string() + ": names the material '" + shard.name + "', as " + seen->second.from.string() +
                        " does: merge one of them at a time");
     const std::filesystem::path into = std::filesystem::path(o.library) / (shard.name + ".toml");
+    checkWriteInside(o.library, into, "-o");
     std::error_code ec;
     const bool exists = std::filesystem::exists(into, ec);
     MaterialFile library = exists ? loadMaterialFile(into) : shard;

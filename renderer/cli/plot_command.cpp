@@ -39,7 +39,7 @@ int runPlot(const PlotOptions& o) {
   // The measured data as the sheets find it: --measured, else the file's own under --merl-dir,
   // $GLOSSY_MERL_DIR or the working folder, else the network embedded beside the material file.
   const std::optional<std::filesystem::path> path =
-      o.measured.empty() ? resolveMeasured(m.measured, o.merlDir, m.path.parent_path())
+      o.measured.empty() ? resolveMeasured(m, o.merlDir)
                          : std::optional(findMeasured(o.measured, o.merlDir));
   std::shared_ptr<const MerlTable> table;
   std::string label;

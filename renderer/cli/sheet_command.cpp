@@ -6,6 +6,7 @@
 #include "materials/core/text.h"
 #include "materials/params/material_file.h"
 #include "renderer/app/destination.h"
+#include "renderer/output/inside_folder.h"
 #include "renderer/app/image_memory.h"
 #include "renderer/app/shard.h"
 #include "renderer/app/sheet_job.h"
@@ -92,9 +93,12 @@ int runSheets(const SheetOptions& options) {
       throw InputError(it->second.string() + " and " + f.string() + ": both name the material '" + name +
                        "' (one sheet " + name + ".exr each)");
     std::error_code ec;
-    for (const char* extension : {".exr", ".png"})
-      if (const auto path = outDir / (name + extension); std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
+    for (const char* extension : {".exr", ".png"}) {
+      const auto path = outDir / (name + extension);
+      checkWriteInside(outDir, path, "-o");  // a symlink out of -o: refused, not followed
+      if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
         throw InputError(path.string() + ": is in the way of " + f.string() + "'s sheet (not a file)");
+    }
     names.push_back(name);
     costs.push_back(sheetCost(m, o));
   }

@@ -10,10 +10,13 @@
 #include "renderer/app/sheet_resume.h"
 #include "renderer/app/study_file.h"
 #include "renderer/cli/command.h"
+#include "renderer/output/inside_folder.h"
 #include "renderer/study/study_analysis.h"
+#include "renderer/study/study_folder.h"
 #include "renderer/study/study_rows.h"
-#include "renderer/util/atomic_file.h"
+#include "renderer/util/fresh_folder.h"
 #include "renderer/util/notes.h"
+#include "renderer/util/output_lock.h"
 
 #include <cstdio>
 #include <iostream>
@@ -39,14 +42,6 @@ struct StudyItem {
   std::string tag;
 };
 
-// OUT must be new, empty, or a study's (its study.json): the study never writes into a folder of other files.
-void checkStudyFolder(const fs::path& out) {
-  std::error_code ec;
-  if (!fs::is_directory(out, ec) || fs::is_empty(out, ec) || study::isStudyFolder(out)) return;
-  throw InputError("-o " + out.string() + ": a folder that is not a study's output (no " + study::kPlanFile +
-                   "); give a new or empty folder, or the -o of an earlier run of this study");
-}
-
 int runStudy(const StudyOptions& o) {
   const StudyFile file = loadStudyFile(o.file, defaultMaterialsDir());
   SheetJob job = file.job;
@@ -56,7 +51,9 @@ int runStudy(const StudyOptions& o) {
   job.settings.passLines = true;
   checkOutputFolder(o.out, "-o");
   const fs::path out = o.out;
-  checkStudyFolder(out);
+  // The plan this run renders and analyses, held here: never read back from OUT (study_folder.h).
+  const study::StudyPlan& plan = file.plan;
+  study::checkStudyFolder(out, plan);
   try {
     checkImageMemory(job.settings.width, job.settings.height, int(job.settings.panels.size()), kSheetBytesPerPanelPixel);
   } catch (const InputError& e) {
@@ -67,7 +64,6 @@ int runStudy(const StudyOptions& o) {
 
   // Every sheet, its cost and its place, checked before any work; all of them, not just this shard's: the
   // other shards write to the same folder.
-  const study::StudyPlan& plan = file.plan;
   std::vector<MaterialFile> materials;
   for (const study::PlannedMaterial& m : plan.materials) materials.push_back(loadMaterialFile(m.file));
   std::vector<StudyItem> items;
@@ -77,12 +73,19 @@ int runStudy(const StudyOptions& o) {
       for (size_t m = 0; m < plan.materials.size(); ++m) {
         const fs::path relative = study::sheetPath(plan.scenes[s], plan.lightings[l], plan.materials[m].name);
         std::error_code ec;
-        for (const char* extension : {".exr", ".png"})
-          if (const fs::path p = (out / relative).replace_extension(extension); fs::exists(p, ec) && !fs::is_regular_file(p, ec))
+        for (const char* extension : {".exr", ".png"}) {
+          const fs::path p = (out / relative).replace_extension(extension);
+          checkWriteInside(out, p, "-o");  // OUT/sheets/SCENE/LIGHTING a symlink out of OUT: refused, not followed
+          if (fs::exists(p, ec) && !fs::is_regular_file(p, ec))
             throw InputError(p.string() + ": is in the way of a sheet of the study (not a file)");
+        }
         items.push_back({s, l, m, out / relative, relative.generic_string()});
         costs.push_back(sheetCost(materials[m], job));
       }
+  const fs::path analysisFolder = out / study::kAnalysisFolder;
+  checkWriteInside(out, analysisFolder, "-o");
+  if (std::error_code ec; fs::exists(fs::symlink_status(analysisFolder, ec)) && !fs::is_directory(analysisFolder, ec))
+    throw InputError(analysisFolder.string() + ": is in the way of the study's analysis (not a folder)");
   // The scene and lighting of each pair, loaded once: a missing map or a bad scene fails here.
   std::vector<std::unique_ptr<Stage>> stages;
   const double aspect = double(job.settings.width) / double(job.settings.height);
@@ -97,20 +100,9 @@ int runStudy(const StudyOptions& o) {
 
   const std::vector<size_t> mine = shardItems(costs, shard, "glossy study", "sheets");
 
-  // The plan, so that the sheets read back into rows with nothing but OUT (every run writes the same bytes).
-  fs::create_directories(out);
-  const std::string planText = study::planJson(plan);
-  {
-    std::error_code ec;
-    std::string there;
-    if (study::isStudyFolder(out)) {
-      try {
-        there = readInputFile(out / study::kPlanFile, 16 << 20, "study plan");
-      } catch (const InputError&) {
-      }
-    }
-    if (there != planText) writeFileAtomically(out / study::kPlanFile, planText);
-  }
+  // The plan, so that the sheets read back into rows with nothing but OUT (every run writes the same bytes),
+  // and the folder's marker: from here, a run of another study is refused.
+  study::claimStudyFolder(out, plan);
 
   const size_t busy = o.analyseOnly ? 0 : renderBatch(
       mine.size(), [&](size_t n) { return items[mine[n]].tag; },
@@ -141,18 +133,23 @@ int runStudy(const StudyOptions& o) {
                  items.size(), first.c_str(), o.file.c_str(), o.out.c_str());
     return 1;
   }
-  const std::vector<study::StudyRow> rows = study::readStudyRows(out);
+  const std::vector<study::StudyRow> rows = study::readStudyRows(out, plan);
   study::AnalysisOptions analysis;
   analysis.seed = job.settings.seed;
   analysis.resamples = file.resamples;
   analysis.perceptualDir = plan.perceptualDir;
   analysis.referenceModel = file.referenceModel;
-  const fs::path folder = out / study::kAnalysisFolder;
-  fs::create_directories(folder);
-  const study::AnalysisResult result = study::analyseStudy(rows, analysis, folder);
+  // Written whole: into a fresh folder, then swapped in, so that OUT/analysis is always one run's — no file
+  // of an earlier run left beside this one's (a perceptual.svg from before the perceptual data was dropped),
+  // none of this run's beside an earlier one's if it fails half-way. Analyses of one folder take turns.
+  const OutputLock lock(analysisFolder, "-o", OutputLock::Busy::Wait);
+  checkWriteInside(out, analysisFolder, "-o");
+  FreshFolder fresh(analysisFolder);
+  const study::AnalysisResult result = study::analyseStudy(rows, analysis, fresh.path());
+  fresh.replaceTarget();
   std::cout << result.summary << std::flush;
-  std::fprintf(stderr, "glossy study: %zu rows of %zu sheets analysed into %s (%zu files)\n", rows.size(), items.size(), folder.c_str(),
-               result.files.size());
+  std::fprintf(stderr, "glossy study: %zu rows of %zu sheets analysed into %s (%zu files)\n", rows.size(), items.size(),
+               analysisFolder.c_str(), result.files.size());
   return 0;
 }
 

@@ -340,6 +340,7 @@ Raises InputError, with the message `glossy` prints, naming the file, line and k
   m.def("load_merl", [](const py::object& path, const py::object& merlDir) {
           return guarded([&] {
             const std::string dir = merlDir.is_none() ? std::string() : pathText(merlDir);
+            checkMerlDirs(dir, "merl_dir");
             const std::filesystem::path file = app::findMeasured(pathText(path), dir);
             auto table = app::loadMeasured(file);
             PyMeasured out;

@@ -116,6 +116,7 @@ py::array_t<float> renderArray(const py::kwargs& a) {
   if (!fit.is_none()) job.fit = castOr<std::string>(fit, "fit: must be a string, MODEL:METRIC");
   job.measured = optionalPath(measured);
   job.merlDir = optionalPath(get("merl_dir"));
+  checkMerlDirs(job.merlDir, "merl_dir");  // as every command's --merl-dir: a folder, or refused
   if (!brdf.is_none()) {
     if (!py::isinstance<PyBrdf>(brdf)) throw InputError("brdf: expected a glossy.Brdf");
     const PyBrdf& b = brdf.cast<const PyBrdf&>();
@@ -203,6 +204,7 @@ std::shared_ptr<PySheet> renderSheetOf(const py::kwargs& a) {
       py::isinstance<PyMaterial>(material) ? material.cast<const PyMaterial&>().file.path.string() : pathText(material);
   const std::string measured = optionalPath(get("measured"));
   job.merlDir = optionalPath(get("merl_dir"));
+  checkMerlDirs(job.merlDir, "merl_dir");  // as every command's --merl-dir: a folder, or refused
   SheetSettings& s = job.settings;
   std::tie(s.width, s.height) = sizeOf(get("size"), app::options::kSheetWidth, app::options::kSheetHeight);
   numberKeywords(a, app::sheetOptionFields(job));

@@ -3,6 +3,7 @@
 
 #include "materials/core/input_error.h"
 #include "materials/core/input_file.h"
+#include "renderer/output/inside_folder.h"
 
 #include <cerrno>
 #include <cstring>
@@ -24,10 +25,7 @@ fs::path realInside(const fs::path& folder, const fs::path& file, std::string_vi
   if (ec) throw InputError(where + "a symlink to nothing (the " + std::string(what) + ")");
   const fs::path root = fs::canonical(folder, ec);
   if (ec) throw InputError(folder.string() + ": cannot resolve: " + ec.message());
-  // Inside: the root's components are a proper prefix of the file's.
-  auto r = root.begin(), f = real.begin();
-  for (; r != root.end() && f != real.end() && *r == *f; ++r, ++f) {}
-  if (r != root.end() || f == real.end())
+  if (!liesInside(root, real))
     throw InputError(where + "a symlink leading out of " + folder.string() + "; the report reads only files inside it");
   const fs::file_status s = fs::status(real, ec);
   if (fs::is_directory(s)) throw InputError(where + "a folder, not a " + std::string(what));

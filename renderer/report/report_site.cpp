@@ -172,7 +172,7 @@ StudyFiles studyFiles(const fs::path& analysis) {
 ReportResult writeStudyReport(OwnedFolder& site, const ReportOptions& options) {
   const fs::path out = options.sheetsDir;
   const study::StudyPlan plan = study::readPlan(out);
-  const std::vector<study::StudyRow> rows = study::readStudyRows(out);
+  const std::vector<study::StudyRow> rows = study::readStudyRows(out, plan);
   std::vector<std::pair<std::string, SheetSite>> sheetSites;
   for (const std::string& scene : plan.scenes)
     for (const std::string& lighting : plan.lightings)

@@ -40,6 +40,7 @@ std::filesystem::path sheetPath(const std::string& scene, const std::string& lig
 std::string planJson(const StudyPlan& plan) {
   nlohmann::ordered_json doc;
   doc["format"] = kFormat;
+  doc["study"] = plan.study.string();
   doc["materials"] = nlohmann::ordered_json::array();
   for (const PlannedMaterial& m : plan.materials)
     doc["materials"].push_back({{"name", m.name}, {"database", m.database}, {"file", m.file.string()}});
@@ -77,6 +78,7 @@ StudyPlan readPlan(const std::filesystem::path& out) {
     plan.lightings = names(doc.at("lightings"), where, "lightings");
     plan.scenes = names(doc.at("scenes"), where, "scenes");
     plan.perceptualDir = doc.at("perceptual").get<std::string>();
+    if (doc.contains("study")) plan.study = doc.at("study").get<std::string>();
   } catch (const nlohmann::json::exception& e) {
     throw InputError(where + ": not a glossy study plan (" + shortened(e.what()) + ")");
   }

@@ -22,6 +22,9 @@ struct PlannedMaterial {
 };
 
 struct StudyPlan {
+  // The study file (absolute): the study's identity. Its output folder is its own (study_folder.h); an
+  // edited study file is the same study, another file another study. Empty in plans of older glossy.
+  std::filesystem::path study;
   std::vector<PlannedMaterial> materials;   // sorted by name, each name once
   std::vector<std::string> lightings;       // the study file's names, sorted
   std::vector<std::string> scenes;          // likewise
@@ -40,7 +43,8 @@ std::string planJson(const StudyPlan& plan);
 // OUT/study.json read back; InputError naming the file when it is missing, not a glossy study plan, or holds
 // a name that is not a plain name or is given twice.
 StudyPlan readPlan(const std::filesystem::path& out);
-// Whether `out` holds a study plan (a study's output folder).
+// Whether `out` holds a file named study.json: what readers (glossy report) take for a study's folder. Not
+// proof that glossy wrote it; a writer asks study_folder.h.
 bool isStudyFolder(const std::filesystem::path& out);
 
 }  // namespace glossy::study

@@ -103,8 +103,9 @@ std::vector<StudyRow> sheetRows(const report::SheetRecord& sheet, const PlannedM
   return rows;
 }
 
-std::vector<StudyRow> readStudyRows(const std::filesystem::path& out) {
-  const StudyPlan plan = readPlan(out);
+std::vector<StudyRow> readStudyRows(const std::filesystem::path& out) { return readStudyRows(out, readPlan(out)); }
+
+std::vector<StudyRow> readStudyRows(const std::filesystem::path& out, const StudyPlan& plan) {
   std::optional<PerceptualData> perceptual;
   if (!plan.perceptualDir.empty()) perceptual = PerceptualData::read(plan.perceptualDir);
   std::vector<StudyRow> rows;

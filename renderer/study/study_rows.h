@@ -22,9 +22,12 @@ std::string sheetWarning(const report::SheetRecord& sheet);
 std::vector<StudyRow> sheetRows(const report::SheetRecord& sheet, const PlannedMaterial& material, const std::string& lighting,
                                 const std::string& scene, const std::string& materialClass, const std::filesystem::path& relativeExr);
 
-// Every row of the study in `out`, sorted by material, lighting, scene and grid order. InputError naming
-// the file when the plan or a sheet is missing or unreadable (a sheet not yet rendered among them), or when
-// the plan's perceptual folder does not read.
+// Every row of the sheets `plan` names in `out`, sorted by material, lighting, scene and grid order.
+// InputError naming the file when a sheet is missing or unreadable (a sheet not yet rendered among them), or
+// when the plan's perceptual folder does not read. `glossy study` passes the plan it rendered, never one
+// read back from the folder (study_folder.h).
+std::vector<StudyRow> readStudyRows(const std::filesystem::path& out, const StudyPlan& plan);
+// The same with the plan OUT/study.json holds (readPlan), for readers of a finished study (glossy report).
 std::vector<StudyRow> readStudyRows(const std::filesystem::path& out);
 
 }  // namespace glossy::study

@@ -38,9 +38,9 @@ void OutputLock::removeMadeFolders() const {
     if (::rmdir(f.c_str()) != 0) break;  // not empty: the output (or another run's) is in it
 }
 
-OutputLock::OutputLock(const std::filesystem::path& destination, std::string_view option) {
+OutputLock::OutputLock(const std::filesystem::path& destination, std::string_view option, Busy busy) {
   try {
-    take(destination, option);
+    take(destination, option, busy);
   } catch (...) {
     if (fd_ >= 0) ::close(fd_);
     removeMadeFolders();
@@ -48,10 +48,13 @@ OutputLock::OutputLock(const std::filesystem::path& destination, std::string_vie
   }
 }
 
-void OutputLock::take(const std::filesystem::path& destination, std::string_view option) {
+void OutputLock::take(const std::filesystem::path& destination, std::string_view option, Busy busy) {
   const std::string where = std::string(option) + ": " + destination.string();
   const std::filesystem::path folder = destination.has_parent_path() ? destination.parent_path() : std::filesystem::path(".");
-  lockPath_ = folder / ("." + destination.filename().string() + ".lock");
+  // Appended in place: GCC 12's -Wrestrict misreads the inlined `"." + name + ".lock"` as an overlapping copy.
+  std::string lockName = ".";
+  lockName.append(destination.filename().string()).append(".lock");
+  lockPath_ = folder / lockName;
   std::error_code ec;
   for (std::filesystem::path f = folder; !f.empty() && !std::filesystem::exists(f, ec); f = f.parent_path()) {
     madeFolders_.push_back(f);
@@ -74,7 +77,7 @@ void OutputLock::take(const std::filesystem::path& destination, std::string_view
       throw InputError(where + ": cannot make the lock file " + lockPath_.string() + ": " + std::strerror(errno));
     }
     if (!regularFile(fd_)) throw InputError(where + ": its lock file " + lockPath_.string() + " is not a file");
-    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    if (::flock(fd_, busy == Busy::Wait ? LOCK_EX : LOCK_EX | LOCK_NB) != 0) {
       const int e = errno;
       ::close(fd_);
       fd_ = -1;

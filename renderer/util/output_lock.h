@@ -27,15 +27,19 @@ class OutputBusy : public InputError {
 
 class OutputLock {
  public:
+  // What to do when another process holds the lock: refuse (a second writer of one output), or wait for it
+  // (a short step several runs of one job take in turn, such as claiming a study's folder).
+  enum class Busy { Refuse, Wait };
+
   // Throws OutputBusy "OPTION: PATH is being written by another glossy process" when another process holds
-  // it, InputError naming the option and path when the lock file cannot be made.
-  OutputLock(const std::filesystem::path& destination, std::string_view option);
+  // it (Busy::Refuse), InputError naming the option and path when the lock file cannot be made.
+  OutputLock(const std::filesystem::path& destination, std::string_view option, Busy busy = Busy::Refuse);
   ~OutputLock();
   OutputLock(const OutputLock&) = delete;
   OutputLock& operator=(const OutputLock&) = delete;
 
  private:
-  void take(const std::filesystem::path& destination, std::string_view option);
+  void take(const std::filesystem::path& destination, std::string_view option, Busy busy);
   void removeMadeFolders() const;
 
   std::filesystem::path lockPath_;

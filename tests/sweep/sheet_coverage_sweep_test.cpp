@@ -76,7 +76,7 @@ class SheetIntervals : public ::testing::TestWithParam<Case> {};
 TEST_P(SheetIntervals, CoverTheConvergedValues) {
   const Case c = GetParam();
   const MaterialFile m = loadMaterialFile(materialsDir() / (std::string(c.material) + ".toml"));
-  const auto table = resolveMeasured(m.measured, sharedDir() / "merl", m.path.parent_path());
+  const auto table = resolveMeasured(m, sharedDir() / "merl");
   if (!table) GTEST_SKIP() << "reference data " << m.measured << " is absent from " << (sharedDir() / "merl").string();
   const auto measured = std::make_shared<const MerlTable>(
       table->extension() == ".nbrdf" ? NeuralBrdf::load(*table).tabulate() : MerlTable::load(*table));
