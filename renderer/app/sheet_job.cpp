@@ -1,5 +1,6 @@
 #include "renderer/app/sheet_job.h"
 
+#include "renderer/util/digest.h"
 #include "renderer/util/notes.h"
 #include "renderer/util/output_lock.h"
 #include "materials/core/text.h"
@@ -48,7 +49,7 @@ void applyPassLimits(SheetSettings& s, bool sppGiven) {
   s.spp = s.secondsPerPanel > 0.0 ? 1 << 24 : kTargetErrorSppCap;
 }
 
-std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetJob& o, const std::string& explicitMeasured) {
+std::string sheetSettings(const MaterialFile& m, const std::string& stageInputs, const SheetJob& o, const std::string& explicitMeasured) {
   const std::optional<std::filesystem::path> measured = explicitMeasured.empty()
                                                             ? resolveMeasured(m.measured, o.merlDir, m.path.parent_path())
                                                             : std::optional(std::filesystem::path(explicitMeasured));
@@ -56,13 +57,12 @@ std::string sheetSettings(const MaterialFile& m, const Stage& stage, const Sheet
   const SheetSettings& s = o.settings;
   // Each option's part as the table names it: KEY=VALUE.
   const auto part = [](const OptionSpec& spec, const std::string& value) { return "; " + std::string(spec.resumeKey) + "=" + value; };
-  return "scene=" + stage.description.source.string() + "; env=" + stage.environment.description() +
-         part(kSheetSpp, std::to_string(s.spp)) + part(kTime, formatted("%.17g", s.secondsPerPanel)) +
+  return stageInputs + part(kSheetSpp, std::to_string(s.spp)) + part(kTime, formatted("%.17g", s.secondsPerPanel)) +
          part(kTargetError, formatted("%.17g", s.targetError)) + part(kSheetWidth, std::to_string(s.width) + "x" + std::to_string(s.height)) +
          part(kSeed, std::to_string(s.seed)) + part(kMaxDepth, std::to_string(s.maxDepth)) +
          part(kLightSamples, std::to_string(s.lightSamples)) + "; panels=" + panelList(s.panels) + "; half=" + (o.half ? "1" : "0") +
          part(kExposure, formatted("%.17g", o.exposure)) +
-         "; measured=" + (measured ? measured->string() : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
+         "; measured=" + (measured ? measured->string() + "@" + fileDigest(*measured, "measured data") : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
          contentDigest(m.path) + "; version=" + GLOSSY_VERSION + "; format=" + std::to_string(kSheetFormat);
 }
 

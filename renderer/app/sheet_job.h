@@ -36,11 +36,12 @@ struct Stage {
   Camera camera;
   EmbreeScene bvh;
   Environment environment;
+  std::string inputs;  // SceneOptions::inputs: what the pixels take from the scene and lighting
 
   // `aspect`: a panel's width / height, which the automatic camera frames for.
   Stage(const SceneOptions& o, double aspect)
       : description(loadGltf(o.scenePath())), camera(o.cameraOf(description, aspect)), bvh(description),
-        environment(o.environment()) {}
+        environment(o.environment()), inputs(o.inputs(description, environment)) {}
 };
 
 struct MadeSheet {
@@ -60,7 +61,11 @@ MadeSheet makeMaterialSheet(const Stage& stage, const std::filesystem::path& mat
 void writeSheetFiles(const MadeSheet& made, const Stage& stage, const SheetJob& job, const std::filesystem::path& exr);
 
 // Everything a sheet's pixels depend on, as one line: glossy sheets keeps a sheet only if this matches.
-std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetJob& job, const std::string& explicitMeasured);
+// `stageInputs`: the Stage's inputs (SceneOptions::inputs), which a batch may know without building it.
+std::string sheetSettings(const MaterialFile& m, const std::string& stageInputs, const SheetJob& job, const std::string& explicitMeasured);
+inline std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetJob& job, const std::string& explicitMeasured) {
+  return sheetSettings(m, stage.inputs, job, explicitMeasured);
+}
 
 // Renders and writes one sheet (EXR, then PNG beside it); prints its error table on stdout and what it wrote
 // on stderr.
