@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <numeric>
 #include <optional>
 
 namespace glossy::app {
@@ -132,8 +133,9 @@ void makeSheetFiles(const Stage& stage, const std::filesystem::path& materialPat
             << " (" << made.seconds << " s)\n";
 }
 
-BatchSheet renderBatchSheet(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
-                            const std::filesystem::path& exr, const std::string& tag) {
+BatchSheet renderBatchSheet(const std::string& stageInputs, const std::function<const Stage&()>& stage,
+                            const std::filesystem::path& materialPath, const SheetJob& job, const std::filesystem::path& exr,
+                            const std::string& tag) {
   std::optional<OutputLock> lock;
   try {
     lock.emplace(exr, "-o");
@@ -143,29 +145,34 @@ BatchSheet renderBatchSheet(const Stage& stage, const std::filesystem::path& mat
   }
   if (const size_t stale = removeStaleTemporaries(exr))
     std::cerr << "glossy: " << tag << ": removed " << stale << " temporary files an interrupted run left\n";
-  const std::string why = whyIncomplete(exr, sheetSettings(loadMaterialFile(materialPath), stage, job, ""), job.settings);
+  const std::string why = whyIncomplete(exr, sheetSettings(loadMaterialFile(materialPath), stageInputs, job, ""), job.settings);
   if (why.empty()) {
     std::cerr << "glossy: " << tag << ": complete, skipped\n";
     return BatchSheet::Complete;
   }
   if (std::error_code ec; std::filesystem::exists(exr, ec)) std::cerr << "glossy: " << tag << ": " << why << ", rendering it again\n";
-  makeSheetFiles(stage, materialPath, job, exr, "");
+  makeSheetFiles(stage(), materialPath, job, exr, "");
   return BatchSheet::Rendered;
 }
 
-size_t renderBatch(size_t count, const std::function<std::string(size_t)>& name,
+size_t renderBatch(const std::vector<double>& costs, const std::function<std::string(size_t)>& name,
                    const std::function<BatchSheet(size_t, const std::string&)>& sheet, const char* who, const std::string& folder) {
   const auto start = std::chrono::steady_clock::now();
+  const size_t count = costs.size();
   size_t done = 0, skipped = 0, busy = 0;
+  double left = std::accumulate(costs.begin(), costs.end(), 0.0), renderedCost = 0.0;
   for (size_t k = 0; k < count; ++k) {
     const std::string tag = formatted("[%zu/%zu] %s", k + 1, count, name(k).c_str());
     const BatchSheet outcome = sheet(k, tag);
+    left -= costs[k];
     busy += outcome == BatchSheet::Busy;
     skipped += outcome == BatchSheet::Complete;
     if (outcome != BatchSheet::Rendered) continue;
+    ++done;
+    renderedCost += costs[k];
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "glossy: %s done; %.0f s elapsed, about %.0f s to go\n", tag.c_str(), elapsed,
-                 elapsed / double(++done) * double(count - k - 1));
+                 elapsed / renderedCost * std::max(left, 0.0));
   }
   std::fprintf(stderr, "%s: %zu sheets rendered, %zu already complete, in %s\n", who, done, skipped, folder.c_str());
   return busy;
