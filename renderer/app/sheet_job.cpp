@@ -43,6 +43,15 @@ std::shared_ptr<const MerlTable> measuredOf(const MaterialFile& m, const SheetJo
   return loadMeasured(*path);
 }
 
+// The file measured data at `path` is read from: MerlTable::load reads NAME.binary.xz for an absent
+// NAME.binary.
+std::filesystem::path measuredFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) || path.extension() == ".xz") return path;
+  const std::filesystem::path xz = path.string() + ".xz";
+  return std::filesystem::exists(xz, ec) ? xz : path;
+}
+
 }  // namespace
 
 void applyPassLimits(SheetSettings& s, bool sppGiven) {
@@ -63,7 +72,7 @@ std::string sheetSettings(const MaterialFile& m, const std::string& stageInputs,
          part(kSeed, std::to_string(s.seed)) + part(kMaxDepth, std::to_string(s.maxDepth)) +
          part(kLightSamples, std::to_string(s.lightSamples)) + "; panels=" + panelList(s.panels) + "; half=" + (o.half ? "1" : "0") +
          part(kExposure, formatted("%.17g", o.exposure)) +
-         "; measured=" + (measured ? measured->string() + "@" + fileDigest(*measured, "measured data") : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
+         "; measured=" + (measured ? measured->string() + "@" + fileDigest(measuredFile(*measured), "measured data") : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
          contentDigest(m.path) + "; version=" + GLOSSY_VERSION + "; format=" + std::to_string(kSheetFormat);
 }
 
