@@ -4,6 +4,9 @@
 #include "renderer/image/exr_image.h"
 #include "tests/support/test_support.h"
 
+#include <algorithm>
+#include <functional>
+
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
@@ -157,6 +160,57 @@ TEST(CliSheetsResume, APngThatIsNotThisSheetsPngIsRenderedAgain) {
   EXPECT_TRUE(mentions(r, "gold-paint: PNG of 16x16, not the")) << r.err;
   EXPECT_TRUE(mentions(r, "2 sheets rendered")) << r.err;
   EXPECT_EQ(readText(b.out("chrome.png")).substr(0, 8), png.substr(0, 8));
+}
+
+
+// A sheet's settings carry everything its pixels depend on: not the environment map's or the scene's name
+// alone but their contents (a map of the same name in another folder, a map or a glTF buffer edited in
+// place), the camera, and each number at full precision (a rotation changed in its seventh digit).
+TEST(CliSheetsResume, ASheetOfOtherSceneOrLightingContentIsRenderedAgain) {
+  Batch b;
+  const auto lightMap = [](const std::filesystem::path& path, float value) {
+    std::filesystem::create_directories(path.parent_path());
+    RgbImage map(16, 8);
+    std::fill(map.pixels.begin(), map.pixels.end(), value);
+    writeExr(path, map, {});
+  };
+  const auto expectRenderedAgain = [&](const std::vector<std::string>& before, const std::vector<std::string>& after,
+                                       const std::function<void()>& change = {}) {
+    ASSERT_EQ(b.run(before).status, 0);
+    if (change) change();
+    const RunResult r = b.run(after);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(mentions(r, "chrome: made with other settings")) << r.err;
+    EXPECT_TRUE(mentions(r, "2 sheets rendered")) << r.err;
+  };
+  {
+    SCOPED_TRACE("a map of the same name in another folder, then one edited in place");
+    lightMap(b.tmp / "a/studio.exr", 0.5f);
+    lightMap(b.tmp / "b/studio.exr", 0.7f);
+    expectRenderedAgain({"--env", (b.tmp / "a/studio.exr").string()}, {"--env", (b.tmp / "b/studio.exr").string()});
+    expectRenderedAgain({"--env", (b.tmp / "a/studio.exr").string()}, {"--env", (b.tmp / "a/studio.exr").string()},
+                        [&] { lightMap(b.tmp / "a/studio.exr", 0.6f); });
+  }
+  {
+    SCOPED_TRACE("a rotation changed in its seventh digit");
+    expectRenderedAgain({"--env-rotate", "10"}, {"--env-rotate", "10.000004"});
+  }
+  {
+    SCOPED_TRACE("a constant changed in its seventh digit");
+    expectRenderedAgain({"--env-constant", "0.8"}, {"--env-constant", "0.80000004"});
+  }
+  {
+    SCOPED_TRACE("a glTF buffer edited in place, then another camera");
+    std::filesystem::create_directories(b.tmp / "scene");
+    for (const char* f : {"sphere.gltf", "sphere.bin"}) std::filesystem::copy_file(sourceDir() / "scenes" / f, b.tmp / "scene" / f);
+    const std::string scene = (b.tmp / "scene/sphere.gltf").string();
+    expectRenderedAgain({"--scene", scene}, {"--scene", scene}, [&] {
+      std::string bin = readText(b.tmp / "scene/sphere.bin");
+      bin[100620] = char(bin[100620] ^ 1);  // the first normal's x, by one unit in the last place
+      writeText(b.tmp / "scene/sphere.bin", bin);
+    });
+    expectRenderedAgain({"--scene", scene}, {"--scene", scene, "--camera", "ortho"});
+  }
 }
 
 }  // namespace glossy::test

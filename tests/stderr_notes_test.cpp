@@ -70,3 +70,30 @@ TEST(StderrNotes, SkippedPrimitivesNoteIsPrefixedAndNeverPrecedesAnError) {
 }
 
 }  // namespace glossy::test
+
+namespace glossy::test {
+
+// A note about an input is told once a run, not once for each sheet that reads the input: a study of 177
+// sheets printed a table's unmeasured bins 177 times.
+TEST(StderrNotes, ANoteAboutAnInputIsToldOncePerRun) {
+  TempDir tmp;
+  writeText(tmp / "holes.binary", syntheticMerlBytes([](int h, int, int) { return h == 0 ? Rgb(-1.0) : Rgb(300.0); }));
+  std::filesystem::create_directories(tmp / "lib");
+  std::string chrome = readText(materialsDir() / "chrome.toml");
+  chrome.replace(chrome.find("measured = \"chrome.binary\""), 26, "measured = \"holes.binary\"");
+  for (const char* name : {"one", "two"}) {
+    std::string m = chrome;
+    m.replace(m.find("name = \"chrome\""), 15, "name = \"" + std::string(name) + "\"");
+    writeText(tmp / "lib" / (std::string(name) + ".toml"), m);
+  }
+  const RunResult r = runGlossy({"sheets", (tmp / "lib").string(), "-o", (tmp / "out").string(), "--merl-dir", tmp.path().string(),
+                                 "--width", "8", "--height", "8", "--spp", "1", "--panels", "measured,microfacet:E2"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const size_t first = r.err.find("bins unmeasured");
+  ASSERT_NE(first, std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("bins unmeasured", first + 1), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("2 sheets rendered"), std::string::npos) << r.err;
+  expectEveryLinePrefixed(r.err);
+}
+
+}  // namespace glossy::test

@@ -356,3 +356,23 @@ TEST(StudyPerceptual, TheSharedFitsAreComparedWithPeople) {
 
 }  // namespace
 }  // namespace glossy::study
+
+namespace glossy::study {
+
+// The analysis tells each of its steps as it starts, in order: a study of a database takes minutes in its
+// bootstraps, which would otherwise be silent.
+TEST(StudyAnalysis, EachStepIsToldAsItStarts) {
+  TempDir dir;
+  AnalysisOptions o = fastOptions();
+  std::vector<int> steps;
+  o.progress = [&](int step, int of, const std::string& what) {
+    EXPECT_EQ(of, 6);
+    EXPECT_FALSE(what.empty());
+    steps.push_back(step);
+  };
+  analyseStudy(syntheticStudy(), o, dir.path());
+  EXPECT_EQ(steps, (std::vector<int>{1, 2, 3, 4, 5, 6}));
+  EXPECT_GT(expectedAnalysisSeconds(1000000, 100, 6), 3600.0) << "a million resamples of a database take hours";
+}
+
+}  // namespace glossy::study

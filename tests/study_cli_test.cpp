@@ -10,6 +10,7 @@
 #include <chrono>
 #include <fstream>
 #include <future>
+#include <sys/resource.h>
 #include <map>
 #include <set>
 #include <thread>
@@ -83,6 +84,7 @@ TEST(StudyCli, WholeShardedAndResumedRunsWriteTheSameBytes) {
 
   const RunResult whole = runStudy(tmp / "tiny.toml", tmp / "whole");
   ASSERT_EQ(whole.status, 0) << whole.err;
+  for (const char* step : {"analysis 1/6: ", "analysis 6/6: "}) EXPECT_NE(whole.err.find(step), std::string::npos) << whole.err;
   for (const char* s : {"sky/gold-paint", "sky/bluebook", "grey/gold-paint", "grey/bluebook"})
     for (const char* ext : {".exr", ".png"})
       EXPECT_TRUE(fs::is_regular_file(tmp / "whole/sheets/preview" / (std::string(s) + ext))) << s << ext;
@@ -171,7 +173,18 @@ TEST(StudyCli, BadStudyFilesAreRefusedBeforeAnyWork) {
       {head + sky + "[analysis]\nreference = \"Nobody E9\"\n", "analysis.reference"},
       {"materials = 3\n" + sky, "materials: must be a glob"},
       {"materials = [\n", "TOML syntax error"},
+      // What the analysis would refuse once every sheet had rendered is refused before the first.
+      {head + sky + "[settings]\npanels = \"measured,microfacet:E2,microfacet:E2:glossy\"\n", "settings.panels: 'microfacet:E2' and "
+                                                                                              "'microfacet:E2:glossy' are two fits of one model"},
+      {head + sky + "[settings]\npanels = \"measured\"\n", "settings.panels: 'measured' has no model panel"},
+      {head + sky + "[settings]\npanels = \"microfacet:E2,smooth:E2\"\n", "has no measured panel"},
+      {"materials = \"nielsen2015/bluebook\"\n" + sky + "[settings]\npanels = \"measured,ggx:E2\"\n", "materials: no material chosen has a fit"},
+      {head + "perceptual = \"perceptual\"\n" + sky, "PerceptualDistances.csv:2: "},
   };
+  // Perceptual tables that do not parse.
+  fs::create_directories(tmp / "perceptual");
+  writeText(tmp / "perceptual/PerceptualDistances.csv", "\"METHOD\";\"BRDF\";\"DISTANCE\"\n\"ABC\";\"gold-paint\";not-a-number\n");
+  writeText(tmp / "perceptual/MaterialType.csv", "BRDF;Type\ngold-paint;Metal\n");
   for (const auto& [text, mention] : cases) {
     SCOPED_TRACE(text);
     writeText(tmp / "bad.toml", text);
@@ -273,4 +286,36 @@ TEST(StudyCli, AnAnalysisIsWrittenWhole) {
   EXPECT_TRUE(outputs(tmp / "out/analysis") == first);
   for (const auto& e : fs::directory_iterator(tmp / "out"))
     EXPECT_EQ(e.path().filename().string().find(".tmp.glossy-"), std::string::npos) << e.path();
+}
+
+// A study's cost is bounded before it starts: a scene and an environment are built when a sheet needs
+// them, not one per scene × lighting up front (40 lightings took 1.2 GB before the first sheet, in every
+// array task); a study of more sheets than one can hold is refused; the analysis says what it will cost
+// before the sheets, and its progress while it runs.
+TEST(StudyCli, ACostIsBoundedAndSaidBeforeTheWork) {
+  TempDir tmp;
+  std::string many = "materials = \"merl/gold-paint\"\n[lightings]\n";
+  for (int k = 0; k < 40; ++k) many += "sky" + std::to_string(k) + " = { sky = true, rotate = " + std::to_string(k) + " }\n";
+  writeText(tmp / "many.toml", many + "[analysis]\nresamples = 1000000\n");
+  rusage before{};
+  getrusage(RUSAGE_CHILDREN, &before);
+  // --analyse renders nothing: what it holds is what the up-front checks hold.
+  const RunResult r = runStudy(tmp / "many.toml", tmp / "out", {"--analyse"});
+  rusage after{};
+  getrusage(RUSAGE_CHILDREN, &after);
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("40 of 40 sheets are not complete"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the analysis will take about"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("analysis.resamples = 1000000"), std::string::npos) << r.err;
+  // ru_maxrss (KiB) is the largest of every child so far: only a run larger than those before it shows.
+  constexpr long kBoundKiB = 600 << 10;  // one stage at a time: about 160 MiB here; a stage per lighting: 1.2 GB
+  if (before.ru_maxrss < kBoundKiB) {
+    EXPECT_LT(after.ru_maxrss, kBoundKiB) << "the up-front checks of 40 lightings held " << after.ru_maxrss / 1024 << " MiB";
+  }
+
+  std::string huge = "materials = \"merl/*\"\n[lightings]\n";
+  for (int k = 0; k < 10001; ++k) huge += "grey" + std::to_string(k) + " = { constant = 0.5 }\n";
+  writeText(tmp / "huge.toml", huge);
+  expectOneLineError(runStudy(tmp / "huge.toml", tmp / "huge"), "sheets, more than a study holds");
+  EXPECT_FALSE(fs::exists(tmp / "huge"));
 }

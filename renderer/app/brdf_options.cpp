@@ -31,7 +31,7 @@ std::shared_ptr<const MerlTable> loadMeasured(const std::filesystem::path& path)
   if (table->invalidBins() == MerlTable::kBins)
     throw InputError(table->source() + ": every bin is unmeasured (negative): the table holds no data");
   if (table->invalidBins() > 0)
-    note(formatted("%s: %zu of %zu bins unmeasured (they evaluate to 0)", table->source().c_str(), table->invalidBins(),
+    noteOnce(formatted("%s: %zu of %zu bins unmeasured (they evaluate to 0)", table->source().c_str(), table->invalidBins(),
                    MerlTable::kBins));
   return table;
 }

@@ -5,6 +5,7 @@
 #include "materials/core/text.h"
 #include "renderer/camera/auto_camera.h"
 #include "renderer/util/data_dir.h"
+#include "renderer/util/digest.h"
 
 #include <cmath>
 
@@ -37,6 +38,17 @@ Environment SceneOptions::environment() const {
   if (!envConstant.empty()) return Environment::constant(parseRgb(envConstant, "--env-constant"));
   if (!env.empty()) return Environment::load(env, envRotate);
   return Environment::makeDefault(envRotate);
+}
+
+std::string SceneOptions::inputs(const SceneDescription& scene, const Environment& environment) const {
+  std::string line = "scene=" + scene.source.string() + "; env=" + environment.description() + "; sceneDigest=" + scene.digest +
+                     "; camera=" + (camera.empty() ? std::string("first") : camera) +
+                     "; envDigest=" + (envConstant.empty() && !env.empty() ? fileDigest(env, "environment map") : std::string("none"));
+  if (!envConstant.empty()) {
+    const Rgb c = parseRgb(envConstant, "--env-constant");
+    return line + formatted("; envConstant=%.17g,%.17g,%.17g", c.r, c.g, c.b);
+  }
+  return line + formatted("; envRotate=%.17g", envRotate);
 }
 
 Camera SceneOptions::cameraOf(const SceneDescription& description, double aspect) const {

@@ -21,6 +21,13 @@ struct SceneOptions {
   // framing the bound object for an image of width / height `aspect` (a scene without cameras says so on
   // stderr). InputError naming the scene when no camera has the name.
   Camera cameraOf(const SceneDescription& description, double aspect) const;
+  // Everything an image takes from these options, as the start of a sheet's settings line (sheet_resume.h):
+  // the scene's path and the lighting's description (what the report shows), then what those leave out —
+  // a digest of the contents of the scene (`scene`, loaded from scenePath(), carries it) and of the map, the
+  // camera, and each number at full precision — so that a map or scene edited in place, another folder's
+  // map of the same name, or a rotation changed in its seventh digit reads as other settings.
+  // `environment`: environment()'s. InputError naming the map if it cannot be read.
+  std::string inputs(const SceneDescription& scene, const Environment& environment) const;
 };
 
 }  // namespace glossy::app

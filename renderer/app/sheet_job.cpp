@@ -1,5 +1,6 @@
 #include "renderer/app/sheet_job.h"
 
+#include "renderer/util/digest.h"
 #include "renderer/util/notes.h"
 #include "renderer/util/output_lock.h"
 #include "materials/core/text.h"
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <numeric>
 #include <optional>
 
 namespace glossy::app {
@@ -41,6 +43,15 @@ std::shared_ptr<const MerlTable> measuredOf(const MaterialFile& m, const SheetJo
   return loadMeasured(*path);
 }
 
+// The file measured data at `path` is read from: MerlTable::load reads NAME.binary.xz for an absent
+// NAME.binary.
+std::filesystem::path measuredFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) || path.extension() == ".xz") return path;
+  const std::filesystem::path xz = path.string() + ".xz";
+  return std::filesystem::exists(xz, ec) ? xz : path;
+}
+
 }  // namespace
 
 void applyPassLimits(SheetSettings& s, bool sppGiven) {
@@ -48,7 +59,7 @@ void applyPassLimits(SheetSettings& s, bool sppGiven) {
   s.spp = s.secondsPerPanel > 0.0 ? 1 << 24 : kTargetErrorSppCap;
 }
 
-std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetJob& o, const std::string& explicitMeasured) {
+std::string sheetSettings(const MaterialFile& m, const std::string& stageInputs, const SheetJob& o, const std::string& explicitMeasured) {
   const std::optional<std::filesystem::path> measured = explicitMeasured.empty()
                                                             ? resolveMeasured(m, o.merlDir)
                                                             : std::optional(std::filesystem::path(explicitMeasured));
@@ -56,13 +67,12 @@ std::string sheetSettings(const MaterialFile& m, const Stage& stage, const Sheet
   const SheetSettings& s = o.settings;
   // Each option's part as the table names it: KEY=VALUE.
   const auto part = [](const OptionSpec& spec, const std::string& value) { return "; " + std::string(spec.resumeKey) + "=" + value; };
-  return "scene=" + stage.description.source.string() + "; env=" + stage.environment.description() +
-         part(kSheetSpp, std::to_string(s.spp)) + part(kTime, formatted("%.17g", s.secondsPerPanel)) +
+  return stageInputs + part(kSheetSpp, std::to_string(s.spp)) + part(kTime, formatted("%.17g", s.secondsPerPanel)) +
          part(kTargetError, formatted("%.17g", s.targetError)) + part(kSheetWidth, std::to_string(s.width) + "x" + std::to_string(s.height)) +
          part(kSeed, std::to_string(s.seed)) + part(kMaxDepth, std::to_string(s.maxDepth)) +
          part(kLightSamples, std::to_string(s.lightSamples)) + "; panels=" + panelList(s.panels) + "; half=" + (o.half ? "1" : "0") +
          part(kExposure, formatted("%.17g", o.exposure)) +
-         "; measured=" + (measured ? measured->string() : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
+         "; measured=" + (measured ? measured->string() + "@" + fileDigest(measuredFile(*measured), "measured data") : std::string("none")) + "; material=" + m.path.filename().string() + "@" +
          contentDigest(m.path) + "; version=" + GLOSSY_VERSION + "; format=" + std::to_string(kSheetFormat);
 }
 
@@ -132,8 +142,9 @@ void makeSheetFiles(const Stage& stage, const std::filesystem::path& materialPat
             << " (" << made.seconds << " s)\n";
 }
 
-BatchSheet renderBatchSheet(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
-                            const std::filesystem::path& exr, const std::string& tag) {
+BatchSheet renderBatchSheet(const std::string& stageInputs, const std::function<const Stage&()>& stage,
+                            const std::filesystem::path& materialPath, const SheetJob& job, const std::filesystem::path& exr,
+                            const std::string& tag) {
   std::optional<OutputLock> lock;
   try {
     lock.emplace(exr, "-o");
@@ -143,29 +154,34 @@ BatchSheet renderBatchSheet(const Stage& stage, const std::filesystem::path& mat
   }
   if (const size_t stale = removeStaleTemporaries(exr))
     std::cerr << "glossy: " << tag << ": removed " << stale << " temporary files an interrupted run left\n";
-  const std::string why = whyIncomplete(exr, sheetSettings(loadMaterialFile(materialPath), stage, job, ""), job.settings);
+  const std::string why = whyIncomplete(exr, sheetSettings(loadMaterialFile(materialPath), stageInputs, job, ""), job.settings);
   if (why.empty()) {
     std::cerr << "glossy: " << tag << ": complete, skipped\n";
     return BatchSheet::Complete;
   }
   if (std::error_code ec; std::filesystem::exists(exr, ec)) std::cerr << "glossy: " << tag << ": " << why << ", rendering it again\n";
-  makeSheetFiles(stage, materialPath, job, exr, "");
+  makeSheetFiles(stage(), materialPath, job, exr, "");
   return BatchSheet::Rendered;
 }
 
-size_t renderBatch(size_t count, const std::function<std::string(size_t)>& name,
+size_t renderBatch(const std::vector<double>& costs, const std::function<std::string(size_t)>& name,
                    const std::function<BatchSheet(size_t, const std::string&)>& sheet, const char* who, const std::string& folder) {
   const auto start = std::chrono::steady_clock::now();
+  const size_t count = costs.size();
   size_t done = 0, skipped = 0, busy = 0;
+  double left = std::accumulate(costs.begin(), costs.end(), 0.0), renderedCost = 0.0;
   for (size_t k = 0; k < count; ++k) {
     const std::string tag = formatted("[%zu/%zu] %s", k + 1, count, name(k).c_str());
     const BatchSheet outcome = sheet(k, tag);
+    left -= costs[k];
     busy += outcome == BatchSheet::Busy;
     skipped += outcome == BatchSheet::Complete;
     if (outcome != BatchSheet::Rendered) continue;
+    ++done;
+    renderedCost += costs[k];
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::fprintf(stderr, "glossy: %s done; %.0f s elapsed, about %.0f s to go\n", tag.c_str(), elapsed,
-                 elapsed / double(++done) * double(count - k - 1));
+                 elapsed / renderedCost * std::max(left, 0.0));
   }
   std::fprintf(stderr, "%s: %zu sheets rendered, %zu already complete, in %s\n", who, done, skipped, folder.c_str());
   return busy;

@@ -36,11 +36,12 @@ struct Stage {
   Camera camera;
   EmbreeScene bvh;
   Environment environment;
+  std::string inputs;  // SceneOptions::inputs: what the pixels take from the scene and lighting
 
   // `aspect`: a panel's width / height, which the automatic camera frames for.
   Stage(const SceneOptions& o, double aspect)
       : description(loadGltf(o.scenePath())), camera(o.cameraOf(description, aspect)), bvh(description),
-        environment(o.environment()) {}
+        environment(o.environment()), inputs(o.inputs(description, environment)) {}
 };
 
 struct MadeSheet {
@@ -60,7 +61,11 @@ MadeSheet makeMaterialSheet(const Stage& stage, const std::filesystem::path& mat
 void writeSheetFiles(const MadeSheet& made, const Stage& stage, const SheetJob& job, const std::filesystem::path& exr);
 
 // Everything a sheet's pixels depend on, as one line: glossy sheets keeps a sheet only if this matches.
-std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetJob& job, const std::string& explicitMeasured);
+// `stageInputs`: the Stage's inputs (SceneOptions::inputs), which a batch may know without building it.
+std::string sheetSettings(const MaterialFile& m, const std::string& stageInputs, const SheetJob& job, const std::string& explicitMeasured);
+inline std::string sheetSettings(const MaterialFile& m, const Stage& stage, const SheetJob& job, const std::string& explicitMeasured) {
+  return sheetSettings(m, stage.inputs, job, explicitMeasured);
+}
 
 // Renders and writes one sheet (EXR, then PNG beside it); prints its error table on stdout and what it wrote
 // on stderr.
@@ -73,14 +78,19 @@ enum class BatchSheet { Rendered, Complete, Busy };
 // One sheet of a resumable batch: left to another run that holds it (its OutputLock: Busy), kept when it is
 // complete with these settings (whyIncomplete: Complete), else rendered and written (Rendered), clearing
 // the temporaries an interrupted write of it left. `tag` starts its lines on stderr ("[3/40] gold-paint").
-BatchSheet renderBatchSheet(const Stage& stage, const std::filesystem::path& materialPath, const SheetJob& job,
-                            const std::filesystem::path& exr, const std::string& tag);
+// `stageInputs`: the inputs of the stage `stage()` gives (Stage::inputs), asked for only when the sheet is
+// to be rendered, so that a batch builds a stage only for sheets that need one.
+BatchSheet renderBatchSheet(const std::string& stageInputs, const std::function<const Stage&()>& stage,
+                            const std::filesystem::path& materialPath, const SheetJob& job, const std::filesystem::path& exr,
+                            const std::string& tag);
 
-// The sheets of a batch in turn: sheet(k, tag) renders or keeps the k-th of `count` (renderBatchSheet), its tag
-// "[k+1/count] NAME" with NAME = name(k); a line after each one rendered says the time to go, and one at the
-// end what became of them ("`who`: 3 sheets rendered, 1 already complete, in `folder`"). Returns how many
-// were left to another run (Busy).
-size_t renderBatch(size_t count, const std::function<std::string(size_t)>& name,
+// The sheets of a batch in turn: sheet(k, tag) renders or keeps the k-th of costs.size() (renderBatchSheet),
+// its tag "[k+1/count] NAME" with NAME = name(k); a line after each one rendered says the time to go — the
+// time so far per unit of expected cost (`costs`, sheetCost) rendered, times the expected cost of what is
+// left, as the sheets differ in cost and come in no order of it — and one at the end what became of them
+// ("`who`: 3 sheets rendered, 1 already complete, in `folder`"). Returns how many were left to another run
+// (Busy).
+size_t renderBatch(const std::vector<double>& costs, const std::function<std::string(size_t)>& name,
                    const std::function<BatchSheet(size_t, const std::string&)>& sheet, const char* who, const std::string& folder);
 
 // What a sheet costs, in analytic panels, for splitting a batch into shards (shard.h).

@@ -8,6 +8,7 @@
 #include "materials/params/material_name.h"
 #include "renderer/app/option_specs.h"
 #include "renderer/sheet/comparison_grid.h"
+#include "renderer/study/perceptual.h"
 #include "renderer/util/data_dir.h"
 
 #include <fnmatch.h>
@@ -29,6 +30,9 @@ constexpr std::uintmax_t kMaxStudyFileBytes = 1 << 20;
 constexpr double kMaxRadiance = 1e12;
 // The scenes glossy ships (scenes/), by the name a study file gives them.
 constexpr const char* kBuiltinScenes[] = {"preview", "sphere"};
+// Sheets a study may hold: its bookkeeping (a few hundred bytes a sheet, in every array task) and its one
+// folder per lighting stay small, and a run of them ends within a cluster's budget.
+constexpr std::uintmax_t kMaxStudySheets = 1000000;
 
 struct Reader {
   std::string source;  // the study file, for messages
@@ -182,6 +186,24 @@ void setting(const Reader& r, const toml::table& settings, const OptionField& f)
   f.set(*v);
 }
 
+// The analysis ranks models against the measured panel, one fit per model on a sheet (a row's model is
+// its label whoever made the fit, renderer/study/study_rows.cpp): panels without the measured one or
+// without a model, or naming two fits of one model, could only fail once every sheet has rendered.
+void checkStudyPanels(const Reader& r, const toml::node& node, const std::vector<SheetPanel>& panels) {
+  const std::string key = "settings.panels";
+  if (std::none_of(panels.begin(), panels.end(), [](const SheetPanel& p) { return p.fit.empty(); }))
+    r.fail(node, key, "'" + shortened(panelList(panels)) + "' has no measured panel: a study measures the models against it");
+  std::map<std::string, std::string> fitOfModel;
+  for (const SheetPanel& p : panels) {
+    if (p.fit.empty()) continue;
+    const FitId id = FitId::parse(p.fit, key);
+    if (const auto [it, fresh] = fitOfModel.emplace(SheetPanel::ofFit({id.model, id.metric}).label, p.fit); !fresh)
+      r.fail(node, key, "'" + it->second + "' and '" + p.fit + "' are two fits of one model (" + it->first +
+                            "): a study ranks one fit per model on a sheet");
+  }
+  if (fitOfModel.empty()) r.fail(node, key, "'" + shortened(panelList(panels)) + "' has no model panel: a study compares models");
+}
+
 void readSettings(const Reader& r, const toml::node& node, StudyFile& study) {
   const toml::table* t = node.as_table();
   if (!t) r.fail(node, "settings", "must be a table");
@@ -200,6 +222,7 @@ void readSettings(const Reader& r, const toml::node& node, StudyFile& study) {
       throw InputError(tomlAt(r.source, *p) + e.what());
     }
   }
+  checkStudyPanels(r, t->get("panels") ? *t->get("panels") : node, study.job.settings.panels);
   if (const toml::node* h = t->get("half")) {
     if (!h->is_boolean()) r.fail(*h, "settings.half", "must be true or false");
     study.job.half = h->as_boolean()->get();
@@ -267,17 +290,32 @@ StudyFile loadStudyFile(const fs::path& path, const fs::path& library) {
   for (const auto& [node, pattern] : patterns)
     for (size_t k : matches(r, *node, "materials", pattern, entries)) chosen.insert(k);
   std::map<std::string, fs::path> byName;
+  bool anyModelRow = false;
   for (size_t k : chosen) {
     const MaterialFile m = loadMaterialFile(entries[k].file);
+    for (const SheetPanel& p : study.job.settings.panels)
+      anyModelRow = anyModelRow || (!p.fit.empty() && m.find(FitId::parse(p.fit, "settings.panels")) != nullptr);
     if (auto [it, fresh] = byName.emplace(m.name, entries[k].file); !fresh)
       throw InputError(r.source + ": materials: " + it->second.string() + " and " + entries[k].file.string() + " both name the material '" +
                        m.name + "'");
     study.plan.materials.push_back({m.name, databaseOfFolder(entries[k].database), fs::weakly_canonical(entries[k].file, ec)});
   }
+  // Without a fit of any model panel on any material, every sheet would hold the measured panel alone.
+  if (!anyModelRow)
+    r.fail(*materials, "materials", "no material chosen has a fit of a model panel (" + panelList(study.job.settings.panels) +
+                                        "): the study would have no model to analyse");
   std::sort(study.plan.materials.begin(), study.plan.materials.end(),
             [](const study::PlannedMaterial& a, const study::PlannedMaterial& b) { return a.name < b.name; });
 
-  if (const toml::node* p = root.get("perceptual")) study.plan.perceptualDir = r.path(*p, "perceptual", true);
+  if (const toml::node* p = root.get("perceptual")) {
+    study.plan.perceptualDir = r.path(*p, "perceptual", true);
+    // Its tables are read by the analysis, after every sheet: they are checked now.
+    try {
+      (void)study::PerceptualData::read(study.plan.perceptualDir);
+    } catch (const InputError& e) {
+      r.fail(*p, "perceptual", e.what());
+    }
+  }
 
   const toml::node* lightings = root.get("lightings");
   if (!lightings || !lightings->is_table() || lightings->as_table()->empty())
@@ -292,6 +330,11 @@ StudyFile loadStudyFile(const fs::path& path, const fs::path& library) {
   } else {
     study.scenes.push_back({"preview", (dataDir() / "scenes/preview.gltf").string(), ""});
   }
+  if (const std::uintmax_t sheets = std::uintmax_t(study.plan.materials.size()) * study.lightings.size() * study.scenes.size();
+      sheets > kMaxStudySheets)
+    throw InputError(r.source + ": " + std::to_string(study.plan.materials.size()) + " materials × " + std::to_string(study.lightings.size()) +
+                     " lightings × " + std::to_string(study.scenes.size()) + " scenes = " + std::to_string(sheets) +
+                     " sheets, more than a study holds (" + std::to_string(kMaxStudySheets) + "): split it into several studies");
   // toml++ keeps a table's keys sorted: the plan's order.
   for (const StudyLighting& l : study.lightings) study.plan.lightings.push_back(l.name);
   for (const StudyScene& s : study.scenes) study.plan.scenes.push_back(s.name);

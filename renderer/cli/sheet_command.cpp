@@ -108,9 +108,14 @@ int runSheets(const SheetOptions& options) {
   std::filesystem::create_directories(outDir);  // only once the scene and lighting options are known good
   SheetOptions batch = o;
   batch.settings.progress = false;
+  std::vector<double> myCosts;
+  for (size_t k : mine) myCosts.push_back(costs[k]);
   const size_t busy = renderBatch(
-      mine.size(), [&](size_t n) { return names[mine[n]]; },
-      [&](size_t n, const std::string& tag) { return renderBatchSheet(stage, files[mine[n]], batch, outDir / (names[mine[n]] + ".exr"), tag); },
+      myCosts, [&](size_t n) { return names[mine[n]]; },
+      [&](size_t n, const std::string& tag) {
+        return renderBatchSheet(stage.inputs, [&]() -> const Stage& { return stage; }, files[mine[n]], batch,
+                                outDir / (names[mine[n]] + ".exr"), tag);
+      },
       "glossy", o.outDir);
   if (busy == 0) return 0;
   // Not every sheet of this run is known to be complete: say so in the status too.

@@ -3,6 +3,7 @@
 // renderer/study/study_plan.h; the statistics: renderer/study/study_analysis.h).
 #include "materials/core/input_error.h"
 #include "materials/core/input_file.h"
+#include "materials/core/text.h"
 #include "materials/params/material_file.h"
 #include "renderer/app/destination.h"
 #include "renderer/app/image_memory.h"
@@ -18,6 +19,8 @@
 #include "renderer/util/notes.h"
 #include "renderer/util/output_lock.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -41,6 +44,13 @@ struct StudyItem {
   fs::path exr;  // absolute within OUT
   std::string tag;
 };
+
+// "40 s", "12 min", "3.5 h".
+std::string durationText(double seconds) {
+  if (seconds < 90.0) return formatted("%.0f s", std::max(seconds, 1.0));
+  if (seconds < 5400.0) return formatted("%.0f min", seconds / 60.0);
+  return formatted("%.1f h", seconds / 3600.0);
+}
 
 int runStudy(const StudyOptions& o) {
   const StudyFile file = loadStudyFile(o.file, defaultMaterialsDir());
@@ -66,6 +76,12 @@ int runStudy(const StudyOptions& o) {
   // other shards write to the same folder.
   std::vector<MaterialFile> materials;
   for (const study::PlannedMaterial& m : plan.materials) materials.push_back(loadMaterialFile(m.file));
+  // The figures the analysis ranks by are against the measured panel: without any material's measured
+  // data, every row would be skipped once every sheet had rendered.
+  if (std::none_of(materials.begin(), materials.end(),
+                   [&](const MaterialFile& m) { return resolveMeasured(m, job.merlDir).has_value(); }))
+    throw InputError(o.file + ": materials: none has its measured data here (MERL tables: --merl-dir or $GLOSSY_MERL_DIR): no sheet "
+                              "could measure a model");
   std::vector<StudyItem> items;
   std::vector<double> costs;
   for (size_t s = 0; s < plan.scenes.size(); ++s)
@@ -86,17 +102,50 @@ int runStudy(const StudyOptions& o) {
   checkWriteInside(out, analysisFolder, "-o");
   if (std::error_code ec; fs::exists(fs::symlink_status(analysisFolder, ec)) && !fs::is_directory(analysisFolder, ec))
     throw InputError(analysisFolder.string() + ": is in the way of the study's analysis (not a folder)");
-  // The scene and lighting of each pair, loaded once: a missing map or a bad scene fails here.
-  std::vector<std::unique_ptr<Stage>> stages;
+  // Each scene and lighting is checked here, loaded once and let go: a missing map, a bad scene or camera
+  // fails before any sheet, and what the sheets record of them (SceneOptions::inputs) is known without
+  // holding a scene and an environment per pair — a study of many lightings would not fit in memory.
   const double aspect = double(job.settings.width) / double(job.settings.height);
-  for (size_t s = 0; s < plan.scenes.size(); ++s)
-    for (size_t l = 0; l < plan.lightings.size(); ++l) stages.push_back(std::make_unique<Stage>(file.sceneOptions(s, l), aspect));
-  const auto stageOf = [&](const StudyItem& item) -> const Stage& { return *stages[item.scene * plan.lightings.size() + item.lighting]; };
+  std::vector<std::string> inputs(plan.scenes.size() * plan.lightings.size());
+  {
+    std::vector<SceneDescription> scenes;  // each one's file and digest, not its geometry
+    for (size_t s = 0; s < plan.scenes.size(); ++s) {
+      SceneDescription scene = loadGltf(file.sceneOptions(s, 0).scenePath());
+      (void)file.sceneOptions(s, 0).cameraOf(scene, aspect);
+      scenes.push_back({scene.source, scene.digest, {}, {}, {}, {}});
+    }
+    for (size_t l = 0; l < plan.lightings.size(); ++l) {
+      const Environment environment = file.sceneOptions(0, l).environment();
+      for (size_t s = 0; s < plan.scenes.size(); ++s)
+        inputs[s * plan.lightings.size() + l] = file.sceneOptions(s, l).inputs(scenes[s], environment);
+    }
+  }
+  const auto inputsOf = [&](const StudyItem& item) -> const std::string& { return inputs[item.scene * plan.lightings.size() + item.lighting]; };
+  // The stage of the sheet at hand, built when it comes and let go when the next sheet wants another: a
+  // shard's sheets come in the plan's order, so each pair's is built once per run.
+  std::unique_ptr<Stage> stage;
+  size_t stagePair = SIZE_MAX;
+  const auto stageOf = [&](const StudyItem& item) -> const Stage& {
+    if (const size_t pair = item.scene * plan.lightings.size() + item.lighting; pair != stagePair) {
+      stage.reset();
+      stage = std::make_unique<Stage>(file.sceneOptions(item.scene, item.lighting), aspect);
+      stagePair = pair;
+    }
+    return *stage;
+  };
   const auto jobOf = [&](const StudyItem& item) {
     SheetJob sheetJob = job;
     sheetJob.scene = file.sceneOptions(item.scene, item.lighting);
     return sheetJob;
   };
+
+  // The analysis's cost, said before the sheets: a million resamples would otherwise be a silent hour at
+  // the end of the run.
+  const size_t modelPanels = size_t(std::count_if(job.settings.panels.begin(), job.settings.panels.end(), [](const SheetPanel& p) { return !p.fit.empty(); }));
+  const double analysisSeconds = study::expectedAnalysisSeconds(file.resamples, plan.materials.size(), modelPanels);
+  if (shard.source.empty() && analysisSeconds >= 60.0)
+    std::fprintf(stderr, "glossy study: the analysis will take about %s (analysis.resamples = %d over %zu materials and %zu models); fewer "
+                         "resamples make it quicker\n", durationText(analysisSeconds).c_str(), file.resamples, plan.materials.size(), modelPanels);
 
   const std::vector<size_t> mine = shardItems(costs, shard, "glossy study", "sheets");
 
@@ -104,13 +153,17 @@ int runStudy(const StudyOptions& o) {
   // and the folder's marker: from here, a run of another study is refused.
   study::claimStudyFolder(out, plan);
 
+  std::vector<double> myCosts;
+  for (size_t k : mine) myCosts.push_back(costs[k]);
   const size_t busy = o.analyseOnly ? 0 : renderBatch(
-      mine.size(), [&](size_t n) { return items[mine[n]].tag; },
+      myCosts, [&](size_t n) { return items[mine[n]].tag; },
       [&](size_t n, const std::string& tag) {
         const StudyItem& item = items[mine[n]];
-        return renderBatchSheet(stageOf(item), plan.materials[item.material].file, jobOf(item), item.exr, tag);
+        return renderBatchSheet(inputsOf(item), [&]() -> const Stage& { return stageOf(item); }, plan.materials[item.material].file,
+                                jobOf(item), item.exr, tag);
       },
       "glossy study", o.out);
+  stage.reset();
   if (busy > 0) {
     std::fprintf(stderr, "glossy study: %zu sheets left to the other run writing them; run again to check them and analyse\n", busy);
     return 1;
@@ -125,7 +178,7 @@ int runStudy(const StudyOptions& o) {
   size_t missing = 0;
   std::string first;
   for (const StudyItem& item : items) {
-    const std::string why = whyIncomplete(item.exr, sheetSettings(materials[item.material], stageOf(item), jobOf(item), ""), job.settings);
+    const std::string why = whyIncomplete(item.exr, sheetSettings(materials[item.material], inputsOf(item), jobOf(item), ""), job.settings);
     if (!why.empty() && missing++ == 0) first = item.tag + ": " + why;
   }
   if (missing > 0) {
@@ -139,6 +192,12 @@ int runStudy(const StudyOptions& o) {
   analysis.resamples = file.resamples;
   analysis.perceptualDir = plan.perceptualDir;
   analysis.referenceModel = file.referenceModel;
+  const auto analysisStart = std::chrono::steady_clock::now();
+  analysis.progress = [&](int step, int steps, const std::string& what) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - analysisStart).count();
+    std::fprintf(stderr, "glossy study: analysis %d/%d: %s (%.0f s elapsed, about %s in all)\n", step, steps, what.c_str(), elapsed,
+                 durationText(analysisSeconds).c_str());
+  };
   // Written whole: into a fresh folder, then swapped in, so that OUT/analysis is always one run's — no file
   // of an earlier run left beside this one's (a perceptual.svg from before the perceptual data was dropped),
   // none of this run's beside an earlier one's if it fails half-way. Analyses of one folder take turns.

@@ -5,6 +5,7 @@
 
 #include "materials/core/input_error.h"
 #include "materials/core/input_file.h"
+#include "renderer/util/digest.h"
 #include "renderer/util/notes.h"
 #include "materials/core/text.h"
 #include "renderer/scene/gltf_preflight.h"
@@ -516,9 +517,12 @@ bool fileExists(const std::string& path, void*) {
   return std::filesystem::exists(path, ec);
 }
 
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+// `digest`: a Digest every file read is added to (the scene file itself, then its buffers): what the pixels
+// depend on, for SceneDescription::digest.
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* digest) {
   try {
     const std::string bytes = readInputFile(path, kMaxBufferBytes, "glTF buffer");
+    if (digest) static_cast<Digest*>(digest)->add(bytes);
     out->assign(bytes.begin(), bytes.end());
     return true;
   } catch (const InputError& e) {
@@ -543,7 +547,8 @@ SceneDescription loadGltf(const std::filesystem::path& path) {
   tinygltf::TinyGLTF gltf;
   gltf.SetImageLoader(ignoreImage, nullptr);
   // The files the scene names (its buffers) are inputs too: tinygltf's own reader would open a FIFO and wait.
-  gltf.SetFsCallbacks({fileExists, tinygltf::ExpandFilePath, readWholeFile, nullptr, nullptr});
+  Digest digest;
+  gltf.SetFsCallbacks({fileExists, tinygltf::ExpandFilePath, readWholeFile, nullptr, &digest});
   tinygltf::Model model;
   std::string err, warn;
   bool ok = false;
@@ -558,7 +563,9 @@ SceneDescription loadGltf(const std::filesystem::path& path) {
     throw InputError(printableLine(path.string() + ": " + why));
   }
   if (!warn.empty()) note(printableLine(path.string() + ": warning: " + warn));
-  return GltfReader(path, model).read();
+  SceneDescription scene = GltfReader(path, model).read();
+  scene.digest = digest.hex();
+  return scene;
 }
 
 }  // namespace glossy

@@ -60,6 +60,7 @@ struct SceneLight {
 
 struct SceneDescription {
   std::filesystem::path source;
+  std::string digest;  // of the bytes of every file loadGltf read (the scene, its buffers): util/digest.h
   std::vector<Mesh> meshes;
   std::vector<SceneMaterial> materials;
   std::vector<Camera> cameras;  // in glTF node order; the first is the default

@@ -713,9 +713,19 @@ std::vector<ModelStyle> modelStyles(const Study& s) {
 
 }  // namespace
 
+double expectedAnalysisSeconds(int resamples, std::size_t materials, std::size_t models) {
+  constexpr double kSecondsPerUnit = 25.0 / (2000.0 * 100.0 * 36.0);
+  return kSecondsPerUnit * double(resamples) * double(materials) * double(models) * double(models);
+}
+
 AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOptions& options, const std::filesystem::path& folder) {
   if (options.resamples < 0 || options.resamples > 1000000)
     throw InputError("study: bootstrap resamples " + std::to_string(options.resamples) + " outside 0 … 1000000");
+  constexpr int kSteps = 6;
+  const auto step = [&](int k, const std::string& what) {
+    if (options.progress) options.progress(k, kSteps, what);
+  };
+  step(1, "rows, verdicts and rank tests");
   // The perceptual data are read first: a malformed table stops the analysis before anything is written.
   if (!options.perceptualDir.empty()) (void)PerceptualData::read(options.perceptualDir);
   const Study s = readRows(rows);
@@ -736,6 +746,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   results["counts"] = counts;
   results["materials"] = perMaterial(s);
 
+  step(2, "per-model intervals");
   std::vector<Interval> meanIv;
   const Json models = perModel(s, t, options, meanIv);
   results["models"] = models;
@@ -770,6 +781,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   jw["cliques"] = cliques;
   results["wilcoxon"] = jw;
 
+  step(3, "pairwise shares of materials");
   std::vector<std::size_t> all(s.materials.size());
   std::iota(all.begin(), all.end(), 0);
   Json pairwise;
@@ -788,9 +800,11 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
 
   std::string claimHeadline, peopleHeadline;
   Json differences = Json::array();
+  step(4, "BRDF-space against image error");
   results["brdfVsImage"] = brdfVsImage(s, options, differences, claimHeadline);
   results["e2MinusE1"] = differences;
   std::vector<PerceptualSeries> series;
+  step(5, "against people");
   results["againstPeople"] = againstPeople(s, options, peopleHeadline, series);
 
   // The headline.
@@ -816,7 +830,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   if (!peopleHeadline.empty()) summary += peopleHeadline + "\n";
   results["summary"] = summary;
 
-  // Figures.
+  step(6, "figures and files");
   MaterialTable table{s.materials, modelStyles(s), s.rrmse, s.flip, s.e1, s.e2};
   std::vector<std::pair<std::string, std::string>> svgs = {
       {"error_curves", errorCurvesSvg(table, options.referenceModel)},

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -22,7 +23,16 @@ struct AnalysisOptions {
   std::filesystem::path perceptualDir;
   // The label the per-material error curves are sorted by.
   std::string referenceModel = "Microfacet E2";
+  // Told as each step starts (`step` of `steps`, from 1, and what it computes), for a progress line: the
+  // bootstraps take minutes on a large study. Unset: nothing is told.
+  std::function<void(int step, int steps, const std::string& what)> progress;
 };
+
+// The expected seconds of analyseStudy with `resamples` over `materials` materials and `models` models: the
+// bootstraps dominate, and each draws every material for every pair of models (the pairwise shares) —
+// measured at about 3.5 µs a resample × material × model² on the development machine (100 MERL
+// materials, 6 models, 2,000 resamples: 25 s).
+double expectedAnalysisSeconds(int resamples, std::size_t materials, std::size_t models);
 
 struct AnalysisResult {
   std::string summary;                        // the headline text `glossy study` prints

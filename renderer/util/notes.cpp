@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <mutex>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -26,11 +27,21 @@ std::vector<std::string>& pending() {
   return lines;
 }
 
+std::set<std::string>& told() {
+  static std::set<std::string> lines;
+  return lines;
+}
+
 }  // namespace
 
 void note(std::string line) {
   std::lock_guard guard(lock());
   pending().push_back(safeLine(line));  // one safe line, as an error's message is (input_error.h)
+}
+
+void noteOnce(std::string line) {
+  std::lock_guard guard(lock());
+  if (told().insert(line).second) pending().push_back(std::move(line));
 }
 
 void flushNotes() {
@@ -43,6 +54,8 @@ void flushNotes() {
 
 void discardNotes() {
   std::lock_guard guard(lock());
+  // A line dropped untold is told when it comes again.
+  for (const std::string& line : pending()) told().erase(line);
   pending().clear();
 }
 

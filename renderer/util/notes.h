@@ -11,6 +11,9 @@ namespace glossy {
 
 // Queues one line; "glossy: " is put in front when printed.
 void note(std::string line);
+// Queues the line unless this process queued the same line before: a fact about an input (a MERL table's
+// unmeasured bins) is told once a run, not once for every sheet that reads the input.
+void noteOnce(std::string line);
 // Prints the queued lines to stderr, in order, and forgets them.
 void flushNotes();
 // Forgets the queued lines (the run failed on bad input: its error is the one line).

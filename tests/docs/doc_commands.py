@@ -7,7 +7,9 @@ long for the default suite (label docs-long); ```sh cluster one that needs a run
 ```sh suite the set-up and the test suite themselves (./scripts/test, ctest), whose run is the one this test
 is part of, so never run here. ```console (a command with its output), ```text, ```python, ```toml, ```json
 are not shell blocks: the Python ones run in tests/python/test_docs.py. A fence without an info string is an
-error, so that no shell block is left out unnoticed.
+error, so that no shell block is left out unnoticed. A block of one of those languages whose info string
+names a file of the tree (```toml scenes/studies/example.toml) shows that file: it must be the file's text,
+line for line, so that the shell blocks that run the file run what the page shows.
 
 Each page runs in a fresh copy of the source tree (the files git tracks, plus new ones it does not ignore),
 with the build tree as its build/ and the shared data beside it as ../shared, in one bash process, block
@@ -67,6 +69,23 @@ def kind_of(block):
         raise ValueError(f"{block.page}:{block.line - 1}: unknown info string '{block.info}' "
                          f"(sh, sh docs-long, sh cluster, sh suite, {', '.join(sorted(NOT_SHELL))})")
     return SHELL_TAGS[" ".join(words[1:])]
+
+
+def shown_file_error(source, block):
+    """Why a block that names the file it shows (```toml PATH) is not that file's text, or None."""
+    words = block.info.split()
+    if len(words) != 2 or words[0] not in NOT_SHELL:
+        return None
+    path = source / words[1]
+    if not path.is_file():
+        return f"{block.page}:{block.line - 1}: the block shows {words[1]}, which is not a file of the tree"
+    text = path.read_text().splitlines()
+    for i, (shown, real) in enumerate(zip(block.lines, text)):
+        if shown != real:
+            return f"{block.page}:{block.line + i}: the block differs from {words[1]}:{i + 1} ('{real}')"
+    if len(block.lines) != len(text):
+        return f"{block.page}:{block.line}: the block has {len(block.lines)} lines, {words[1]} {len(text)}"
+    return None
 
 
 def source_files(source):
@@ -189,6 +208,7 @@ def main():
         except ValueError as e:
             errors.append(str(e))
             continue
+        errors += [e for e in (shown_file_error(source, b) for b, _ in blocks) if e]
         wanted = {"default"} | ({args.label} if args.label != "default" else set())
         run = [b for b, k in blocks if k in wanted]
         if args.list:
