@@ -118,8 +118,11 @@ TEST(StudyReport, TheSummaryIsRenderedEachFigureCaptionedAndRowsFoundByEveryColu
   const std::regex name("<tr data-name=\"([^\"]*)\"");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(index, m, name));
-  for (const std::string& word : {row.material, row.database, row.lighting, row.scene, row.fit})
-    if (!word.empty()) EXPECT_NE(m[1].str().find(word), std::string::npos) << word << " not in the filter's words: " << m[1].str();
+  for (const std::string& word : {row.material, row.database, row.lighting, row.scene, row.fit}) {
+    if (!word.empty()) {
+      EXPECT_NE(m[1].str().find(word), std::string::npos) << word << " not in the filter's words: " << m[1].str();
+    }
+  }
 }
 
 // A study with a sheet missing is refused, naming it, and nothing is written.
