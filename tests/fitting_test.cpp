@@ -140,7 +140,8 @@ INSTANTIATE_TEST_SUITE_P(
         RoundTrip{"microfacet", makeFit("microfacet", "E2", {{"kd", Rgb(0.15, 0.1, 0.05)}, {"a", Rgb(8.0, 6.0, 5.0)}, {"b", 600.0}, {"c", 0.8}, {"eta", 1.9}}), Metric::E2},
         RoundTrip{"smooth", makeFit("smooth", "E2", {{"kd", Rgb(0.1, 0.2, 0.3)}, {"a", Rgb(3.0, 2.5, 2.0)}, {"b", 300.0}, {"c", 1.3}, {"eta", 1.4}}), Metric::E2},
         RoundTrip{"glossy_ggx", makeFit("ggx", "E2", {{"kd", Rgb(0.05, 0.08, 0.1)}, {"ks", Rgb(0.7, 0.6, 0.5)}, {"alpha", 0.04}, {"eta", 1.8}}), Metric::E2},
-        RoundTrip{"broad_ggx", makeFit("ggx", "E1", {{"kd", Rgb(0.15, 0.1, 0.05)}, {"ks", Rgb(0.5, 0.5, 0.6)}, {"alpha", 0.3}, {"eta", 1.5}}), Metric::E1}),
+        RoundTrip{"broad_ggx", makeFit("ggx", "E1", {{"kd", Rgb(0.15, 0.1, 0.05)}, {"ks", Rgb(0.5, 0.5, 0.6)}, {"alpha", 0.3}, {"eta", 1.5}}), Metric::E1},
+        RoundTrip{"ward", makeFit("ward", "E1", {{"kd", Rgb(0.0886, 0.0602, 0.0299)}, {"ks", Rgb(0.0484, 0.0274, 0.0135)}, {"alpha", 0.0357}}), Metric::E1}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(FitModel, TheResultDoesNotDependOnTheStartsOrTheThreadCount) {
@@ -180,7 +181,7 @@ TEST(FitModel, ModelsWithoutALobeCannotBeFitted) {
   const MetricData data(*table, Metric::E1);
   const std::string message = expectInputError([&] { fitModel(data, "lambertian"); });
   EXPECT_NE(message.find("cannot fit"), std::string::npos) << message;
-  EXPECT_EQ(fittableModels(), (std::vector<std::string_view>{"microfacet", "smooth", "ashikhmin-shirley", "cook-torrance", "ggx"}));
+  EXPECT_EQ(fittableModels(), (std::vector<std::string_view>{"microfacet", "smooth", "ashikhmin-shirley", "cook-torrance", "ggx", "ward"}));
 }
 
 }  // namespace glossy::test

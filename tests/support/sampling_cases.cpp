@@ -109,6 +109,14 @@ std::vector<LibraryFit> ggxChi2Fits() {
   return {{"ggx alpha=0.02", Ggx{Rgb(0.1), Rgb(1.0), 0.02, 1.5}}, {"ggx alpha=0.5", Ggx{Rgb(0.1), Rgb(1.0), 0.5, 1.5}}};
 }
 
+std::vector<LibraryFit> publishedLobeChi2Fits() {
+  return {
+      // Ward: hematite (α = 0.00576, the sharpest) and red-fabric (α = 0.5, the broadest, Ngan's bound).
+      {"ward hematite", Ward{Rgb(0.0317, 0.0275, 0.0191), Rgb(0.0849, 0.0739, 0.0513), 0.00576}},
+      {"ward red-fabric", Ward{Rgb(0.176, 0.017, 0.00287), Rgb(0.063, 0.0134, 0.00565), 0.5}},
+  };
+}
+
 Vec3 viewDirection(double theta) {
   const double phi = 0.6;
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
@@ -154,6 +162,8 @@ double lobeWidth(const Brdf& brdf) {
     width = std::sqrt(abcQuantile(m->b, m->c, 4.0, q));  // d = |D_P|
   } else if (const auto* m = brdf.as<Ggx>()) {
     width = 2.0 * std::atan(m->alpha * std::sqrt(q / (1.0 - q)));  // D cos θ_h: P(tan²θ_h ≤ t) = t/(α² + t)
+  } else if (const auto* m = brdf.as<Ward>()) {
+    width = 2.0 * std::atan(m->alpha * std::sqrt(-std::log(1.0 - q)));  // tan² θ_h = −α² ln(1 − ξ)
   }
   return std::clamp(width, 1e-5, 0.5);
 }
@@ -194,8 +204,9 @@ const std::vector<SamplingCase>& analyticChi2Family() {
       for (const LibraryFit& f : fits)
         for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
     for (const SamplingCase& c : atViewAngles({"lambertian", Lambertian{Rgb(0.5)}})) all.push_back(c);
-    for (const LibraryFit& f : ggxChi2Fits())
-      for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
+    for (const auto& fits : {ggxChi2Fits(), publishedLobeChi2Fits()})
+      for (const LibraryFit& f : fits)
+        for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
     return all;
   }();
   return cases;
