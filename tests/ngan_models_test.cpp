@@ -133,7 +133,7 @@ TEST_P(NganModel, IsReciprocalAndZeroBelowTheHorizon) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Models, NganModel, ::testing::Values("ward"),
+INSTANTIATE_TEST_SUITE_P(Models, NganModel, ::testing::Values("ward", "ward-duer"),
                          [](const auto& info) {
                            std::string s = info.param;
                            for (char& c : s)

@@ -12,12 +12,13 @@
 #include "materials/models/microfacet.h"
 #include "materials/models/smooth.h"
 #include "materials/models/ward.h"
+#include "materials/models/ward_duer.h"
 
 namespace glossy {
 
 template <class... Models>
 struct ModelList {};
 
-using BuiltinModels = ModelList<Microfacet, Smooth, AshikhminShirley, CookTorrance, Lambertian, Ggx, Ward>;
+using BuiltinModels = ModelList<Microfacet, Smooth, AshikhminShirley, CookTorrance, Lambertian, Ggx, Ward, WardDuer>;
 
 }  // namespace glossy

@@ -114,6 +114,8 @@ std::vector<LibraryFit> publishedLobeChi2Fits() {
       // Ward: hematite (α = 0.00576, the sharpest) and red-fabric (α = 0.5, the broadest, Ngan's bound).
       {"ward hematite", Ward{Rgb(0.0317, 0.0275, 0.0191), Rgb(0.0849, 0.0739, 0.0513), 0.00576}},
       {"ward red-fabric", Ward{Rgb(0.176, 0.017, 0.00287), Rgb(0.063, 0.0134, 0.00565), 0.5}},
+      {"ward-duer hematite", WardDuer{Rgb(0.0366, 0.0318, 0.0221), Rgb(0.0601, 0.0523, 0.0363), 0.00509}},
+      {"ward-duer pink-plastic", WardDuer{Rgb(0.367, 0.0715, 0.0344), Rgb(0.0366, 0.0241, 0.0173), 0.5}},
   };
 }
 
@@ -164,6 +166,8 @@ double lobeWidth(const Brdf& brdf) {
     width = 2.0 * std::atan(m->alpha * std::sqrt(q / (1.0 - q)));  // D cos θ_h: P(tan²θ_h ≤ t) = t/(α² + t)
   } else if (const auto* m = brdf.as<Ward>()) {
     width = 2.0 * std::atan(m->alpha * std::sqrt(-std::log(1.0 - q)));  // tan² θ_h = −α² ln(1 − ξ)
+  } else if (const auto* m = brdf.as<WardDuer>()) {
+    width = 2.0 * std::atan(m->alpha * std::sqrt(-std::log(1.0 - q)));
   }
   return std::clamp(width, 1e-5, 0.5);
 }
