@@ -181,7 +181,8 @@ TEST(FitModel, ModelsWithoutALobeCannotBeFitted) {
   const MetricData data(*table, Metric::E1);
   const std::string message = expectInputError([&] { fitModel(data, "lambertian"); });
   EXPECT_NE(message.find("cannot fit"), std::string::npos) << message;
-  EXPECT_EQ(fittableModels(), (std::vector<std::string_view>{"microfacet", "smooth", "ashikhmin-shirley", "cook-torrance", "ggx", "ward", "ward-duer"}));
+  EXPECT_EQ(fittableModels(), (std::vector<std::string_view>{"microfacet", "smooth", "ashikhmin-shirley", "cook-torrance", "ggx", "ward", "ward-duer",
+                                                                 "blinn-phong"}));
 }
 
 }  // namespace glossy::test

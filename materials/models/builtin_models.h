@@ -8,6 +8,7 @@
 #include "materials/models/ashikhmin_shirley.h"
 #include "materials/models/cook_torrance.h"
 #include "materials/models/ggx.h"
+#include "materials/models/blinn_phong.h"
 #include "materials/models/lambertian.h"
 #include "materials/models/microfacet.h"
 #include "materials/models/smooth.h"
@@ -19,6 +20,7 @@ namespace glossy {
 template <class... Models>
 struct ModelList {};
 
-using BuiltinModels = ModelList<Microfacet, Smooth, AshikhminShirley, CookTorrance, Lambertian, Ggx, Ward, WardDuer>;
+using BuiltinModels = ModelList<Microfacet, Smooth, AshikhminShirley, CookTorrance, Lambertian, Ggx, Ward, WardDuer,
+                           BlinnPhong>;
 
 }  // namespace glossy

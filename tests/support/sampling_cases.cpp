@@ -116,6 +116,10 @@ std::vector<LibraryFit> publishedLobeChi2Fits() {
       {"ward red-fabric", Ward{Rgb(0.176, 0.017, 0.00287), Rgb(0.063, 0.0134, 0.00565), 0.5}},
       {"ward-duer hematite", WardDuer{Rgb(0.0366, 0.0318, 0.0221), Rgb(0.0601, 0.0523, 0.0363), 0.00509}},
       {"ward-duer pink-plastic", WardDuer{Rgb(0.367, 0.0715, 0.0344), Rgb(0.0366, 0.0241, 0.0173), 0.5}},
+      // Blinn-Phong: specular-violet-phenolic (n = 1.21e5) and yellow-paint (n = 9.02; the broader
+      // polyurethane-foam fit has no lobe, Ks = 0).
+      {"blinn-phong specular-violet-phenolic", BlinnPhong{Rgb(0.0708, 0.0167, 0.013), Rgb(0.00109, 0.000602, 0.000442), 121000.0}},
+      {"blinn-phong yellow-paint", BlinnPhong{Rgb(0.29, 0.161, 0.0139), Rgb(0.014, 0.0115, 0.00616), 9.02}},
   };
 }
 
@@ -168,6 +172,8 @@ double lobeWidth(const Brdf& brdf) {
     width = 2.0 * std::atan(m->alpha * std::sqrt(-std::log(1.0 - q)));  // tan² θ_h = −α² ln(1 − ξ)
   } else if (const auto* m = brdf.as<WardDuer>()) {
     width = 2.0 * std::atan(m->alpha * std::sqrt(-std::log(1.0 - q)));
+  } else if (const auto* m = brdf.as<BlinnPhong>()) {
+    width = 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));  // cos θ_h = ξ^(1/(n+1))
   }
   return std::clamp(width, 1e-5, 0.5);
 }
