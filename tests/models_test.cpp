@@ -184,6 +184,7 @@ TEST(Sampling, PdfIntegratesToTheSamplersAcceptanceProbability) {
       {"ward alpha=0.3", Ward{Rgb(0.05), Rgb(0.5), 0.3}},
       {"ward-duer alpha=0.3", WardDuer{Rgb(0.05), Rgb(0.5), 0.3}},
       {"blinn-phong n=20", BlinnPhong{Rgb(0.05), Rgb(0.2), 20.0}},
+      {"lafortune n=5", Lafortune{Rgb(0.05), Rgb(0.5), -0.6, 0.4, 5.0}},
   };
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
@@ -216,6 +217,7 @@ TEST(Sampling, NoNonFiniteSampleAtTheEndsOfTheUnitSquareForTheMostExtremeFits) {
       Ward{Rgb(0.0), Rgb(1.0), 1e-4}, Ward{Rgb(0.1), Rgb(1.0), 10.0},
       WardDuer{Rgb(0.0), Rgb(1.0), 1e-4},
       BlinnPhong{Rgb(0.0), Rgb(1.0), 1e8},
+      Lafortune{Rgb(0.0), Rgb(1.0), -0.577, 0.577, 1e8}, Lafortune{Rgb(0.1), Rgb(1.0), -0.707, 1e-12, 0.0},
   };
   const double ends[] = {0.0, 1e-300, 1e-17, 0.5, 1.0 - 1e-16, std::nextafter(1.0, 0.0)};
   for (const Brdf& brdf : extreme)

@@ -133,7 +133,7 @@ TEST_P(NganModel, IsReciprocalAndZeroBelowTheHorizon) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Models, NganModel, ::testing::Values("ward", "ward-duer", "blinn-phong"),
+INSTANTIATE_TEST_SUITE_P(Models, NganModel, ::testing::Values("ward", "ward-duer", "blinn-phong", "lafortune"),
                          [](const auto& info) {
                            std::string s = info.param;
                            for (char& c : s)

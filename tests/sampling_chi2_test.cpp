@@ -118,6 +118,10 @@ TEST(Chi2Power, RejectsSamplersOneToThreePercentOff) {
       {"GGX α=0.5 drawn with α·1.03", Ggx{Rgb(0.0), Rgb(1.0), 0.5, 1.5}, Ggx{Rgb(0.0), Rgb(1.0), 0.5 * 1.03, 1.5}, 0.0},
       {"Ward α=0.00576 drawn with α·1.02", Ward{Rgb(0.0), Rgb(1.0), 0.00576}, Ward{Rgb(0.0), Rgb(1.0), 0.00576 * 1.02}, 65 * deg},
       {"Blinn-Phong n=1.21e5 drawn with n·1.03", BlinnPhong{Rgb(0.0), Rgb(1.0), 1.21e5}, BlinnPhong{Rgb(0.0), Rgb(1.0), 1.21e5 * 1.03}, 35 * deg},
+      {"Lafortune n=1.66e4 drawn with n·1.03", Lafortune{Rgb(0.0), Rgb(1.0), -0.577, 0.577, 16600.0},
+       Lafortune{Rgb(0.0), Rgb(1.0), -0.577, 0.577, 16600.0 * 1.03}, 35 * deg},
+      {"Lafortune Cz=0.4 drawn with Cz·1.03", Lafortune{Rgb(0.0), Rgb(1.0), -0.6, 0.4, 50.0},
+       Lafortune{Rgb(0.0), Rgb(1.0), -0.6, 0.4 * 1.03, 50.0}, 65 * deg},
       {"lobe choice 0.023 off (Kd·1.1 in the mixture weight)", CookTorrance{Rgb(0.2), Rgb(1.0), 0.1, 1.5},
        CookTorrance{Rgb(0.22), Rgb(1.0), 0.1, 1.5}, 35 * deg},
   };

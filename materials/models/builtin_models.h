@@ -9,6 +9,7 @@
 #include "materials/models/cook_torrance.h"
 #include "materials/models/ggx.h"
 #include "materials/models/blinn_phong.h"
+#include "materials/models/lafortune.h"
 #include "materials/models/lambertian.h"
 #include "materials/models/microfacet.h"
 #include "materials/models/smooth.h"
@@ -21,6 +22,6 @@ template <class... Models>
 struct ModelList {};
 
 using BuiltinModels = ModelList<Microfacet, Smooth, AshikhminShirley, CookTorrance, Lambertian, Ggx, Ward, WardDuer,
-                           BlinnPhong>;
+                           BlinnPhong, Lafortune>;
 
 }  // namespace glossy

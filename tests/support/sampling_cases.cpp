@@ -120,6 +120,9 @@ std::vector<LibraryFit> publishedLobeChi2Fits() {
       // polyurethane-foam fit has no lobe, Ks = 0).
       {"blinn-phong specular-violet-phenolic", BlinnPhong{Rgb(0.0708, 0.0167, 0.013), Rgb(0.00109, 0.000602, 0.000442), 121000.0}},
       {"blinn-phong yellow-paint", BlinnPhong{Rgb(0.29, 0.161, 0.0139), Rgb(0.014, 0.0115, 0.00616), 9.02}},
+      // Lafortune: hematite (n = 1.66e4) and beige-fabric (n = 2.29, Cz = 5e-8: a lobe about a nearly horizontal axis).
+      {"lafortune hematite", Lafortune{Rgb(0.03, 0.0261, 0.0181), Rgb(0.0802, 0.0698, 0.0484), -0.577, 0.577, 16600.0}},
+      {"lafortune beige-fabric", Lafortune{Rgb(0.241, 0.141, 0.0842), Rgb(0.1, 0.0653, 0.0371), -0.707, 5.09e-08, 2.29}},
   };
 }
 
@@ -174,6 +177,8 @@ double lobeWidth(const Brdf& brdf) {
     width = 2.0 * std::atan(m->alpha * std::sqrt(-std::log(1.0 - q)));
   } else if (const auto* m = brdf.as<BlinnPhong>()) {
     width = 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));  // cos θ_h = ξ^(1/(n+1))
+  } else if (const auto* m = brdf.as<Lafortune>()) {
+    width = std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));  // about the lobe's axis, not the half vector
   }
   return std::clamp(width, 1e-5, 0.5);
 }
