@@ -133,7 +133,8 @@ TEST_P(NganModel, IsReciprocalAndZeroBelowTheHorizon) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Models, NganModel, ::testing::Values("ward", "ward-duer", "blinn-phong", "lafortune"),
+INSTANTIATE_TEST_SUITE_P(Models, NganModel, ::testing::Values("ward", "ward-duer", "blinn-phong", "lafortune",
+                                                                   "ngan-ashikhmin-shirley"),
                          [](const auto& info) {
                            std::string s = info.param;
                            for (char& c : s)

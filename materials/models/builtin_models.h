@@ -12,6 +12,7 @@
 #include "materials/models/lafortune.h"
 #include "materials/models/lambertian.h"
 #include "materials/models/microfacet.h"
+#include "materials/models/ngan_ashikhmin_shirley.h"
 #include "materials/models/smooth.h"
 #include "materials/models/ward.h"
 #include "materials/models/ward_duer.h"
@@ -22,6 +23,6 @@ template <class... Models>
 struct ModelList {};
 
 using BuiltinModels = ModelList<Microfacet, Smooth, AshikhminShirley, CookTorrance, Lambertian, Ggx, Ward, WardDuer,
-                           BlinnPhong, Lafortune>;
+                           BlinnPhong, Lafortune, NganAshikhminShirley>;
 
 }  // namespace glossy

@@ -123,6 +123,8 @@ std::vector<LibraryFit> publishedLobeChi2Fits() {
       // Lafortune: hematite (n = 1.66e4) and beige-fabric (n = 2.29, Cz = 5e-8: a lobe about a nearly horizontal axis).
       {"lafortune hematite", Lafortune{Rgb(0.03, 0.0261, 0.0181), Rgb(0.0802, 0.0698, 0.0484), -0.577, 0.577, 16600.0}},
       {"lafortune beige-fabric", Lafortune{Rgb(0.241, 0.141, 0.0842), Rgb(0.1, 0.0653, 0.0371), -0.707, 5.09e-08, 2.29}},
+      {"ngan-ashikhmin-shirley hematite", NganAshikhminShirley{Rgb(0.0368, 0.032, 0.0222), Rgb(0.0599, 0.0521, 0.0362), 0.999, 78200.0}},
+      {"ngan-ashikhmin-shirley beige-fabric", NganAshikhminShirley{Rgb(0.199, 0.112, 0.0664), Rgb(0.197, 0.136, 0.0822), 0.973, 0.5}},
   };
 }
 
@@ -177,6 +179,8 @@ double lobeWidth(const Brdf& brdf) {
     width = 2.0 * std::atan(m->alpha * std::sqrt(-std::log(1.0 - q)));
   } else if (const auto* m = brdf.as<BlinnPhong>()) {
     width = 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));  // cos θ_h = ξ^(1/(n+1))
+  } else if (const auto* m = brdf.as<NganAshikhminShirley>()) {
+    width = 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));
   } else if (const auto* m = brdf.as<Lafortune>()) {
     width = std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));  // about the lobe's axis, not the half vector
   }
