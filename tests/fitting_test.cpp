@@ -182,7 +182,7 @@ TEST(FitModel, ModelsWithoutALobeCannotBeFitted) {
   const std::string message = expectInputError([&] { fitModel(data, "lambertian"); });
   EXPECT_NE(message.find("cannot fit"), std::string::npos) << message;
   EXPECT_EQ(fittableModels(), (std::vector<std::string_view>{"microfacet", "smooth", "ashikhmin-shirley", "cook-torrance", "ggx", "ward", "ward-duer",
-                                                                 "blinn-phong", "ngan-ashikhmin-shirley"}));
+                                                                 "blinn-phong", "ngan-ashikhmin-shirley", "ngan-cook-torrance"}));
 }
 
 }  // namespace glossy::test

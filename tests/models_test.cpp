@@ -186,6 +186,7 @@ TEST(Sampling, PdfIntegratesToTheSamplersAcceptanceProbability) {
       {"blinn-phong n=20", BlinnPhong{Rgb(0.05), Rgb(0.2), 20.0}},
       {"lafortune n=5", Lafortune{Rgb(0.05), Rgb(0.5), -0.6, 0.4, 5.0}},
       {"ngan-ashikhmin-shirley n=20", NganAshikhminShirley{Rgb(0.05), Rgb(0.5), 0.3, 20.0}},
+      {"ngan-cook-torrance m=0.3", NganCookTorrance{Rgb(0.1), Rgb(0.5), 0.3, 0.3}},
   };
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
@@ -220,6 +221,7 @@ TEST(Sampling, NoNonFiniteSampleAtTheEndsOfTheUnitSquareForTheMostExtremeFits) {
       BlinnPhong{Rgb(0.0), Rgb(1.0), 1e8},
       Lafortune{Rgb(0.0), Rgb(1.0), -0.577, 0.577, 1e8}, Lafortune{Rgb(0.1), Rgb(1.0), -0.707, 1e-12, 0.0},
       NganAshikhminShirley{Rgb(0.0), Rgb(1.0), 0.999, 1e8},
+      NganCookTorrance{Rgb(0.0), Rgb(1.0), 1.0, 1e-4},
   };
   const double ends[] = {0.0, 1e-300, 1e-17, 0.5, 1.0 - 1e-16, std::nextafter(1.0, 0.0)};
   for (const Brdf& brdf : extreme)

@@ -134,7 +134,7 @@ TEST_P(NganModel, IsReciprocalAndZeroBelowTheHorizon) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Models, NganModel, ::testing::Values("ward", "ward-duer", "blinn-phong", "lafortune",
-                                                                   "ngan-ashikhmin-shirley"),
+                                                                   "ngan-ashikhmin-shirley", "ngan-cook-torrance"),
                          [](const auto& info) {
                            std::string s = info.param;
                            for (char& c : s)

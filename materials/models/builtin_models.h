@@ -13,6 +13,7 @@
 #include "materials/models/lambertian.h"
 #include "materials/models/microfacet.h"
 #include "materials/models/ngan_ashikhmin_shirley.h"
+#include "materials/models/ngan_cook_torrance.h"
 #include "materials/models/smooth.h"
 #include "materials/models/ward.h"
 #include "materials/models/ward_duer.h"
@@ -23,6 +24,6 @@ template <class... Models>
 struct ModelList {};
 
 using BuiltinModels = ModelList<Microfacet, Smooth, AshikhminShirley, CookTorrance, Lambertian, Ggx, Ward, WardDuer,
-                           BlinnPhong, Lafortune, NganAshikhminShirley>;
+                           BlinnPhong, Lafortune, NganAshikhminShirley, NganCookTorrance>;
 
 }  // namespace glossy

@@ -125,6 +125,8 @@ std::vector<LibraryFit> publishedLobeChi2Fits() {
       {"lafortune beige-fabric", Lafortune{Rgb(0.241, 0.141, 0.0842), Rgb(0.1, 0.0653, 0.0371), -0.707, 5.09e-08, 2.29}},
       {"ngan-ashikhmin-shirley hematite", NganAshikhminShirley{Rgb(0.0368, 0.032, 0.0222), Rgb(0.0599, 0.0521, 0.0362), 0.999, 78200.0}},
       {"ngan-ashikhmin-shirley beige-fabric", NganAshikhminShirley{Rgb(0.199, 0.112, 0.0664), Rgb(0.197, 0.136, 0.0822), 0.973, 0.5}},
+      {"ngan-cook-torrance hematite", NganCookTorrance{Rgb(0.0364, 0.0316, 0.022), Rgb(0.102, 0.0889, 0.0617), 0.599, 0.00512}},
+      {"ngan-cook-torrance polyurethane-foam", NganCookTorrance{Rgb(0.0663, 0.0205, 0.00926), Rgb(0.144, 0.0792, 0.0491), 0.206, 0.943}},
   };
 }
 
@@ -177,6 +179,8 @@ double lobeWidth(const Brdf& brdf) {
     width = 2.0 * std::atan(m->alpha * std::sqrt(-std::log(1.0 - q)));  // tan² θ_h = −α² ln(1 − ξ)
   } else if (const auto* m = brdf.as<WardDuer>()) {
     width = 2.0 * std::atan(m->alpha * std::sqrt(-std::log(1.0 - q)));
+  } else if (const auto* m = brdf.as<NganCookTorrance>()) {
+    width = 2.0 * std::atan(m->m * std::sqrt(-std::log(1.0 - q)));
   } else if (const auto* m = brdf.as<BlinnPhong>()) {
     width = 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));  // cos θ_h = ξ^(1/(n+1))
   } else if (const auto* m = brdf.as<NganAshikhminShirley>()) {
