@@ -61,9 +61,10 @@ std::vector<LibraryFit> supplementFits() {
              return p.material == r.material && p.fit.id == FitId{r.fit.id.model, r.fit.id.metric};
            });
   };
+  // Ngan et al.'s fits of the six are left to publishedLobeChi2Fits (each model's extremes) and the sweep.
   std::vector<LibraryFit> out;
   for (const FitRecord& r : records)
-    if (isSupplement(r.material) && !refit(r)) out.push_back(toLibraryFit(r));
+    if (isSupplement(r.material) && !refit(r) && r.fit.id.metric != FitId::kNgan05) out.push_back(toLibraryFit(r));
   return out;
 }
 
