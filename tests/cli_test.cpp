@@ -232,6 +232,9 @@ TEST(CliImport, RegeneratesTheCommittedLibraryByteForByte) {
   for (const auto& e : std::filesystem::directory_iterator(sharedDir() / "fits"))
     if (e.path().extension() == ".fit") args.push_back(e.path().string());
   args.push_back((sharedDir() / "seed/supplement.txt").string());
+  // Ngan et al. 2005's fits, committed beside the library (materials/published-fits/SOURCES.md).
+  for (const auto& e : std::filesystem::directory_iterator(sourceDir() / "materials/published-fits"))
+    if (e.path().extension() == ".fit") args.push_back(e.path().string());
   args.insert(args.end(), {"-o", out.path().string()});
   const RunResult r = runGlossy(args);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -271,6 +274,30 @@ TEST(CliList, ListsTheLibrary) {
   for (const char* other : {"ggx:E2:glossy 0.", "cook-torrance:E2:glossy 0.", "microfacet:E2:glossy 0."})
     EXPECT_NE(line.find(other), std::string::npos) << other << " missing from: " << line;
   EXPECT_EQ(r.out.find(" 0 other fits"), std::string::npos) << r.out;
+}
+
+// Fits outside the grid, e.g. Ngan et al.'s published ones, as columns of their own.
+TEST(CliList, ListsTheFitsPanelsNames) {
+  const RunResult r = runGlossy({"list", "--panels", "measured,ward:Ngan05", materialsDir().string()});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("Ward Ngan05"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("100 materials, 86 of the named fits"), std::string::npos) << r.out;
+  expectOneLineError(runGlossy({"list", "--panels", "ward:E7", materialsDir().string()}), "--panels");
+}
+
+// `glossy eval` reaches Ngan et al.'s fits by MODEL:Ngan05, with the value the model gives in C++.
+TEST(CliEval, EvaluatesNganEtAlsPublishedFits) {
+  const auto file = materialsDir() / "alum-bronze.toml";
+  const MaterialFile m = loadMaterialFile(file);
+  for (const Fit& f : m.fits) {
+    if (f.id.metric != FitId::kNgan05) continue;
+    const RunResult r = runGlossy({"eval", "--material", file.string(), "--fit", f.id.str()}, "0.5,0,0.8660254037844386,-0.5,0,0.8660254037844386\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Rgb want = eval(makeBrdf(f), Vec3(0.5, 0, 0.8660254037844386), Vec3(-0.5, 0, 0.8660254037844386));
+    double got[3];
+    ASSERT_EQ(std::sscanf(r.out.c_str(), "%lf,%lf,%lf", &got[0], &got[1], &got[2]), 3) << r.out;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-12 * want[c]) << f.id.str();
+  }
 }
 
 // With no path, from the checkout: a section per database folder that holds parameter files, headed by its

@@ -140,7 +140,13 @@ INSTANTIATE_TEST_SUITE_P(
         RoundTrip{"microfacet", makeFit("microfacet", "E2", {{"kd", Rgb(0.15, 0.1, 0.05)}, {"a", Rgb(8.0, 6.0, 5.0)}, {"b", 600.0}, {"c", 0.8}, {"eta", 1.9}}), Metric::E2},
         RoundTrip{"smooth", makeFit("smooth", "E2", {{"kd", Rgb(0.1, 0.2, 0.3)}, {"a", Rgb(3.0, 2.5, 2.0)}, {"b", 300.0}, {"c", 1.3}, {"eta", 1.4}}), Metric::E2},
         RoundTrip{"glossy_ggx", makeFit("ggx", "E2", {{"kd", Rgb(0.05, 0.08, 0.1)}, {"ks", Rgb(0.7, 0.6, 0.5)}, {"alpha", 0.04}, {"eta", 1.8}}), Metric::E2},
-        RoundTrip{"broad_ggx", makeFit("ggx", "E1", {{"kd", Rgb(0.15, 0.1, 0.05)}, {"ks", Rgb(0.5, 0.5, 0.6)}, {"alpha", 0.3}, {"eta", 1.5}}), Metric::E1}),
+        RoundTrip{"broad_ggx", makeFit("ggx", "E1", {{"kd", Rgb(0.15, 0.1, 0.05)}, {"ks", Rgb(0.5, 0.5, 0.6)}, {"alpha", 0.3}, {"eta", 1.5}}), Metric::E1},
+        RoundTrip{"ward", makeFit("ward", "E1", {{"kd", Rgb(0.0886, 0.0602, 0.0299)}, {"ks", Rgb(0.0484, 0.0274, 0.0135)}, {"alpha", 0.0357}}), Metric::E1},
+        // Ngan et al.'s published alum-bronze fits of the other fittable models of their paper.
+        RoundTrip{"ward_duer", makeFit("ward-duer", "E2", {{"kd", Rgb(0.0856, 0.0585, 0.0291)}, {"ks", Rgb(0.032, 0.0189, 0.00986)}, {"alpha", 0.0374}}), Metric::E2},
+        RoundTrip{"blinn_phong", makeFit("blinn-phong", "E1", {{"kd", Rgb(0.0864, 0.0597, 0.0302)}, {"ks", Rgb(0.015, 0.00818, 0.00381)}, {"n", 1290.0}}), Metric::E1},
+        RoundTrip{"ngan_as", makeFit("ngan-ashikhmin-shirley", "E2", {{"kd", Rgb(0.0877, 0.0598, 0.0297)}, {"ks", Rgb(0.108, 0.0637, 0.0337)}, {"f0", 0.249}, {"n", 1350.0}}), Metric::E2},
+        RoundTrip{"ngan_ct", makeFit("ngan-cook-torrance", "E1", {{"kd", Rgb(0.0886, 0.0602, 0.0299)}, {"ks", Rgb(0.118, 0.0698, 0.0371)}, {"f0", 0.203}, {"m", 0.0367}}), Metric::E1}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(FitModel, TheResultDoesNotDependOnTheStartsOrTheThreadCount) {
@@ -180,7 +186,8 @@ TEST(FitModel, ModelsWithoutALobeCannotBeFitted) {
   const MetricData data(*table, Metric::E1);
   const std::string message = expectInputError([&] { fitModel(data, "lambertian"); });
   EXPECT_NE(message.find("cannot fit"), std::string::npos) << message;
-  EXPECT_EQ(fittableModels(), (std::vector<std::string_view>{"microfacet", "smooth", "ashikhmin-shirley", "cook-torrance", "ggx"}));
+  EXPECT_EQ(fittableModels(), (std::vector<std::string_view>{"microfacet", "smooth", "ashikhmin-shirley", "cook-torrance", "ggx", "ward", "ward-duer",
+                                                                 "blinn-phong", "ngan-ashikhmin-shirley", "ngan-cook-torrance"}));
 }
 
 }  // namespace glossy::test

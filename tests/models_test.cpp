@@ -66,7 +66,12 @@ TEST(HalfVector, OneMinusCosineWithoutCancellation) {
 
 TEST(Library, EveryFitIsReciprocalFiniteAndZeroBelowTheHorizon) {
   const auto brdfs = libraryBrdfs();
-  ASSERT_EQ(brdfs.size(), 1206u);  // 600 published, glossy's 600 refits beside them and 6 GGX E2 fits
+  // 600 published by Löw et al., glossy's 600 refits beside them, 6 GGX E2 fits, and Ngan et al.'s fits of 86
+  // materials, one per bbm file in materials/published-fits.
+  size_t nganModels = 0;
+  for (const auto& e : std::filesystem::directory_iterator(sourceDir() / "materials/published-fits"))
+    nganModels += e.path().extension() == ".fit";
+  ASSERT_EQ(brdfs.size(), 1206u + 86u * nganModels);
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (const auto& [name, brdf] : brdfs) {
@@ -181,6 +186,12 @@ TEST(Sampling, PdfIntegratesToTheSamplersAcceptanceProbability) {
       {"smooth C=0.5", Smooth{Rgb(0.05), Rgb(2.0), 10.0, 0.5, 1.5, false}},
       {"lambertian", Lambertian{Rgb(0.5)}},
       {"ggx alpha=0.5", Ggx{Rgb(0.05), Rgb(0.5), 0.5, 1.5}},
+      {"ward alpha=0.3", Ward{Rgb(0.05), Rgb(0.5), 0.3}},
+      {"ward-duer alpha=0.3", WardDuer{Rgb(0.05), Rgb(0.5), 0.3}},
+      {"blinn-phong n=20", BlinnPhong{Rgb(0.05), Rgb(0.2), 20.0}},
+      {"lafortune n=5", Lafortune{Rgb(0.05), Rgb(0.5), -0.6, 0.4, 5.0}},
+      {"ngan-ashikhmin-shirley n=20", NganAshikhminShirley{Rgb(0.05), Rgb(0.5), 0.3, 20.0}},
+      {"ngan-cook-torrance m=0.3", NganCookTorrance{Rgb(0.1), Rgb(0.5), 0.3, 0.3}},
   };
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
@@ -209,7 +220,14 @@ TEST(Sampling, NoNonFiniteSampleAtTheEndsOfTheUnitSquareForTheMostExtremeFits) {
   const Brdf extreme[] = {
       AshikhminShirley{Rgb(0.0), Rgb(1.0), 6.2e5, 99.999}, Microfacet{Rgb(0.0), Rgb(1e3), 8.1e6, 0.014, 1.5},
       Smooth{Rgb(0.0), Rgb(1e3), 8.1e6, 0.014, 1.5, false}, CookTorrance{Rgb(0.0), Rgb(1.0), 0.0018, 99.999},
-      Microfacet{Rgb(0.1), Rgb(1.0), 0.0, 1.0, 1.5}, Smooth{Rgb(0.1), Rgb(1.0), 0.0, 2.0, 1.5, false}};
+      Microfacet{Rgb(0.1), Rgb(1.0), 0.0, 1.0, 1.5}, Smooth{Rgb(0.1), Rgb(1.0), 0.0, 2.0, 1.5, false},
+      Ward{Rgb(0.0), Rgb(1.0), 1e-4}, Ward{Rgb(0.1), Rgb(1.0), 10.0},
+      WardDuer{Rgb(0.0), Rgb(1.0), 1e-4},
+      BlinnPhong{Rgb(0.0), Rgb(1.0), 1e8},
+      Lafortune{Rgb(0.0), Rgb(1.0), -0.577, 0.577, 1e8}, Lafortune{Rgb(0.1), Rgb(1.0), -0.707, 1e-12, 0.0},
+      NganAshikhminShirley{Rgb(0.0), Rgb(1.0), 0.999, 1e8},
+      NganCookTorrance{Rgb(0.0), Rgb(1.0), 1.0, 1e-4},
+  };
   const double ends[] = {0.0, 1e-300, 1e-17, 0.5, 1.0 - 1e-16, std::nextafter(1.0, 0.0)};
   for (const Brdf& brdf : extreme)
     for (double thetaV : {0.0, 1e-6, 0.7, 1.5707})

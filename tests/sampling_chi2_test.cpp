@@ -2,7 +2,8 @@
 //
 // The family: all 42 fits of the six supplement materials (36 published, glossy's 6 GGX E2) and the most extreme published fits of the
 // library (largest n, largest B, smallest C, smallest and largest m, η = 99.999), each at four view angles
-// up to 82°, plus Lambertian and GGX at α = 0.02 and 0.5 (ggxChi2Fits). 10⁶ samples per test on a grid of cells that follows the lobe
+// up to 82°, plus Lambertian, GGX at α = 0.02 and 0.5 (ggxChi2Fits) and the sharpest and broadest published
+// fits of each model of Ngan et al. 2005 (publishedLobeChi2Fits). 10⁶ samples per test on a grid of cells that follows the lobe
 // (tests/support/chi2.h); family-wise significance 0.01 with Šidák's correction, over these and the
 // measured sampler's tests (tests/measured_sampling_test.cpp). Negative controls show the
 // test has the power to reject samplers that are 1–3 % off. The same test over every fit of the library
@@ -33,7 +34,7 @@ TEST(Chi2Family, CoversTheSupplementAndAtLeastTwentyExtremeFitsAtFourViewAngles)
   std::string names;
   for (const LibraryFit& f : extremeFits()) names += (names.empty() ? "" : ", ") + f.name;
   RecordProperty("extremeFits", names);
-  EXPECT_EQ(family().size(), (supplementFits().size() + extremeFits().size() + 1 + ggxChi2Fits().size()) * kViewAngles.size());
+  EXPECT_EQ(family().size(), (supplementFits().size() + extremeFits().size() + 1 + ggxChi2Fits().size() + publishedLobeChi2Fits().size()) * kViewAngles.size());
   RecordProperty("familySize", int(family().size()) + kMeasuredChi2Tests);
   RecordProperty("perTestAlpha", std::to_string(familyAlpha()));
 }
@@ -115,6 +116,12 @@ TEST(Chi2Power, RejectsSamplersOneToThreePercentOff) {
       {"GGX α=0.02 drawn with α·1.02", Ggx{Rgb(0.0), Rgb(1.0), 0.02, 1.5}, Ggx{Rgb(0.0), Rgb(1.0), 0.02 * 1.02, 1.5},
        82 * deg},
       {"GGX α=0.5 drawn with α·1.03", Ggx{Rgb(0.0), Rgb(1.0), 0.5, 1.5}, Ggx{Rgb(0.0), Rgb(1.0), 0.5 * 1.03, 1.5}, 0.0},
+      {"Ward α=0.00576 drawn with α·1.02", Ward{Rgb(0.0), Rgb(1.0), 0.00576}, Ward{Rgb(0.0), Rgb(1.0), 0.00576 * 1.02}, 65 * deg},
+      {"Blinn-Phong n=1.21e5 drawn with n·1.03", BlinnPhong{Rgb(0.0), Rgb(1.0), 1.21e5}, BlinnPhong{Rgb(0.0), Rgb(1.0), 1.21e5 * 1.03}, 35 * deg},
+      {"Lafortune n=1.66e4 drawn with n·1.03", Lafortune{Rgb(0.0), Rgb(1.0), -0.577, 0.577, 16600.0},
+       Lafortune{Rgb(0.0), Rgb(1.0), -0.577, 0.577, 16600.0 * 1.03}, 35 * deg},
+      {"Lafortune Cz=0.4 drawn with Cz·1.03", Lafortune{Rgb(0.0), Rgb(1.0), -0.6, 0.4, 50.0},
+       Lafortune{Rgb(0.0), Rgb(1.0), -0.6, 0.4 * 1.03, 50.0}, 65 * deg},
       {"lobe choice 0.023 off (Kd·1.1 in the mixture weight)", CookTorrance{Rgb(0.2), Rgb(1.0), 0.1, 1.5},
        CookTorrance{Rgb(0.22), Rgb(1.0), 0.1, 1.5}, 35 * deg},
   };

@@ -129,6 +129,38 @@ std::vector<MaterialFile> importSupplement(std::string_view text, const std::str
   return out;
 }
 
+namespace {
+
+// Ngan et al. 2005's models as bbm names them → glossy's model and argument names. He et al.'s (NganHe) is
+// not a glossy model (docs/models.md).
+struct NganModel {
+  const char* bbm;
+  const char* model;
+  std::map<std::string, std::string> keys;
+};
+const NganModel* nganModel(const std::string& bbmModel) {
+  static const NganModel models[] = {
+      {"NganWard", "ward", {{"albedo", "ks"}, {"roughness", "alpha"}}},
+      {"NganWardDuer", "ward-duer", {{"albedo", "ks"}, {"roughness", "alpha"}}},
+      // bbm evaluates the mirror-vector Phong for these; glossy reads them on the half vector (blinn_phong.h).
+      {"NganBlinnPhong", "blinn-phong", {{"albedo", "ks"}, {"sharpness", "n"}}},
+      {"NganLafortune", "lafortune", {{"albedo", "ks"}, {"Cxy", "cxy"}, {"Cz", "cz"}, {"sharpness", "n"}}},
+      {"NganAshikhminShirley", "ngan-ashikhmin-shirley", {{"albedo", "ks"}, {"fresnelReflectance", "f0"}, {"sharpness", "n"}}},
+      // bbm's `eta` here is Schlick's F0, a reflectance (ngan_cook_torrance.h).
+      {"NganCookTorrance", "ngan-cook-torrance", {{"albedo", "ks"}, {"eta", "f0"}, {"roughness", "m"}}},
+  };
+  for (const NganModel& m : models)
+    if (bbmModel == m.bbm) return &m;
+  return nullptr;
+}
+
+}  // namespace
+
+std::string nganFitSource(const std::string& fileName) {
+  return "Ngan, Durand & Matusik 2005, published fits as transcribed by bbm (fits/" + fileName +
+         ", commit 9807fb38d7ab51802f3a0fe0f65cf763cb01a0f4)";
+}
+
 std::vector<MaterialFile> importFitLines(std::string_view text, const std::string& source) {
   static const std::regex fileMetric(R"(_(E[12])\.fit$)");
   static const std::regex commentMetric(R"(\b(E[12]) fits\b)");
@@ -143,8 +175,6 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
   if (std::regex_search(fileName, m, fileMetric)) metric = m[1];
   for (const auto& l : lines)
     if (metric.empty() && !l.empty() && l[0] == '#' && std::regex_search(l, m, commentMetric)) metric = m[1];
-  if (metric.empty())
-    throw InputError(source + ": cannot tell the metric (name the file *_E1.fit or *_E2.fit)");
 
   auto parseRgb = [](const std::string& list, const std::string& where) {
     const auto v = parseNumberList(list);
@@ -165,7 +195,14 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
     fit.id.metric = metric;
     // bbm's model and argument names → ours.
     std::map<std::string, std::string> keys;
-    if (bbmModel == "LowMicrofacetFit" || bbmModel == "LowSmooth") {
+    const NganModel* ngan = nganModel(bbmModel);
+    if (!ngan && metric.empty())
+      throw InputError(source + ": cannot tell the metric (name the file *_E1.fit or *_E2.fit)");
+    if (ngan) {
+      fit.id = {ngan->model, std::string(FitId::kNgan05)};
+      keys = ngan->keys;
+      fit.source = nganFitSource(fileName);
+    } else if (bbmModel == "LowMicrofacetFit" || bbmModel == "LowSmooth") {
       fit.id.model = bbmModel == "LowSmooth" ? "smooth" : "microfacet";
       keys = {{"A", "a"}, {"B", "b"}, {"C", "c"}, {"eta", "eta"}};
     } else if (bbmModel == "LowCookTorrance") {
@@ -190,7 +227,7 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
         fit.params.set(key->second, requireNumber(value, context + ": " + arg));
     }
     validateFit(fit, context);
-    MaterialFile mat = measuredMaterial(name, kFitLinesSource);
+    MaterialFile mat = measuredMaterial(name, ngan ? fit.source : std::string(kFitLinesSource));
     mat.put(std::move(fit));
     for (const MaterialFile& prev : out)
       if (prev.name == name) throw InputError(where + ": material '" + name + "' appears twice in this file");

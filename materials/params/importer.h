@@ -1,6 +1,7 @@
-// Importers for the paper's published parameters: the supplement's own text (sections "Material Name: X"
-// with rows "Model<TAB>Metric<TAB>R: K_d = … G: … B: … Common: …") and bbm's `.fit` lines
-// (`name = Aggregate(Lambertian(albedo = [...]), Model(...))`). Both produce validated MaterialFiles.
+// Importers for published parameters: Löw et al. 2012's supplement text (sections "Material Name: X" with
+// rows "Model<TAB>Metric<TAB>R: K_d = … G: … B: … Common: …") and bbm's `.fit` lines
+// (`name = Aggregate(Lambertian(albedo = [...]), Model(...))`) of Löw et al.'s fits (low_*.fit) and of Ngan et
+// al. 2005's (ngan_*.fit, materials/published-fits/). Both produce validated MaterialFiles.
 #pragma once
 
 #include "materials/params/material_file.h"
@@ -19,9 +20,12 @@ inline constexpr std::string_view kFitLinesSource =
 
 // `source` names the input in errors ("FILE:LINE: ...").
 std::vector<MaterialFile> importSupplement(std::string_view text, const std::string& source);
-// The metric is not on the lines: it comes from the file name (low_cooktorrance_E1.fit) or, failing
-// that, from a header comment naming "E1 fits"/"E2 fits".
+// The metric is not on the lines. Löw et al.'s: from the file name (low_cooktorrance_E1.fit) or, failing that,
+// from a header comment naming "E1 fits"/"E2 fits". Ngan et al.'s (models NganWard, …): FitId::kNgan05, and
+// each fit's `source` names the paper, the file and bbm's commit (the file's second line names the paper).
 std::vector<MaterialFile> importFitLines(std::string_view text, const std::string& source);
+// The provenance of an Ngan et al. fit read from bbm's file `fileName` ("ngan_ward.fit").
+std::string nganFitSource(const std::string& fileName);
 
 // Gathers fits from many sources into one MaterialFile per material. Where two sources give the same
 // MODEL:METRIC for a material, the supplement's text (6 significant decimals) beats the .fit lines (5),

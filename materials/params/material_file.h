@@ -19,10 +19,15 @@ namespace glossy {
 // for the other.
 struct FitId {
   std::string model;   // a registry name: "cook-torrance"
-  std::string metric;  // "E1" | "E2"
+  std::string metric;  // "E1" | "E2" | kNgan05
   std::string by = {};  // "" for a published fit, kGlossy for a fit `glossy fit` made
 
   static constexpr std::string_view kGlossy = "glossy";
+  // Ngan, Durand & Matusik 2005's own fitting objective, under which their published fits were made: not
+  // Löw et al.'s E1 or E2 on glossy's grid, so not labelled as either. Only published fits carry it; glossy
+  // neither fits nor evaluates it (`glossy fit --metric` takes E1 and E2; `glossy error` reports E1 and E2
+  // of any fit). docs/materials.md.
+  static constexpr std::string_view kNgan05 = "Ngan05";
   bool isGlossys() const { return by == kGlossy; }
   std::string str() const { return model + ":" + metric + (by.empty() ? "" : ":" + by); }
   bool operator==(const FitId&) const = default;

@@ -22,6 +22,8 @@ namespace {
 struct ListOptions {
   std::vector<std::string> paths;
   std::string merlDir;
+  std::string panels;
+  CLI::Option* panelsOption = nullptr;
 };
 
 // A column per fit of the sheets' comparison grid.
@@ -51,6 +53,9 @@ std::string databaseLabel(const std::filesystem::path& folder) {
 }
 
 int runList(const ListOptions& o) {
+  // The grid's fits, or the fits --panels names (those outside the grid: Ngan et al.'s, glossy's own).
+  const std::vector<SheetPanel> columns = o.panelsOption->count() == 0 ? std::vector<SheetPanel>(sheetPanels().begin(), sheetPanels().end())
+                                                                       : parsePanels(o.panels, "--panels");
   const auto files = materialFiles(o.paths);
   if (files.empty()) throw InputError((o.paths.empty() ? defaultMaterialsDir().string() : o.paths.front()) + ": no .toml material files");
 
@@ -67,7 +72,7 @@ int runList(const ListOptions& o) {
     std::printf("\n%s%s%s, %zu material%s\n", label.c_str(), label.empty() ? "" : " — ",
                 folder.empty() ? "." : folder.string().c_str(), members.size(), members.size() == 1 ? "" : "s");
     std::printf("%-26s %-9s", "material", "measured");
-    for (const SheetPanel& c : sheetPanels())
+    for (const SheetPanel& c : columns)
       if (!c.fit.empty()) std::printf(" %*s", width(c), c.label.c_str());
     std::printf("  other fits\n");
     for (const auto& file : members) {
@@ -85,7 +90,7 @@ int runList(const ListOptions& o) {
         return (a.r + a.g + a.b) / 3.0;
       };
       std::set<const Fit*> shown;
-      for (const SheetPanel& c : sheetPanels()) {
+      for (const SheetPanel& c : columns) {
         if (c.fit.empty()) continue;
         const Fit* f = m.find(FitId::parse(c.fit, c.label));
         if (!f) {
@@ -106,7 +111,8 @@ int runList(const ListOptions& o) {
       std::printf("%s\n", others.c_str());
     }
   }
-  std::printf("\n%zu materials, %d of the grid's fits, %d other fits", files.size() - size_t(bad), fits, otherFits);
+  std::printf("\n%zu materials, %d of the %s fits, %d other fits", files.size() - size_t(bad), fits,
+              o.panelsOption->count() == 0 ? "grid's" : "named", otherFits);
   if (bad) std::printf(", %d unreadable (see stderr)", bad);
   std::printf("\n");
   return bad ? 2 : 0;
@@ -117,12 +123,15 @@ int runList(const ListOptions& o) {
 Command addListCommand(CLI::App& parent) {
   auto o = std::make_shared<ListOptions>();
   CLI::App* app = parent.add_subcommand("list",
-      "List material parameter files with the head-on albedo of each fit of the comparison grid "
-      "(a quick consistency check: the fits of one material should roughly agree).");
+      "List material parameter files with the head-on albedo of each fit of the comparison grid, or of the fits "
+      "--panels names (a quick consistency check: the fits of one material should roughly agree).");
   app->add_option("paths", o->paths,
                   "Material files or folders, listed by folder (default: the committed library, materials/library/, "
                   "a section per database)");
   app->add_option("--merl-dir", o->merlDir, "Folder holding the MERL .binary tables");
+  o->panelsOption = app->add_option("--panels", o->panels,
+                                    "Columns instead of the grid's fits: a comma list of MODEL:METRIC[:glossy], e.g. "
+                                    "ward:Ngan05,blinn-phong:Ngan05 (Ngan et al. 2005's published fits)");
   return {app, [o] { return runList(*o); }};
 }
 

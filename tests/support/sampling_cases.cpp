@@ -61,9 +61,10 @@ std::vector<LibraryFit> supplementFits() {
              return p.material == r.material && p.fit.id == FitId{r.fit.id.model, r.fit.id.metric};
            });
   };
+  // Ngan et al.'s fits of the six are left to publishedLobeChi2Fits (each model's extremes) and the sweep.
   std::vector<LibraryFit> out;
   for (const FitRecord& r : records)
-    if (isSupplement(r.material) && !refit(r)) out.push_back(toLibraryFit(r));
+    if (isSupplement(r.material) && !refit(r) && r.fit.id.metric != FitId::kNgan05) out.push_back(toLibraryFit(r));
   return out;
 }
 
@@ -107,6 +108,27 @@ std::vector<LibraryFit> extremeFits() {
 
 std::vector<LibraryFit> ggxChi2Fits() {
   return {{"ggx alpha=0.02", Ggx{Rgb(0.1), Rgb(1.0), 0.02, 1.5}}, {"ggx alpha=0.5", Ggx{Rgb(0.1), Rgb(1.0), 0.5, 1.5}}};
+}
+
+std::vector<LibraryFit> publishedLobeChi2Fits() {
+  return {
+      // Ward: hematite (α = 0.00576, the sharpest) and red-fabric (α = 0.5, the broadest, Ngan's bound).
+      {"ward hematite", Ward{Rgb(0.0317, 0.0275, 0.0191), Rgb(0.0849, 0.0739, 0.0513), 0.00576}},
+      {"ward red-fabric", Ward{Rgb(0.176, 0.017, 0.00287), Rgb(0.063, 0.0134, 0.00565), 0.5}},
+      {"ward-duer hematite", WardDuer{Rgb(0.0366, 0.0318, 0.0221), Rgb(0.0601, 0.0523, 0.0363), 0.00509}},
+      {"ward-duer pink-plastic", WardDuer{Rgb(0.367, 0.0715, 0.0344), Rgb(0.0366, 0.0241, 0.0173), 0.5}},
+      // Blinn-Phong: specular-violet-phenolic (n = 1.21e5) and yellow-paint (n = 9.02; the broader
+      // polyurethane-foam fit has no lobe, Ks = 0).
+      {"blinn-phong specular-violet-phenolic", BlinnPhong{Rgb(0.0708, 0.0167, 0.013), Rgb(0.00109, 0.000602, 0.000442), 121000.0}},
+      {"blinn-phong yellow-paint", BlinnPhong{Rgb(0.29, 0.161, 0.0139), Rgb(0.014, 0.0115, 0.00616), 9.02}},
+      // Lafortune: hematite (n = 1.66e4) and beige-fabric (n = 2.29, Cz = 5e-8: a lobe about a nearly horizontal axis).
+      {"lafortune hematite", Lafortune{Rgb(0.03, 0.0261, 0.0181), Rgb(0.0802, 0.0698, 0.0484), -0.577, 0.577, 16600.0}},
+      {"lafortune beige-fabric", Lafortune{Rgb(0.241, 0.141, 0.0842), Rgb(0.1, 0.0653, 0.0371), -0.707, 5.09e-08, 2.29}},
+      {"ngan-ashikhmin-shirley hematite", NganAshikhminShirley{Rgb(0.0368, 0.032, 0.0222), Rgb(0.0599, 0.0521, 0.0362), 0.999, 78200.0}},
+      {"ngan-ashikhmin-shirley beige-fabric", NganAshikhminShirley{Rgb(0.199, 0.112, 0.0664), Rgb(0.197, 0.136, 0.0822), 0.973, 0.5}},
+      {"ngan-cook-torrance hematite", NganCookTorrance{Rgb(0.0364, 0.0316, 0.022), Rgb(0.102, 0.0889, 0.0617), 0.599, 0.00512}},
+      {"ngan-cook-torrance polyurethane-foam", NganCookTorrance{Rgb(0.0663, 0.0205, 0.00926), Rgb(0.144, 0.0792, 0.0491), 0.206, 0.943}},
+  };
 }
 
 Vec3 viewDirection(double theta) {
@@ -154,6 +176,18 @@ double lobeWidth(const Brdf& brdf) {
     width = std::sqrt(abcQuantile(m->b, m->c, 4.0, q));  // d = |D_P|
   } else if (const auto* m = brdf.as<Ggx>()) {
     width = 2.0 * std::atan(m->alpha * std::sqrt(q / (1.0 - q)));  // D cos θ_h: P(tan²θ_h ≤ t) = t/(α² + t)
+  } else if (const auto* m = brdf.as<Ward>()) {
+    width = 2.0 * std::atan(m->alpha * std::sqrt(-std::log(1.0 - q)));  // tan² θ_h = −α² ln(1 − ξ)
+  } else if (const auto* m = brdf.as<WardDuer>()) {
+    width = 2.0 * std::atan(m->alpha * std::sqrt(-std::log(1.0 - q)));
+  } else if (const auto* m = brdf.as<NganCookTorrance>()) {
+    width = 2.0 * std::atan(m->m * std::sqrt(-std::log(1.0 - q)));
+  } else if (const auto* m = brdf.as<BlinnPhong>()) {
+    width = 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));  // cos θ_h = ξ^(1/(n+1))
+  } else if (const auto* m = brdf.as<NganAshikhminShirley>()) {
+    width = 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));
+  } else if (const auto* m = brdf.as<Lafortune>()) {
+    width = std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));  // about the lobe's axis, not the half vector
   }
   return std::clamp(width, 1e-5, 0.5);
 }
@@ -194,8 +228,9 @@ const std::vector<SamplingCase>& analyticChi2Family() {
       for (const LibraryFit& f : fits)
         for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
     for (const SamplingCase& c : atViewAngles({"lambertian", Lambertian{Rgb(0.5)}})) all.push_back(c);
-    for (const LibraryFit& f : ggxChi2Fits())
-      for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
+    for (const auto& fits : {ggxChi2Fits(), publishedLobeChi2Fits()})
+      for (const LibraryFit& f : fits)
+        for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
     return all;
   }();
   return cases;

@@ -31,6 +31,9 @@ std::vector<LibraryFit> extremeFits();
 // GGX beyond its library fits: a sharp lobe (α = 0.02) and a broad one (α = 0.5), over a Lambertian base.
 std::vector<LibraryFit> ggxChi2Fits();
 
+// The models of Ngan et al. 2005's published fits: each model's sharpest and broadest published fit (values from bbm's fits/*.fit, commit 9807fb38), over their own Lambertian bases.
+std::vector<LibraryFit> publishedLobeChi2Fits();
+
 // View elevations: head-on, two in between, and grazing (82°).
 inline constexpr std::array<double, 4> kViewAnglesDeg = {0.0, 35.0, 65.0, 82.0};
 inline constexpr std::array<double, 4> kViewAngles = {0.0, 35.0 * kPi / 180.0, 65.0 * kPi / 180.0,
@@ -64,8 +67,8 @@ SamplingCheck checkSampler(const Brdf& brdf, const Vec3& V, const Chi2Grid& grid
 // The same on gridFor(c.fit.brdf, V).
 SamplingCheck checkSampler(const SamplingCase& c, long samples, unsigned seed, double alpha);
 
-// The χ² family of the default suite: analytic samplers (the supplement's and the extreme fits, Lambertian
-// and ggxChi2Fits, at the four view angles) and measured ones (kMeasuredChi2Tests); one family-wise
+// The χ² family of the default suite: analytic samplers (the supplement's and the extreme fits, Lambertian,
+// ggxChi2Fits and publishedLobeChi2Fits, at the four view angles) and measured ones (kMeasuredChi2Tests); one family-wise
 // significance of 0.01 over all of them.
 const std::vector<SamplingCase>& analyticChi2Family();
 inline constexpr int kMeasuredChi2Tests = (3 + 6) * 4;  // 3 synthetic tables + shared/merl's 6, 4 views

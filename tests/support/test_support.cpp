@@ -204,8 +204,10 @@ Fit makeFit(const std::string& model, const std::string& metric,
 
 double lobeWidth(const Fit& f) {
   if (f.id.model == "cook-torrance") return f.params.scalar("m");
-  if (f.id.model == "ggx") return f.params.scalar("alpha");
-  if (f.id.model == "ashikhmin-shirley") return 1.0 / std::sqrt(f.params.scalar("n"));
+  if (f.id.model == "ggx" || f.id.model == "ward" || f.id.model == "ward-duer") return f.params.scalar("alpha");
+  if (f.id.model == "ngan-cook-torrance") return f.params.scalar("m");
+  if (f.id.model == "ashikhmin-shirley" || f.id.model == "blinn-phong" || f.id.model == "ngan-ashikhmin-shirley")
+    return 1.0 / std::sqrt(f.params.scalar("n"));
   return std::sqrt(std::expm1(std::log(2.0) / f.params.scalar("c")) / f.params.scalar("b"));
 }
 
