@@ -72,8 +72,9 @@ TEST(CliSheet, EverySupplementMaterialGivesTheLayeredExrAndThePngWithNoNonFinite
       const auto json = nlohmann::json::parse(e.out);
       ASSERT_EQ(json["fits"].size(), loadMaterialFile(materialsDir() / (std::string(name) + ".toml")).fits.size());
       for (const auto& f : json["fits"]) {
-        // The grid's panels: the published fits (glossy's refits beside them are not panels).
-        if (f["fit"].get<std::string>().find(":glossy") != std::string::npos) continue;
+        // The grid's panels only (glossy's refits and the fits of models outside the grid are not panels).
+        const std::string id = f["fit"].get<std::string>();
+        if (std::none_of(sheetPanels().begin(), sheetPanels().end(), [&](const SheetPanel& p) { return p.fit == id; })) continue;
         std::string layer = f["fit"].get<std::string>();
         std::replace(layer.begin(), layer.end(), '-', '_');
         std::replace(layer.begin(), layer.end(), ':', '_');
