@@ -28,6 +28,8 @@ void envmapEntry(Bytes data);
 void sheetEntry(Bytes data);
 // A plots folder's plots.json, as glossy report reads it, and the material page drawn with it.
 void plotsEntry(Bytes data);
+// A study output folder's study.json, as a resumed run, glossy study --analyse and glossy report read it.
+void studyplanEntry(Bytes data);
 
 struct Target {
   std::string_view name;  // tests/fuzz/corpus/NAME, tests/fuzz/crashes/NAME, fuzz_NAME
@@ -35,8 +37,8 @@ struct Target {
 };
 
 inline constexpr Target kTargets[] = {
-    {"toml", tomlEntry},   {"nbrdf", nbrdfEntry}, {"merl", merlEntry},
-    {"gltf", gltfEntry},   {"envmap", envmapEntry}, {"sheet", sheetEntry},
-    {"plots", plotsEntry}};
+    {"toml", tomlEntry}, {"nbrdf", nbrdfEntry}, {"merl", merlEntry}, {"gltf", gltfEntry},
+    {"envmap", envmapEntry}, {"sheet", sheetEntry}, {"plots", plotsEntry},
+    {"studyplan", studyplanEntry}};
 
 }  // namespace glossy::fuzz
