@@ -28,6 +28,8 @@ void envmapEntry(Bytes data);
 void sheetEntry(Bytes data);
 // A plots folder's plots.json, as glossy report reads it, and the material page drawn with it.
 void plotsEntry(Bytes data);
+// The perceptual dataset's tables: first byte odd: the rest is PerceptualDistances.csv, even: MaterialType.csv.
+void perceptualEntry(Bytes data);
 // A study output folder's study.json, as a resumed run, glossy study --analyse and glossy report read it.
 void studyplanEntry(Bytes data);
 
@@ -39,6 +41,6 @@ struct Target {
 inline constexpr Target kTargets[] = {
     {"toml", tomlEntry}, {"nbrdf", nbrdfEntry}, {"merl", merlEntry}, {"gltf", gltfEntry},
     {"envmap", envmapEntry}, {"sheet", sheetEntry}, {"plots", plotsEntry},
-    {"studyplan", studyplanEntry}};
+    {"perceptual", perceptualEntry}, {"studyplan", studyplanEntry}};
 
 }  // namespace glossy::fuzz
