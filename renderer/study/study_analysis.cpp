@@ -512,7 +512,10 @@ Json brdfVsImage(const Study& s, const AnalysisOptions& o, Json& differences, st
       j["image"] = img.name;
       Json jp, jw;
       jp["pairs"] = int(pooled(s, br.column, img.column, all).x.size());
-      for (const auto& [cname, corr] : {std::pair<const char*, Corr>{"spearman", spearman}, {"kendallTauB", kendallTauB}}) {
+      // Not a structured binding: clang before 16 cannot capture one in the lambda (the fuzzers' build is clang).
+      for (const auto& named : {std::pair<const char*, Corr>{"spearman", spearman}, {"kendallTauB", kendallTauB}}) {
+        const char* const cname = named.first;
+        const Corr corr = named.second;
         const auto iv = bootstrap(
             all.size(),
             [&](const std::vector<std::size_t>& idx) {
@@ -654,7 +657,10 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
       jfig["figure"] = kFigureNames[f];
       jfig["materials"] = int(unit.size());
       using Corr = std::optional<double> (*)(const std::vector<double>&, const std::vector<double>&);
-      for (const auto& [cname, corr] : {std::pair<const char*, Corr>{"spearman", spearman}, {"kendallTauB", kendallTauB}}) {
+      // Not a structured binding: clang before 16 cannot capture one in the lambda (the fuzzers' build is clang).
+      for (const auto& named : {std::pair<const char*, Corr>{"spearman", spearman}, {"kendallTauB", kendallTauB}}) {
+        const char* const cname = named.first;
+        const Corr corr = named.second;
         const auto iv = bootstrap(
             unit.size(),
             [&](const std::vector<std::size_t>& idx) {

@@ -103,7 +103,8 @@ std::string heatMapSvg(const MaterialTable& t) {
   SvgDocument svg(width, top + gridH + 30.0 + captionHeight(width - 48.0, caption) + 16.0);
   drawFigureTitle(svg, "Material × model error");
   const auto [lo, hi] = decadesOf(valuesOf(t.rrmse));
-  const auto tOf = [&](double v) { return std::clamp((std::log10(v) - lo) / double(hi - lo), 0.0, 1.0); };
+  // Copied, not captured: clang before 16 cannot capture a structured binding (the fuzzers' build is clang).
+  const auto tOf = [lo = lo, hi = hi](double v) { return std::clamp((std::log10(v) - lo) / double(hi - lo), 0.0, 1.0); };
   for (std::size_t k = 0; k < t.models.size(); ++k)
     svg.text({left + cellW * (double(k) + 0.5), top - 8.0}, t.models[k].label, {11.0, Anchor::Start, false, "#222222", -45.0});
   const bool labelRows = cellH >= 9.0;

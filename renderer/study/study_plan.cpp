@@ -64,7 +64,9 @@ StudyPlan readPlan(const std::filesystem::path& out) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError(where + ": not JSON (" + shortened(e.what()) + ")");
   }
-  if (!doc.is_object() || doc.value("format", std::string()) != kFormat)
+  // Not doc.value("format", ...): it throws json's type_error for a "format" that is not a string.
+  const auto format = doc.is_object() ? doc.find("format") : doc.end();
+  if (format == doc.end() || !format->is_string() || format->get<std::string>() != kFormat)
     throw InputError(where + ": not a glossy study plan (no \"format\": \"" + kFormat + "\")");
   StudyPlan plan;
   try {

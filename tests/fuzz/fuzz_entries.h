@@ -28,6 +28,12 @@ void envmapEntry(Bytes data);
 void sheetEntry(Bytes data);
 // A plots folder's plots.json, as glossy report reads it, and the material page drawn with it.
 void plotsEntry(Bytes data);
+// A study file (TOML) as glossy study loads it, over a slice of the material library; its plan made and used.
+void studyEntry(Bytes data);
+// The perceptual dataset's tables: first byte odd: the rest is PerceptualDistances.csv, even: MaterialType.csv.
+void perceptualEntry(Bytes data);
+// A study output folder's study.json, as a resumed run, glossy study --analyse and glossy report read it.
+void studyplanEntry(Bytes data);
 
 struct Target {
   std::string_view name;  // tests/fuzz/corpus/NAME, tests/fuzz/crashes/NAME, fuzz_NAME
@@ -35,8 +41,8 @@ struct Target {
 };
 
 inline constexpr Target kTargets[] = {
-    {"toml", tomlEntry},   {"nbrdf", nbrdfEntry}, {"merl", merlEntry},
-    {"gltf", gltfEntry},   {"envmap", envmapEntry}, {"sheet", sheetEntry},
-    {"plots", plotsEntry}};
+    {"toml", tomlEntry}, {"nbrdf", nbrdfEntry}, {"merl", merlEntry}, {"gltf", gltfEntry},
+    {"envmap", envmapEntry}, {"sheet", sheetEntry}, {"plots", plotsEntry}, {"study", studyEntry},
+    {"perceptual", perceptualEntry}, {"studyplan", studyplanEntry}};
 
 }  // namespace glossy::fuzz
