@@ -103,7 +103,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"key of another model", "c = 0.5", "c = 0.5\nks = [1, 1, 1]", {"fit 2 (smooth:E2)", "'ks'", "unknown key"}},
         BadCase{"unknown top-level key", "source = \"hand-written\"", "colour = \"red\"", {"'colour'", "unknown key"}},
         BadCase{"unknown model", "model = \"cook-torrance\"", "model = \"phong\"", {"fit 1", "'model'", "unknown model 'phong'"}},
-        BadCase{"bad metric", "metric = \"E1\"", "metric = \"E3\"", {"fit 1", "'metric'", "E1 or E2"}},
+        BadCase{"bad metric", "metric = \"E1\"", "metric = \"E3\"", {"fit 1", "'metric'", "E1, E2 or Ngan05"}},
         BadCase{"two-channel rgb", "kd = [0.1, 0.2, 0.3]", "kd = [0.1, 0.2]", {"'kd'", "3 numbers"}},
         BadCase{"string for number", "m = 0.1", "m = \"0.1\"", {"'m'", "a number"}},
         BadCase{"scalar for rgb", "ks = [0.05, 0.04, 0.03]", "ks = 0.05", {"'ks'", "3 numbers"}},
