@@ -56,14 +56,8 @@ struct BlinnPhong {
     // Head-on lobe albedo ≈ 4 Ks: (n+2)/(2π) cosⁿθ_h integrates to about 1 over H, and dω_L = 4⟨V,H⟩ dω_H.
     return lobeProbability(4.0 * meanOf(ks), kd);
   }
-  bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const {
-    return reflectAboutHalfVector(V, -std::expm1(std::log(u.x) / (n + 1.0)), 2.0 * kPi * u.y, L);
-  }
-  double lobePdf(const Vec3& L, const Vec3& V) const {
-    const HalfVector h(L, V);
-    if (h.cosVH <= 0.0) return 0.0;
-    return (n + 1.0) / (2.0 * kPi) * std::exp(n * std::log1p(-h.oneMinusCosTheta)) / (4.0 * h.cosVH);
-  }
+  bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const { return samplePowerCosineLobe(V, n, u, L); }
+  double lobePdf(const Vec3& L, const Vec3& V) const { return powerCosineLobePdf(L, V, n); }
   BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
   double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
 };

@@ -5,6 +5,7 @@
 
 #include "materials/core/lane_math.h"
 #include "materials/core/types.h"
+#include "materials/models/half_vector.h"
 #include "materials/models/warp.h"
 
 #include <algorithm>
@@ -107,6 +108,18 @@ inline bool reflectAboutHalfVector(const Vec3& V, double oneMinusCos, double cos
 }
 inline bool reflectAboutHalfVector(const Vec3& V, double oneMinusCos, double phi, Vec3& L) {
   return reflectAboutHalfVector(V, oneMinusCos, std::cos(phi), std::sin(phi), L);
+}
+
+// The power-cosine half-vector lobe (Ashikhmin-Shirley's sampler, which Blinn-Phong's cosⁿθ_h shares):
+// cos θ_h = ξ^(1/(n+1)), i.e. 1 − cos θ_h = −expm1(ln ξ / (n+1)), φ uniform; pdf_h = (n+1)/(2π) cosⁿθ_h,
+// and over L, pdf_h / (4⟨V,H⟩).
+inline bool samplePowerCosineLobe(const Vec3& V, double n, Vec2 u, Vec3& L) {
+  return reflectAboutHalfVector(V, -std::expm1(std::log(u.x) / (n + 1.0)), 2.0 * kPi * u.y, L);
+}
+inline double powerCosineLobePdf(const Vec3& L, const Vec3& V, double n) {
+  const HalfVector h(L, V);
+  if (h.cosVH <= 0.0) return 0.0;
+  return (n + 1.0) / (2.0 * kPi) * std::exp(n * std::log1p(-h.oneMinusCosTheta)) / (4.0 * h.cosVH);
 }
 
 // Batch forms, for the path tracer's waves: a model that computes its lobe's transcendental functions for
