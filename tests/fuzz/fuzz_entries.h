@@ -34,6 +34,8 @@ void studyEntry(Bytes data);
 void perceptualEntry(Bytes data);
 // A study output folder's study.json, as a resumed run, glossy study --analyse and glossy report read it.
 void studyplanEntry(Bytes data);
+// A sheet EXR inside a one-sheet study folder: the study's rows read from it, then analysed.
+void studyrowsEntry(Bytes data);
 
 struct Target {
   std::string_view name;  // tests/fuzz/corpus/NAME, tests/fuzz/crashes/NAME, fuzz_NAME
@@ -43,6 +45,6 @@ struct Target {
 inline constexpr Target kTargets[] = {
     {"toml", tomlEntry}, {"nbrdf", nbrdfEntry}, {"merl", merlEntry}, {"gltf", gltfEntry},
     {"envmap", envmapEntry}, {"sheet", sheetEntry}, {"plots", plotsEntry}, {"study", studyEntry},
-    {"perceptual", perceptualEntry}, {"studyplan", studyplanEntry}};
+    {"perceptual", perceptualEntry}, {"studyplan", studyplanEntry}, {"studyrows", studyrowsEntry}};
 
 }  // namespace glossy::fuzz
