@@ -2,6 +2,8 @@
 
 #include "materials/core/text.h"
 
+#include <charconv>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -12,7 +14,24 @@ namespace {
 using Json = nlohmann::ordered_json;
 using Opt = std::optional<double>;
 
-Json num(const Opt& v) { return v ? Json(*v) : Json(nullptr); }
+// The shortest text that reads back as `v`: a float32 figure's (the sheets store figures as float32) as
+// float, so that 0.1f is "0.1" rather than its double expansion "0.10000000149011612"; any other as double.
+std::string shortest(double v) {
+  char buffer[64];
+  const float f = static_cast<float>(v);
+  const auto [end, ec] = std::isfinite(v) && static_cast<double>(f) == v ? std::to_chars(buffer, buffer + sizeof buffer, f)
+                                                                          : std::to_chars(buffer, buffer + sizeof buffer, v);
+  return ec == std::errc() ? std::string(buffer, end) : formatted("%.17g", v);
+}
+
+// A figure as the files hold it: the double its shortest text reads as, which JSON then prints as that text.
+Json num(const Opt& v) {
+  if (!v) return Json(nullptr);
+  const std::string text = shortest(*v);
+  double d = *v;
+  std::from_chars(text.data(), text.data() + text.size(), d);
+  return Json(d);
+}
 
 // A row's fields in the files' order, declared once: the CSV's column, the JSON's key, the value.
 struct Column {
@@ -51,11 +70,11 @@ const Column kColumns[] = {
     {"seed", "seed", [](const StudyRow& r) { return Json(r.seed); }},
 };
 
-// A value as its CSV field: a figure in full (%.17g), absent as an empty field, a flag as 1 or 0.
+// A value as its CSV field: a figure as its shortest text, absent as an empty field, a flag as 1 or 0.
 std::string csvCell(const Json& v) {
   if (v.is_null()) return "";
   if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
-  if (v.is_number_float()) return formatted("%.17g", v.get<double>());
+  if (v.is_number_float()) return shortest(v.get<double>());
   if (v.is_number()) return v.dump();
   return csvField(v.get<std::string>());
 }

@@ -1,6 +1,8 @@
 // The study's tables as files: its rows as CSV and JSON (one row per material × lighting × scene × model,
-// every field of StudyRow) and the per-model results as a LaTeX (booktabs) table. Numbers are written in
-// full (%.17g) so that the files read back exactly; an absent figure is an empty field or null.
+// every field of StudyRow) and the per-model results as a LaTeX (booktabs) table. Numbers are written as the
+// shortest text that reads back as the same value — a float32 figure (the sheets store them so) as its
+// shortest float32 form (at most 9 significant digits), any other as its shortest double form — so that the
+// files read back exactly and claim no precision the figures lack; an absent figure is an empty field or null.
 #pragma once
 
 #include "renderer/study/study_row.h"
