@@ -108,8 +108,9 @@ TEST(StudyReport, TheSummaryIsRenderedEachFigureCaptionedAndRowsFoundByEveryColu
   EXPECT_EQ(index.find("# Study summary"), std::string::npos) << "no raw markdown";
   EXPECT_NE(index.find("<code>results.json</code>"), std::string::npos);
   EXPECT_EQ(index.find("```"), std::string::npos);
-  EXPECT_NE(index.find("<figcaption>Relative RMSE r* per material, the materials sorted"), std::string::npos) << "error_curves captioned";
-  EXPECT_NE(index.find("<figcaption>Critical-difference diagram"), std::string::npos);
+  // Each figure captioned as the analysis captions it (results.json's figures).
+  EXPECT_NE(index.find("<figcaption>The noise-free relative RMSE r* of every model on every material"), std::string::npos) << "error_curves captioned";
+  EXPECT_NE(index.find("<figcaption>Mean rank of each model"), std::string::npos);
   EXPECT_EQ(index.find("<figcaption>error_curves.svg</figcaption>"), std::string::npos);
   EXPECT_NE(index.find("data-noun=\"rows\""), std::string::npos);
   const std::vector<study::StudyRow> rows = study::readStudyRows(studyDir());

@@ -20,6 +20,8 @@
 #include "renderer/study/study_rows.h"
 #include "materials/params/material_name.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -165,6 +167,15 @@ StudyFiles studyFiles(const fs::path& analysis) {
       out.others.push_back(f);
     if (p.stem() == "summary" && (ext == ".txt" || ext == ".md"))
       out.summary = readInputFile(analysis, analysis / p, kMaxPlotFileBytes, "summary");
+  }
+  // The figures' captions, as the analysis wrote them; an analysis without them keeps the page's own.
+  if (names.count("results.json")) {
+    const nlohmann::json results =
+        nlohmann::json::parse(readInputFile(analysis, analysis / "results.json", kMaxPlotFileBytes, "study results"), nullptr, false);
+    if (results.is_object() && results.contains("figures") && results["figures"].is_array())
+      for (const nlohmann::json& f : results["figures"])
+        if (f.is_object() && f.contains("name") && f["name"].is_string() && f.contains("caption") && f["caption"].is_string())
+          out.captions[f["name"].get<std::string>()] = f["caption"].get<std::string>();
   }
   return out;
 }

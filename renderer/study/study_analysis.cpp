@@ -701,17 +701,16 @@ std::vector<ModelStyle> modelStyles(const Study& s) {
   std::vector<ModelStyle> out;
   std::set<std::string> used;
   for (std::size_t k = 0; k < s.models.size(); ++k) {
-    ModelStyle m{s.models[k], {}};
+    ModelStyle m{s.models[k], {}, ""};
     // The sheet's colour for the fit (renderer/sheet/comparison_grid.h), so figures match the sheets.
     const std::string fit = s.fitOf[k].substr(0, s.fitOf[k].find(':', s.fitOf[k].find(':') + 1));
     for (const GridFit& g : gridFits())
       if (g.fit == fit) m.style.colour = std::string(g.colour);
-    // Dashed: glossy's own fits only, as the sheets draw them.
-    const bool glossyOnly = s.sourcesOf[k].size() == 1 && s.sourcesOf[k].count("glossy");
-    const std::string key = glossyOnly ? "d" : "";
-    if (m.style.colour == "#000000" || used.count(m.style.colour + key)) m.style.colour = kPalette[k % std::size(kPalette)];
-    if (glossyOnly) m.style.dash = "6 3";
-    used.insert(m.style.colour + key);
+    // Solid lines throughout (a dashed curve of many materials reads as gaps); whose fit it is, the legend says.
+    if (s.sourcesOf[k].size() > 1) m.note = "published and glossy's fits";
+    else if (s.sourcesOf[k].count("glossy")) m.note = "glossy's fit";
+    if (m.style.colour == "#000000" || used.count(m.style.colour)) m.style.colour = kPalette[k % std::size(kPalette)];
+    used.insert(m.style.colour);
     out.push_back(m);
   }
   return out;
@@ -842,6 +841,11 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
       {"error_curves", errorCurvesSvg(table, options.referenceModel)},
       {"heat_map", heatMapSvg(table)},
   };
+  // Each figure's caption by its name, for results.json, summary.md and the report page.
+  std::map<std::string, std::string> captions = {{"error_curves", errorCurvesCaption(table, options.referenceModel)},
+                                                 {"heat_map", heatMapCaption()},
+                                                 {"brdf_vs_image", brdfVsImageCaption()},
+                                                 {"perceptual", perceptualCaption()}};
   {
     std::vector<CdModel> cd;
     if (t.friedman)
@@ -849,6 +853,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
     std::string test = t.methods.empty() ? std::string("no Wilcoxon test") : *t.methods.begin();
     if (t.methods.size() > 1) test = "exact or normal approximation";
     svgs.emplace_back("critical_difference", criticalDifferenceSvg(cd, t.cliques, int(t.complete.size()), test));
+    captions["critical_difference"] = criticalDifferenceCaption(int(t.complete.size()), test);
   }
   svgs.emplace_back("brdf_vs_image", brdfVsImageSvg(table));
   if (!options.perceptualDir.empty())
@@ -871,7 +876,10 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
       plot::svgToPng(*rsvg, folder / (name + ".svg"), folder / (name + ".png"), 1.5);
       result.files.emplace_back(name + ".png");
     }
-    figures.push_back({{"name", name}, {"svg", name + ".svg"}, {"png", rsvg ? Json(name + ".png") : Json(nullptr)}});
+    figures.push_back({{"name", name},
+                       {"svg", name + ".svg"},
+                       {"png", rsvg ? Json(name + ".png") : Json(nullptr)},
+                       {"caption", captions.count(name) ? Json(captions.at(name)) : Json(nullptr)}});
   }
   results["figures"] = figures;
   write("results.json", dump(results));
@@ -879,7 +887,13 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   std::string md = "# Study summary\n\n```\n" + summary + "```\n\nEvery statistic with its interval: `results.json`; "
                    "the rows: `rows.csv`, `rows.json`; per-model table: `models.tex`; figures: ";
   for (std::size_t i = 0; i < svgs.size(); ++i) md += (i ? ", " : "") + std::string("`") + svgs[i].first + ".svg`";
-  md += ".\n";
+  md += ".\n\n## Figures\n\n";
+  for (const auto& [name, svg] : svgs)
+    if (captions.count(name)) {
+      std::string text;  // "r*" is not Markdown's emphasis
+      for (char c : captions.at(name)) text += c == '*' ? std::string("\\*") : std::string(1, c);
+      md += "- `" + name + ".svg`: " + text + "\n";
+    }
   if (!options.perceptualDir.empty())
     md += "\nPerceived distances: Lavoué, Bonneel, Farrugia, Soler, \"Perceptual quality of BRDF approximations: dataset and "
           "metrics\", Computer Graphics Forum 40(2), 2021.\n";
