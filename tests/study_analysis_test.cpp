@@ -226,7 +226,7 @@ TEST(StudyAnalysis, WritesEveryOutput) {
   EXPECT_EQ(csv[0].at("spp"), "16");
   const std::string tex = test::readText(dir / "models.tex");
   EXPECT_NE(tex.find("\\toprule"), std::string::npos);
-  EXPECT_NE(tex.find("Microfacet E2 & 22 & 2 & 1.00"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("Microfacet E2 & a & 22 & 2 & 1.00"), std::string::npos) << tex;
   EXPECT_NE(test::readText(dir / "critical_difference.svg").find("Microfacet E2 (1.00)"), std::string::npos);
 }
 

@@ -11,6 +11,9 @@
 #include "renderer/sheet/comparison_grid.h"
 #include "renderer/study/perceptual.h"
 #include "renderer/study/study_figures.h"
+#include "renderer/study/study_latex.h"
+#include "renderer/study/study_methods.h"
+#include "renderer/study/study_provenance.h"
 #include "renderer/study/study_tables.h"
 #include "renderer/study/study_statistics.h"
 #include "renderer/util/atomic_file.h"
@@ -738,6 +741,10 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
 
   Json results;
   results["generator"] = "glossy study";
+  results["glossy"] = glossyJson();
+  if (options.provenance) results["provenance"] = provenanceJson(*options.provenance);
+  else results["provenance"] = Json{{"reason", "the rows were analysed without their study file"}};
+  results["fits"] = fitsJson(s.all);
   results["seed"] = options.seed;
   results["resamples"] = options.resamples;
   results["interval"] = "95 % percentile bootstrap, materials resampled with their sheets";
@@ -883,9 +890,14 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   }
   results["figures"] = figures;
   write("results.json", dump(results));
-  write("models.tex", modelsTex(models, int(s.materials.size())));
+  write("models.tex", modelsTex(results));
+  write("methods.tex", methodsTex(results));
+  // The study file as it was read: the settings of these results, beside them.
+  if (options.provenance && !options.provenance->studyText.empty()) write(kStudyFileCopy, options.provenance->studyText);
   std::string md = "# Study summary\n\n```\n" + summary + "```\n\nEvery statistic with its interval: `results.json`; "
-                   "the rows: `rows.csv`, `rows.json`; per-model table: `models.tex`; figures: ";
+                   "the rows: `rows.csv`, `rows.json`; per-model tables: `models.tex`; methods: `methods.tex`" +
+                   std::string(options.provenance && !options.provenance->studyText.empty() ? "; the study file: `study.toml`" : "") +
+                   "; figures: ";
   for (std::size_t i = 0; i < svgs.size(); ++i) md += (i ? ", " : "") + std::string("`") + svgs[i].first + ".svg`";
   md += ".\n\n## Figures\n\n";
   for (const auto& [name, svg] : svgs)
@@ -897,6 +909,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   if (!options.perceptualDir.empty())
     md += "\nPerceived distances: Lavoué, Bonneel, Farrugia, Soler, \"Perceptual quality of BRDF approximations: dataset and "
           "metrics\", Computer Graphics Forum 40(2), 2021.\n";
+  md += "\n## Methods\n\n" + methodsMarkdown(results);
   write("summary.md", md);
   return result;
 }

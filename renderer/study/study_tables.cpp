@@ -100,44 +100,46 @@ nlohmann::ordered_json rowsJson(std::span<const StudyRow> rows) {
   return out;
 }
 
-namespace {
-
 std::string latexEscape(const std::string& s) {
+  static const std::pair<const char*, const char*> kKnown[] = {{"°", "\\textdegree{}"}, {"ö", "\\\"{o}"},     {"–", "--"},
+                                                               {"×", "$\\times$"},     {"ρ", "$\\rho$"}, {"²", "$^2$"}};
   std::string out;
-  for (char c : s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const char c = s[i];
+    if (static_cast<unsigned char>(c) >= 0x80) {
+      std::size_t n = 1;  // the UTF-8 sequence's length, from its lead byte
+      const auto lead = static_cast<unsigned char>(c);
+      if (lead >= 0xf0) n = 4;
+      else if (lead >= 0xe0) n = 3;
+      else if (lead >= 0xc0) n = 2;
+      const std::string seq = s.substr(i, n);
+      const char* as = "?";
+      for (const auto& [from, to] : kKnown)
+        if (seq == from) as = to;
+      out += as;
+      i += n;
+      continue;
+    }
     switch (c) {
       case '&': case '%': case '$': case '#': case '_': case '{': case '}': out += std::string("\\") + c; break;
       case '~': out += "\\textasciitilde{}"; break;
       case '^': out += "\\textasciicircum{}"; break;
       case '\\': out += "\\textbackslash{}"; break;
+      case '<': out += "\\textless{}"; break;
+      case '>': out += "\\textgreater{}"; break;
+      case '|': out += "\\textbar{}"; break;
       default: out += c;
     }
+    ++i;
   }
   return out;
 }
-
-}  // namespace
 
 std::string intervalCell(const Json& j) {
   if (j["estimate"].is_null()) return "--";
   std::string s = formatted("%.4f", j["estimate"].get<double>());
   if (!j["lo"].is_null()) s += formatted(" [%.4f, %.4f]", j["lo"].get<double>(), j["hi"].get<double>());
   return s;
-}
-
-std::string modelsTex(const nlohmann::ordered_json& models, int materials) {
-  std::string out =
-      "% glossy study: per-model results (needs \\usepackage{booktabs}). Intervals: 95 % percentile bootstrap over materials.\n"
-      "\\begin{tabular}{lrrrll}\n\\toprule\n"
-      "Model & Closest & Tied & Mean rank & Mean $r^*$ [95\\,\\% CI] & Median $r^*$ [95\\,\\% CI] \\\\\n\\midrule\n";
-  for (const Json& m : models) {
-    out += latexEscape(m["label"].get<std::string>()) + " & " + std::to_string(m["closest"].get<int>()) + " & " +
-           std::to_string(m["tied"].get<int>()) + " & " +
-           (m["meanRank"].is_null() ? std::string("--") : formatted("%.2f", m["meanRank"].get<double>())) + " & " +
-           intervalCell(m["meanRrmse"]) + " & " + intervalCell(m["medianRrmse"]) + " \\\\\n";
-  }
-  out += "\\bottomrule\n\\end{tabular}\n% " + std::to_string(materials) + " materials.\n";
-  return out;
 }
 
 }  // namespace glossy::study
