@@ -222,6 +222,7 @@ TEST(StudyPaper, ModelsTexIsATableInRankOrderWithGroupsAndEffectSizes) {
     at = row + 1;
   }
   EXPECT_EQ(ranks.front().second, "Microfacet E2");
+  EXPECT_NE(tex.find("glossy's own fits: CT E1; the others are the published fits."), std::string::npos) << tex;
   // Every pair separated here (each material orders the models alike): one letter per model, and the best
   // model is closer than the next on every material.
   EXPECT_NE(tex.find("\nMicrofacet E2 & a & "), std::string::npos) << tex;
