@@ -341,7 +341,7 @@ TEST(StudyAnalysis, RowOrderDoesNotChangeAByte) {
 TEST(StudyAnalysis, WritesEveryOutput) {
   TempDir dir;
   const auto res = analyseStudy(syntheticStudy(), fastOptions(), dir.path());
-  for (const char* f : {"rows.csv", "rows.json", "results.json", "models.tex", "summary.md", "error_curves.svg", "heat_map.svg",
+  for (const char* f : {"rows.csv", "rows.json", "results.json", "models.tex", "lighting.tex", "summary.md", "error_curves.svg", "heat_map.svg",
                         "critical_difference.svg", "brdf_vs_image.svg"}) {
     EXPECT_TRUE(std::find(res.files.begin(), res.files.end(), std::filesystem::path(f)) != res.files.end()) << f;
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;

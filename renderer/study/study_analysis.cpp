@@ -12,6 +12,7 @@
 #include "renderer/study/perceptual.h"
 #include "renderer/study/study_figures.h"
 #include "renderer/study/study_intervals.h"
+#include "renderer/study/study_lighting.h"
 #include "renderer/study/study_tables.h"
 #include "renderer/study/study_statistics.h"
 #include "renderer/util/atomic_file.h"
@@ -752,7 +753,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   results["counts"] = counts;
   results["materials"] = perMaterial(s);
 
-  step(2, "per-model intervals");
+  step(2, "per-model and per-lighting intervals");
   std::vector<Interval> meanIv;
   const Json models = perModel(s, t, options, meanIv);
   results["models"] = models;
@@ -786,6 +787,10 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   }
   jw["cliques"] = cliques;
   results["wilcoxon"] = jw;
+  std::vector<std::string> rankOrder;
+  for (std::size_t k : t.rankOrder) rankOrder.push_back(s.models[k]);
+  const LightingAnalysis lighting = analyseLighting(s.used, rankOrder, options.resamples, options.seed);
+  results["lighting"] = lighting.json;
 
   step(3, "pairwise shares of materials");
   std::vector<std::size_t> all(s.materials.size());
@@ -832,6 +837,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   } else {
     summary += "Friedman test: none (" + t.friedmanReason + ").\n";
   }
+  summary += lighting.headline;
   summary += claimHeadline + "\n";
   if (s.materials.size() < kIntervalMinMaterials)
     summary += "A small sample: no interval (" + tooFewForInterval(s.materials.size()) + ")" +
@@ -880,8 +886,10 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   results["figures"] = figures;
   write("results.json", dump(results));
   write("models.tex", modelsTex(models, int(s.materials.size())));
-  std::string md = "# Study summary\n\n```\n" + summary + "```\n\nEvery statistic with its interval: `results.json`; "
-                   "the rows: `rows.csv`, `rows.json`; per-model table: `models.tex`; figures: ";
+  write("lighting.tex", lighting.tex);
+  std::string md = "# Study summary\n\n```\n" + summary + "```\n\n" + lighting.markdown +
+                   "\nEvery statistic with its interval: `results.json`; "
+                   "the rows: `rows.csv`, `rows.json`; per-model table: `models.tex`; per-lighting table: `lighting.tex`; figures: ";
   for (std::size_t i = 0; i < svgs.size(); ++i) md += (i ? ", " : "") + std::string("`") + svgs[i].first + ".svg`";
   md += ".\n";
   if (!options.perceptualDir.empty())

@@ -81,8 +81,6 @@ nlohmann::ordered_json rowsJson(std::span<const StudyRow> rows) {
   return out;
 }
 
-namespace {
-
 std::string latexEscape(const std::string& s) {
   std::string out;
   for (char c : s) {
@@ -96,8 +94,6 @@ std::string latexEscape(const std::string& s) {
   }
   return out;
 }
-
-}  // namespace
 
 std::string intervalCell(const Json& j) {
   if (j["estimate"].is_null()) return "--";

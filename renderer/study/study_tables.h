@@ -16,6 +16,8 @@ std::string rowsCsv(std::span<const StudyRow> rows);
 nlohmann::ordered_json rowsJson(std::span<const StudyRow> rows);
 // `models`: results.json's "models" array (label, closest, tied, meanRank, meanRrmse, medianRrmse).
 std::string modelsTex(const nlohmann::ordered_json& models, int materials);
+// Text as LaTeX shows it: its special characters escaped.
+std::string latexEscape(const std::string& text);
 // An interval of results.json as the tables print it: "0.0123 [0.0110, 0.0135]", "--" when absent.
 std::string intervalCell(const nlohmann::ordered_json& interval);
 
