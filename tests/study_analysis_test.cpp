@@ -296,6 +296,18 @@ TEST(StudyAnalysis, SmallSamplesAreStatedAsSuchNeverAsFindings) {
   }
 }
 
+// Against people with 3 materials: the highest ρ is described, not called the figure that agrees best.
+TEST(StudyAnalysis, AgainstPeopleASmallSampleNamesNoFigureThatAgreesBest) {
+  GLOSSY_REQUIRE_SHARED("perceptual");
+  TempDir dir;
+  AnalysisOptions o = fastOptions();
+  o.perceptualDir = test::sharedDir() / "perceptual";
+  const auto res = analyseStudy(firstMaterials(3), o, dir.path());
+  expectNoDegenerateInterval(results(dir));
+  EXPECT_EQ(res.summary.find("agrees best"), std::string::npos) << res.summary;
+  EXPECT_NE(res.summary.find("the highest Spearman ρ with the perceived distance is"), std::string::npos) << res.summary;
+}
+
 TEST(StudyAnalysis, PeopleAreComparedWithTheSharedFitOnlyWhereAModelCoversOthers) {
   GLOSSY_REQUIRE_SHARED("perceptual");
   // Microfacet E2 on the first three materials is glossy's own fit: those rows are not Löw's published

@@ -688,8 +688,10 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
     headline += (headline.empty() ? "" : "\n") + std::string("Against people (") + pairName + ", " + std::to_string(mats.size()) +
                 " MERL materials): " +
                 (best.empty() ? std::string("no figure correlates (undefined)")
-                              : "the figure that agrees best with the perceived distance is " + best + ", Spearman ρ " +
-                                    intervalText(bestIv, "%.3f"));
+                 : bestIv.lo  ? "the figure that agrees best with the perceived distance is " + best + ", Spearman ρ " +
+                                   intervalText(bestIv, "%.3f")
+                              // Without an interval the highest ρ is a description of these materials, not a finding.
+                              : "the highest Spearman ρ with the perceived distance is " + best + "'s, " + intervalText(bestIv, "%.3f"));
     fits.push_back(jf);
   }
   out["fits"] = fits;
