@@ -288,7 +288,8 @@ TEST(StudyLighting, TheMaterialsWhoseVerdictChangesAreCountedAndListed) {
 }
 
 // lighting.tex: one table float with caption and label, every lighting's rows and tests; it compiles with
-// pdflatex alone (no package), at 12 materials and at 3, where its reasons carry a "≥".
+// pdflatex alone (no package) and fits an article's page, at 12 materials and at 3, where its reasons
+// carry a "≥".
 TEST(StudyLighting, TheLatexTableHasCaptionLabelAndCompiles) {
   for (const std::size_t materials : {kVerdicts.size(), std::size_t(3)}) {
     TempDir dir;
@@ -300,9 +301,9 @@ TEST(StudyLighting, TheLatexTableHasCaptionLabelAndCompiles) {
     EXPECT_EQ(tex.find("booktabs"), std::string::npos);
     for (const std::string& l : kLightings) EXPECT_NE(tex.find("\n" + l + " (" + std::to_string(materials) + ") & "), std::string::npos) << l;
     if (materials < 6) {
-      EXPECT_NE(tex.find("Friedman: n/a: 3 materials; tests need $\\geq$ 6"), std::string::npos);
+      EXPECT_NE(tex.find("\\emph{a}: Friedman: n/a: 3 materials; tests need $\\geq$ 6"), std::string::npos);
     } else {
-      EXPECT_NE(tex.find("Friedman $\\chi^2 = "), std::string::npos);
+      EXPECT_NE(tex.find("\\emph{a}: Friedman $\\chi^2 = "), std::string::npos);
     }
     if (std::system("command -v pdflatex > /dev/null 2>&1") != 0) GTEST_SKIP() << "pdflatex is not installed";
     test::writeText(dir / "paper.tex", "\\documentclass{article}\n\\begin{document}\n\\input{lighting.tex}\n\\end{document}\n");
@@ -310,6 +311,7 @@ TEST(StudyLighting, TheLatexTableHasCaptionLabelAndCompiles) {
                                 " && pdflatex -interaction=nonstopmode -halt-on-error paper.tex > pdflatex.log 2>&1";
     EXPECT_EQ(std::system(command.c_str()), 0) << test::readText(dir / "pdflatex.log");
     EXPECT_TRUE(std::filesystem::exists(dir / "paper.pdf"));
+    EXPECT_EQ(test::readText(dir / "paper.log").find("Overfull \\hbox"), std::string::npos) << "the table fits the page";
   }
 }
 

@@ -12,7 +12,7 @@
 #include <map>
 #include <numeric>
 #include <set>
-#include <tuple>
+#include <iterator>
 
 namespace glossy::study {
 
@@ -392,8 +392,11 @@ std::string topPairText(const Data& d, const LightingTable& t) {
 
 std::string changedList(const Changes& c, const std::vector<std::string>& materials, bool verdicts) {
   return joined(materials, "; ", [&](const std::string& m) {
-    return m + " (" + joined(c.sheets.at(m), ", ", [&](const SheetVerdict& v) {
-             return v.lighting + ": " + (verdicts ? verdictText(v) : v.lowest);
+    const auto& sheets = c.sheets.at(m);
+    // The scene is named only where the material has more than one.
+    const bool scenes = std::any_of(sheets.begin(), sheets.end(), [&](const SheetVerdict& v) { return v.scene != sheets[0].scene; });
+    return m + " (" + joined(sheets, ", ", [&](const SheetVerdict& v) {
+             return (scenes ? v.scene + "/" : std::string()) + v.lighting + ": " + (verdicts ? verdictText(v) : v.lowest);
            }) + ")";
   });
 }
@@ -530,6 +533,7 @@ LightingAnalysis analyseLighting(const std::vector<const StudyRow*>& rows, const
         "\\begin{table}[htbp]\n\\centering\n\\caption{" + caption + "}\n\\label{tab:glossy-study-lighting}\n"
         "\\begin{tabular}{llrlr}\n\\hline\n"
         "Lighting & Model & Mean rank & Median $r^*$ [95\\,\\% CI] & Closest \\\\\n\\hline\n";
+  std::string testLines;
   for (const LightingTable& t : tables) {
     for (std::size_t k = 0; k < d.models.size(); ++k)
       tex += (k == 0 ? latexEscape(t.lighting) + " (" + std::to_string(t.complete.size()) + ")" : std::string()) + " & " +
@@ -541,9 +545,11 @@ LightingAnalysis analyseLighting(const std::vector<const StudyRow*>& rows, const
     if (t.top)
       tests += "; " + latexEscape(d.models[t.top->first]) + " vs.\\ " + latexEscape(d.models[t.top->second]) + ": " +
                (t.topTest ? "Wilcoxon " + pTex(t.topTest->p) : "no test (" + texText(t.topReason) + ")");
-    tex += "\\multicolumn{5}{l}{\\quad " + tests + "} \\\\\n\\hline\n";
+    tex += "\\hline\n";
+    testLines += "\\emph{" + latexEscape(t.lighting) + "}: " + tests + ".\\par\n";
   }
-  tex += "\\end{tabular}\n\\end{table}\n";
+  // The tests below the table, as paragraphs: their reasons may be longer than a column can hold.
+  tex += "\\end{tabular}\n\\par\\smallskip\n{\\footnotesize\n" + testLines + "}\n\\end{table}\n";
   return out;
 }
 
