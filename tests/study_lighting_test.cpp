@@ -291,6 +291,7 @@ TEST(StudyLighting, TheMaterialsWhoseVerdictChangesAreCountedAndListed) {
 // pdflatex alone (no package) and fits an article's page, at 12 materials and at 3, where its reasons
 // carry a "≥".
 TEST(StudyLighting, TheLatexTableHasCaptionLabelAndCompiles) {
+  const bool pdflatex = std::system("command -v pdflatex > /dev/null 2>&1") == 0;
   for (const std::size_t materials : {kVerdicts.size(), std::size_t(3)}) {
     TempDir dir;
     analyseStudy(lightingStudy(materials), options(), dir.path());
@@ -305,7 +306,7 @@ TEST(StudyLighting, TheLatexTableHasCaptionLabelAndCompiles) {
     } else {
       EXPECT_NE(tex.find("\\emph{a}: Friedman $\\chi^2 = "), std::string::npos);
     }
-    if (std::system("command -v pdflatex > /dev/null 2>&1") != 0) GTEST_SKIP() << "pdflatex is not installed";
+    if (!pdflatex) continue;
     test::writeText(dir / "paper.tex", "\\documentclass{article}\n\\begin{document}\n\\input{lighting.tex}\n\\end{document}\n");
     const std::string command = "cd " + test::shellQuote(dir.path().string()) +
                                 " && pdflatex -interaction=nonstopmode -halt-on-error paper.tex > pdflatex.log 2>&1";
@@ -313,6 +314,7 @@ TEST(StudyLighting, TheLatexTableHasCaptionLabelAndCompiles) {
     EXPECT_TRUE(std::filesystem::exists(dir / "paper.pdf"));
     EXPECT_EQ(test::readText(dir / "paper.log").find("Overfull \\hbox"), std::string::npos) << "the table fits the page";
   }
+  if (!pdflatex) GTEST_SKIP() << "pdflatex is not installed: the table's text is checked, not its compilation";
 }
 
 }  // namespace
