@@ -44,12 +44,13 @@ std::string plural(std::size_t n, const std::string& one, const std::string& man
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-// Who made a fit: a published fit is its paper's (Ngan et al. 2005's under their metric, else Löw et al.
-// 2012's supplement); glossy's own says so.
+// Who made a fit: a published fit is its paper's, named by its metric (Ngan et al. 2005's, Bagher et al.
+// 2012's, else Löw et al. 2012's E1 or E2); glossy's own says so.
 std::string fitSourceText(const Json& f, const Markup& m) {
   if (f["source"] == "glossy") return "glossy's own fit";
-  return f["metric"] == "Ngan05" ? std::string("the fit published by Ngan et al. (2005)")
-                                 : std::string("the fit published by L") + (m.text == plain ? "ö" : "\\\"{o}") + "w et al. (2012)";
+  if (f["metric"] == "Ngan05") return "the fit published by Ngan et al. (2005)";
+  if (f["metric"] == "Bagher12") return "the fit published by Bagher et al. (2012)";
+  return std::string("the fit published by L") + (m.text == plain ? "ö" : "\\\"{o}") + "w et al. (2012)";
 }
 
 std::string paragraph(const Json& r, const Markup& m) {

@@ -102,7 +102,8 @@ nlohmann::ordered_json rowsJson(std::span<const StudyRow> rows) {
 
 std::string latexEscape(const std::string& s) {
   static const std::pair<const char*, const char*> kKnown[] = {{"°", "\\textdegree{}"}, {"ö", "\\\"{o}"},     {"–", "--"},
-                                                               {"×", "$\\times$"},     {"ρ", "$\\rho$"}, {"²", "$^2$"}};
+                                                               {"×", "$\\times$"},     {"ρ", "$\\rho$"}, {"²", "$^2$"},
+                                                               {"≥", "$\\geq$"}};
   std::string out;
   for (std::size_t i = 0; i < s.size();) {
     const char c = s[i];

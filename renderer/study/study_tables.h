@@ -17,7 +17,7 @@ namespace glossy::study {
 std::string rowsCsv(std::span<const StudyRow> rows);
 nlohmann::ordered_json rowsJson(std::span<const StudyRow> rows);
 // `s` as LaTeX text: its special characters escaped, the few non-ASCII characters glossy's own words use
-// (°, ö, –, ×, ρ, ²) as LaTeX commands, and any other non-ASCII character as "?", so that the file compiles
+// (°, ö, –, ×, ρ, ², ≥) as LaTeX commands, and any other non-ASCII character as "?", so that the file compiles
 // with pdflatex and no package.
 std::string latexEscape(const std::string& s);
 // An interval of results.json as the tables print it: "0.0123 [0.0110, 0.0135]", "--" when absent.
