@@ -1,24 +1,24 @@
 // Building the report site (report_site.h).
 #include "renderer/report/report_site.h"
 
-#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "materials/params/material_name.h"
+#include "renderer/output/input_folder.h"
 #include "renderer/output/owned_folder.h"
 #include "renderer/plot/plot_output.h"
 #include "renderer/report/index_page.h"
-#include "renderer/report/input_folder.h"
 #include "renderer/report/material_page.h"
 #include "renderer/report/plot_index.h"
 #include "renderer/report/plot_picture.h"
 #include "renderer/report/sheet_images.h"
-#include "renderer/report/sheet_record.h"
 #include "renderer/report/site_assets.h"
 #include "renderer/report/site_layout.h"
 #include "renderer/report/study_page.h"
+#include "renderer/sheet/sheet_record.h"
 #include "renderer/study/study_plan.h"
 #include "renderer/study/study_rows.h"
-#include "materials/params/material_name.h"
+#include "renderer/util/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 
