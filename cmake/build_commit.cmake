@@ -28,9 +28,10 @@ endif()
 
 set(_glossy_commit_script ${CMAKE_CURRENT_LIST_FILE})
 
-# Gives TARGET the header OUTPUT_DIR/glossy_commit.h (GLOSSY_COMMIT), checked at every build.
+# Gives TARGET the header OUTPUT_DIR/renderer/util/glossy_commit.h (GLOSSY_COMMIT), checked at every build:
+# included by its path from the top, as every glossy header is.
 function(glossy_commit_header target output_dir)
-  set(_header ${output_dir}/glossy_commit.h)
+  set(_header ${output_dir}/renderer/util/glossy_commit.h)
   add_custom_target(${target}_commit
                     COMMAND ${CMAKE_COMMAND} -DSOURCE_DIR=${CMAKE_SOURCE_DIR} -DOUTPUT=${_header} -P ${_glossy_commit_script}
                     BYPRODUCTS ${_header}

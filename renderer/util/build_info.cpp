@@ -1,7 +1,7 @@
 // Only this file includes the generated header: a new commit recompiles it alone.
 #include "renderer/util/build_info.h"
 
-#include "glossy_commit.h"
+#include "renderer/util/glossy_commit.h"
 
 namespace glossy {
 
