@@ -1,5 +1,8 @@
 #include "materials/core/text.h"
 
+#include <filesystem>
+#include <sstream>
+
 namespace glossy {
 
 namespace {
@@ -129,6 +132,17 @@ std::string printableLine(const std::string& text, size_t maxLength) {
   }
   while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
   if (i < text.size()) out += "...";
+  return out;
+}
+
+std::string withoutFolders(const std::string& text) {
+  std::istringstream in(text);
+  std::string word, out;
+  while (in >> word) {
+    if (word.find('/') != std::string::npos)
+      if (const std::string file = std::filesystem::path(word).filename().string(); !file.empty()) word = file;
+    out += (out.empty() ? "" : " ") + word;
+  }
   return out;
 }
 

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "materials/models/brdf.h"
-#include "materials/params/param_set.h"
+#include "materials/models/param_set.h"
 
 #include <cstdint>
 #include <filesystem>
