@@ -285,12 +285,15 @@ TEST(CliList, ListsTheFitsPanelsNames) {
   expectOneLineError(runGlossy({"list", "--panels", "ward:E7", materialsDir().string()}), "--panels");
 }
 
-// `glossy eval` reaches Ngan et al.'s fits by MODEL:Ngan05, with the value the model gives in C++.
-TEST(CliEval, EvaluatesNganEtAlsPublishedFits) {
+// `glossy eval` reaches Ngan et al.'s and Bagher et al.'s fits by MODEL:Ngan05 and sgd:Bagher12, with the value the
+// model gives in C++.
+TEST(CliEval, EvaluatesOtherPapersPublishedFits) {
   const auto file = materialsDir() / "alum-bronze.toml";
   const MaterialFile m = loadMaterialFile(file);
+  int evaluated = 0;
   for (const Fit& f : m.fits) {
-    if (f.id.metric != FitId::kNgan05) continue;
+    if (f.id.isLowMetric()) continue;
+    ++evaluated;
     const RunResult r = runGlossy({"eval", "--material", file.string(), "--fit", f.id.str()}, "0.5,0,0.8660254037844386,-0.5,0,0.8660254037844386\n");
     ASSERT_EQ(r.status, 0) << r.err;
     const Rgb want = eval(makeBrdf(f), Vec3(0.5, 0, 0.8660254037844386), Vec3(-0.5, 0, 0.8660254037844386));
@@ -298,6 +301,7 @@ TEST(CliEval, EvaluatesNganEtAlsPublishedFits) {
     ASSERT_EQ(std::sscanf(r.out.c_str(), "%lf,%lf,%lf", &got[0], &got[1], &got[2]), 3) << r.out;
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], 1e-12 * want[c]) << f.id.str();
   }
+  EXPECT_EQ(evaluated, 7) << "six of Ngan et al.'s fits and Bagher et al.'s";
 }
 
 // With no path, from the checkout: a section per database folder that holds parameter files, headed by its

@@ -1,9 +1,9 @@
-// The OpenEXR header check (renderer/lights/exr_preflight.h): headers whose sizes would make OpenEXR read
+// The OpenEXR header check (renderer/image/exr_preflight.h): headers whose sizes would make OpenEXR read
 // from another place than their claims say, or allocate from sizes inside an attribute, are refused before
 // OpenEXR sees them; a real file passes.
 #include "materials/core/input_error.h"
 #include "renderer/image/exr_image.h"
-#include "renderer/lights/exr_preflight.h"
+#include "renderer/image/exr_preflight.h"
 #include "tests/support/test_support.h"
 
 #include <cstdint>

@@ -16,6 +16,9 @@ TEST(Markdown, RendersTheSubsetItKnows) {
             "<div class=\"table-wrap\"><table class=\"summary-table\">\n<thead><tr><th scope=\"col\">model</th><th scope=\"col\">r*</th></tr></thead>\n"
             "<tbody>\n<tr><td>CT E2</td><td>0.1</td></tr>\n<tr><td>GGX</td><td></td></tr>\n</tbody>\n</table></div>\n");
   EXPECT_EQ(markdownToHtml("2 * 3 * 4 and snake_case_name"), "<p>2 * 3 * 4 and snake_case_name</p>\n");
+  // Backslash escapes, as the summary writes r* in its captions and methods: never emphasis, no backslash shown.
+  EXPECT_EQ(markdownToHtml("r\\*, the error; r\\* of X\\_Y and \\\\ `r\\*`"),
+            "<p>r*, the error; r* of X_Y and \\ <code>r\\*</code></p>\n");
 }
 
 TEST(Markdown, EverythingElseIsEscapedText) {

@@ -1,4 +1,4 @@
-// The measured sampler (materials/merl/merl_sampling.h) draws from exactly its pdf: χ² on MERL-format
+// The measured sampler (materials/models/merl_sampling.h) draws from exactly its pdf: χ² on MERL-format
 // tables written here (one tabulated from a very glossy Cook-Torrance lobe, one broad, one with unmeasured
 // bins) and on shared/merl's six tables, in the same family as the analytic samplers
 // (tests/sampling_chi2_test.cpp); negative controls; and a table tabulated from an analytic fit renders

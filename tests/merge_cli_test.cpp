@@ -1,7 +1,7 @@
 // glossy merge (renderer/cli/merge_command.cpp): the fits of a job array's shards into parameter files, the
 // figures of its sheets into one table, and bad input refused before anything is written.
 #include "materials/params/material_file.h"
-#include "renderer/report/sheet_record.h"
+#include "renderer/sheet/sheet_record.h"
 #include "support/test_support.h"
 
 #include <gtest/gtest.h>

@@ -30,6 +30,16 @@ Vec3 dir(double theta, double phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }
 
+// An SGD lobe with Bagher's Fresnel F = F0 + (1 − F0)(1 − c)⁵ of F0 = 0.9 (F1 = 0) and shadowing of onset θ0
+// (Λ = 1, c = 1, k = 2): the shape parameters named, the rest fixed.
+Brdf sgdOf(Rgb kd, Rgb ks, Rgb alpha, Rgb p, Rgb norm, Rgb f1, Rgb theta0) {
+  ParamSet params;
+  params.set("kd", kd), params.set("ks", ks), params.set("alpha", alpha), params.set("p", p), params.set("norm", norm);
+  params.set("f0", Rgb(0.9)), params.set("f1", f1), params.set("lambda", Rgb(1.0)), params.set("c", Rgb(1.0));
+  params.set("k", Rgb(2.0)), params.set("theta0", theta0);
+  return Sgd::fromParams(params);
+}
+
 bool finiteNonNegative(const Rgb& c) {
   return std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b) && c.r >= 0 && c.g >= 0 && c.b >= 0;
 }
@@ -67,11 +77,11 @@ TEST(HalfVector, OneMinusCosineWithoutCancellation) {
 TEST(Library, EveryFitIsReciprocalFiniteAndZeroBelowTheHorizon) {
   const auto brdfs = libraryBrdfs();
   // 600 published by Löw et al., glossy's 600 refits beside them, 6 GGX E2 fits, and Ngan et al.'s fits of 86
-  // materials, one per bbm file in materials/published-fits.
+  // materials, one per bbm ngan_*.fit file in materials/published-fits, and Bagher et al.'s of all 100.
   size_t nganModels = 0;
   for (const auto& e : std::filesystem::directory_iterator(sourceDir() / "materials/published-fits"))
-    nganModels += e.path().extension() == ".fit";
-  ASSERT_EQ(brdfs.size(), 1206u + 86u * nganModels);
+    nganModels += e.path().extension() == ".fit" && e.path().filename().string().starts_with("ngan_");
+  ASSERT_EQ(brdfs.size(), 1206u + 86u * nganModels + 100u);
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   for (const auto& [name, brdf] : brdfs) {
@@ -192,6 +202,7 @@ TEST(Sampling, PdfIntegratesToTheSamplersAcceptanceProbability) {
       {"lafortune n=5", Lafortune{Rgb(0.05), Rgb(0.5), -0.6, 0.4, 5.0}},
       {"ngan-ashikhmin-shirley n=20", NganAshikhminShirley{Rgb(0.05), Rgb(0.5), 0.3, 20.0}},
       {"ngan-cook-torrance m=0.3", NganCookTorrance{Rgb(0.1), Rgb(0.5), 0.3, 0.3}},
+      {"sgd alpha=0.05..0.3", sgdOf(Rgb(0.1), Rgb(0.5), Rgb(0.05, 0.1, 0.3), Rgb(0.5, 0.2, 1.2), Rgb(10.0), Rgb(0.02), Rgb(0.0))},
   };
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
@@ -227,6 +238,8 @@ TEST(Sampling, NoNonFiniteSampleAtTheEndsOfTheUnitSquareForTheMostExtremeFits) {
       Lafortune{Rgb(0.0), Rgb(1.0), -0.577, 0.577, 1e8}, Lafortune{Rgb(0.1), Rgb(1.0), -0.707, 1e-12, 0.0},
       NganAshikhminShirley{Rgb(0.0), Rgb(1.0), 0.999, 1e8},
       NganCookTorrance{Rgb(0.0), Rgb(1.0), 1.0, 1e-4},
+      sgdOf(Rgb(0.0), Rgb(1e6), Rgb(1e-6), Rgb(2.0), Rgb(1e8), Rgb(100.0), Rgb(-kPi / 2.0)),
+      sgdOf(Rgb(0.1), Rgb(1.0), Rgb(10.0), Rgb(0.0), Rgb(1e-3), Rgb(0.0), Rgb(kPi / 2.0)),
   };
   const double ends[] = {0.0, 1e-300, 1e-17, 0.5, 1.0 - 1e-16, std::nextafter(1.0, 0.0)};
   for (const Brdf& brdf : extreme)

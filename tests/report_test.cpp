@@ -5,7 +5,7 @@
 #include "renderer/image/exr_image.h"
 #include "renderer/report/html_text.h"
 #include "renderer/report/model_summary.h"
-#include "renderer/report/sheet_record.h"
+#include "renderer/sheet/sheet_record.h"
 #include "tests/support/test_support.h"
 
 #include <OpenImageIO/imagebuf.h>

@@ -67,6 +67,7 @@ TEST(SetupPackages, NothingTheMainJobInstallsPullsInADaemon) {
 TEST(SetupPackages, TheTestAndClusterSetUpsBringTheRest) {
   const auto test = packagesOf("test");
   EXPECT_EQ(test.count("chromium"), 1u);
+  EXPECT_EQ(test.count("texlive-latex-base"), 1u) << "pdflatex, which compiles a study's LaTeX";
   for (const auto& p : test) EXPECT_EQ(kDaemons.count(p), 0u) << "scripts/test installs " << p;
   const auto cluster = packagesOf("setup-cluster");
   for (const auto& p : {"slurmctld", "slurmd", "slurm-client", "munge"}) EXPECT_EQ(cluster.count(p), 1u) << p;

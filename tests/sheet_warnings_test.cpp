@@ -1,8 +1,8 @@
 // A sheet's warnings and its noise-floor row: no model is named closest while a warning stands, and both
 // reach every reader of the sheet (the table, the EXR and the report's record of it, the PNG's strip).
-#include "renderer/report/sheet_record.h"
 #include "renderer/report/site_layout.h"
 #include "renderer/sheet/sheet.h"
+#include "renderer/sheet/sheet_record.h"
 #include "tests/support/test_support.h"
 
 namespace glossy::test {

@@ -3,6 +3,7 @@
 // tables it reads (renderer/study/perceptual.h). The statistics themselves are checked against scipy in
 // study_statistics_test.cpp.
 #include "materials/core/input_error.h"
+#include "materials/core/text.h"
 #include "renderer/study/perceptual.h"
 #include "renderer/study/study_analysis.h"
 #include "tests/support/test_support.h"
@@ -170,6 +171,143 @@ TEST(StudyAnalysis, E2OrderedWithTheImageErrorIsSaidToPredictItBetterThanE1) {
   EXPECT_NE(res.summary.find("E2 predicts image error better than E1"), std::string::npos) << res.summary;
 }
 
+// Spearman's ρ of two columns without ties, by the textbook formula 1 − 6 Σ d² / (n (n² − 1)), ranks by counting.
+double spearmanWithoutTies(const std::vector<double>& x, const std::vector<double>& y) {
+  const auto rank = [](const std::vector<double>& v, std::size_t i) { return double(std::count_if(v.begin(), v.end(), [&](double u) { return u < v[i]; })); };
+  double d2 = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) d2 += (rank(x, i) - rank(y, i)) * (rank(x, i) - rank(y, i));
+  const double n = double(x.size());
+  return 1.0 - 6.0 * d2 / (n * (n * n - 1.0));
+}
+
+// Löw et al.'s question is asked within a material, across its fits: each material's ρ of E2 with r*
+// minus its ρ of E1 with r*, the mean over materials with a paired interval — beside the pooled difference,
+// the summary saying which question each answers.
+TEST(StudyAnalysis, TheWithinMaterialDifferenceOfE2AndE1IsTheMeanOfEachMaterialsOwn) {
+  TempDir dir;
+  const auto rows = syntheticStudy();
+  const auto res = analyseStudy(rows, fastOptions(), dir.path());
+  const Json r = results(dir);
+  // Each material's figures are the means over its two lightings.
+  double sum = 0;
+  for (const std::string& m : kMaterials) {
+    std::vector<double> rr, e1, e2;
+    for (const Model& model : kModels) {
+      double a = 0, b = 0, c = 0;
+      for (const StudyRow& row : rows)
+        if (row.material == m && row.label == model.label) {
+          a += *row.rrmse / 2;
+          b += *row.e1 / 2;
+          c += *row.e2 / 2;
+        }
+      rr.push_back(a);
+      e1.push_back(b);
+      e2.push_back(c);
+    }
+    sum += spearmanWithoutTies(e2, rr) - spearmanWithoutTies(e1, rr);
+  }
+  const double expected = sum / double(kMaterials.size());
+  const Json& within = r["e2MinusE1"][0]["withinMaterialSpearman"];
+  SCOPED_TRACE(within.dump());
+  ASSERT_EQ(r["e2MinusE1"][0]["image"], "rrmse");
+  EXPECT_NEAR(within["estimate"].get<double>(), expected, 1e-12);
+  EXPECT_EQ(within["materials"], 12);
+  ASSERT_FALSE(within["lo"].is_null());
+  EXPECT_LT(within["lo"].get<double>(), expected);
+  EXPECT_GT(within["hi"].get<double>(), expected);
+  EXPECT_GT(within["lo"].get<double>(), 0.0) << "E2 follows r* on every material, E1 is noise";
+  EXPECT_FALSE(r["e2MinusE1"][0]["pooledSpearman"]["estimate"].is_null());
+  EXPECT_NE(res.summary.find("Across materials (pooled over every material and model)"), std::string::npos) << res.summary;
+  EXPECT_NE(res.summary.find("Across a material's fits (within each material, then the mean; Löw et al.'s question)"), std::string::npos);
+  EXPECT_NE(res.summary.find(formatted("E2 − E1 %.3f [", expected)), std::string::npos) << res.summary;
+}
+
+// Every interval of results.json either has two different ends or is absent with its reason; none reads
+// [x, x].
+void expectNoDegenerateInterval(const Json& j, const std::string& where = "") {
+  if (j.is_object()) {
+    if (j.contains("lo") && j.contains("hi") && j.contains("estimate")) {
+      if (!j["lo"].is_null()) {
+        EXPECT_NE(j["lo"].get<double>(), j["hi"].get<double>()) << where << ": " << j.dump();
+      } else if (!j["estimate"].is_null()) {
+        EXPECT_TRUE(j.contains("reason") && !j["reason"].get<std::string>().empty()) << where << ": " << j.dump();
+      }
+    }
+    for (const auto& [k, v] : j.items()) expectNoDegenerateInterval(v, where + "/" + k);
+  } else if (j.is_array()) {
+    for (std::size_t i = 0; i < j.size(); ++i) expectNoDegenerateInterval(j[i], where + "/" + std::to_string(i));
+  }
+}
+
+std::vector<StudyRow> firstMaterials(std::size_t n) {
+  std::vector<StudyRow> rows;
+  for (const StudyRow& r : syntheticStudy())
+    if (std::find(kMaterials.begin(), kMaterials.begin() + std::ptrdiff_t(n), r.material) != kMaterials.begin() + std::ptrdiff_t(n))
+      rows.push_back(r);
+  return rows;
+}
+
+// Below 10 materials no interval, below 6 no test: each absent with the reason, never a degenerate interval
+// or a finding; and where every material agrees (a share of 1), no [1, 1] either.
+TEST(StudyAnalysis, SmallSamplesAreStatedAsSuchNeverAsFindings) {
+  {
+    TempDir dir;
+    const auto res = analyseStudy(firstMaterials(1), fastOptions(), dir.path());
+    const Json r = results(dir);
+    expectNoDegenerateInterval(r);
+    const std::string md = test::readText(dir / "summary.md");
+    EXPECT_EQ(md.find("predicts image error better"), std::string::npos) << md;
+    EXPECT_NE(md.find("not decided"), std::string::npos) << md;
+    EXPECT_NE(md.find("n/a: 1 material; intervals need \xE2\x89\xA5 10"), std::string::npos) << md;
+    EXPECT_NE(md.find("no test (n/a: 1 material; tests need \xE2\x89\xA5 6)"), std::string::npos) << md;
+    EXPECT_FALSE(std::regex_search(md, std::regex(R"(\[([-0-9.e]+), \1\])"))) << md;
+    EXPECT_EQ(r["e2MinusE1"][0]["pooledSpearman"]["reason"], "n/a: 1 material; intervals need \xE2\x89\xA5 10");
+    EXPECT_TRUE(r["friedman"]["p"].is_null());
+    EXPECT_EQ(r["friedman"]["reason"], "n/a: 1 material; tests need \xE2\x89\xA5 6");
+    expectNoNanOrInf(dir, res);
+  }
+  {
+    // Three materials: the mean ranks stand, the Friedman test does not.
+    TempDir dir;
+    analyseStudy(firstMaterials(3), fastOptions(), dir.path());
+    const Json r = results(dir);
+    expectNoDegenerateInterval(r);
+    EXPECT_EQ(r["friedman"]["reason"], "n/a: 3 materials; tests need \xE2\x89\xA5 6");
+    EXPECT_EQ(modelEntry(r, "Microfacet E2")["meanRank"], 1.0);
+    EXPECT_TRUE(modelEntry(r, "Microfacet E2")["meanRrmse"]["lo"].is_null());
+    EXPECT_EQ(modelEntry(r, "Microfacet E2")["meanRrmse"]["reason"], "n/a: 3 materials; intervals need \xE2\x89\xA5 10");
+  }
+  for (const std::size_t n : {std::size_t(8), kMaterials.size()}) {
+    // 8 materials: too few for an interval, enough for a test; 12: an interval would be [1, 1].
+    TempDir dir;
+    analyseStudy(firstMaterials(n), fastOptions(), dir.path());
+    const Json r = results(dir);
+    expectNoDegenerateInterval(r);
+    EXPECT_FALSE(r["friedman"]["p"].is_null());
+    for (const Json& c : r["closerThan"]["overall"])
+      if (c["x"] == "Microfacet E2") {
+        EXPECT_EQ(c["share"]["estimate"], 1.0);
+        EXPECT_TRUE(c["share"]["lo"].is_null()) << c.dump();
+        EXPECT_EQ(c["share"]["reason"], n < 10 ? "n/a: 8 materials; intervals need \xE2\x89\xA5 10"
+                                               : "no interval: every resample gives 1 (the 12 materials agree; the bootstrap cannot bound it)");
+      }
+    const std::string md = test::readText(dir / "summary.md");
+    EXPECT_FALSE(std::regex_search(md, std::regex(R"(\[([-0-9.e]+), \1\])"))) << md;
+  }
+}
+
+// Against people with 3 materials: the highest ρ is described, not called the figure that agrees best.
+TEST(StudyAnalysis, AgainstPeopleASmallSampleNamesNoFigureThatAgreesBest) {
+  GLOSSY_REQUIRE_SHARED("perceptual");
+  TempDir dir;
+  AnalysisOptions o = fastOptions();
+  o.perceptualDir = test::sharedDir() / "perceptual";
+  const auto res = analyseStudy(firstMaterials(3), o, dir.path());
+  expectNoDegenerateInterval(results(dir));
+  EXPECT_EQ(res.summary.find("agrees best"), std::string::npos) << res.summary;
+  EXPECT_NE(res.summary.find("the highest Spearman ρ with the perceived distance is"), std::string::npos) << res.summary;
+}
+
 TEST(StudyAnalysis, PeopleAreComparedWithTheSharedFitOnlyWhereAModelCoversOthers) {
   GLOSSY_REQUIRE_SHARED("perceptual");
   // Microfacet E2 on the first three materials is glossy's own fit: those rows are not Löw's published
@@ -215,7 +353,7 @@ TEST(StudyAnalysis, RowOrderDoesNotChangeAByte) {
 TEST(StudyAnalysis, WritesEveryOutput) {
   TempDir dir;
   const auto res = analyseStudy(syntheticStudy(), fastOptions(), dir.path());
-  for (const char* f : {"rows.csv", "rows.json", "results.json", "models.tex", "summary.md", "error_curves.svg", "heat_map.svg",
+  for (const char* f : {"rows.csv", "rows.json", "results.json", "models.tex", "lighting.tex", "summary.md", "error_curves.svg", "heat_map.svg",
                         "critical_difference.svg", "brdf_vs_image.svg"}) {
     EXPECT_TRUE(std::find(res.files.begin(), res.files.end(), std::filesystem::path(f)) != res.files.end()) << f;
     EXPECT_TRUE(std::filesystem::exists(dir / f)) << f;
@@ -226,7 +364,7 @@ TEST(StudyAnalysis, WritesEveryOutput) {
   EXPECT_EQ(csv[0].at("spp"), "16");
   const std::string tex = test::readText(dir / "models.tex");
   EXPECT_NE(tex.find("\\toprule"), std::string::npos);
-  EXPECT_NE(tex.find("Microfacet E2 & 22 & 2 & 1.00"), std::string::npos) << tex;
+  EXPECT_NE(tex.find("Microfacet E2 & a & 22 & 2 & 1.00"), std::string::npos) << tex;
   EXPECT_NE(test::readText(dir / "critical_difference.svg").find("Microfacet E2 (1.00)"), std::string::npos);
 }
 

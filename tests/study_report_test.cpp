@@ -108,8 +108,16 @@ TEST(StudyReport, TheSummaryIsRenderedEachFigureCaptionedAndRowsFoundByEveryColu
   EXPECT_EQ(index.find("# Study summary"), std::string::npos) << "no raw markdown";
   EXPECT_NE(index.find("<code>results.json</code>"), std::string::npos);
   EXPECT_EQ(index.find("```"), std::string::npos);
-  EXPECT_NE(index.find("<figcaption>Relative RMSE r* per material, the materials sorted"), std::string::npos) << "error_curves captioned";
-  EXPECT_NE(index.find("<figcaption>Critical-difference diagram"), std::string::npos);
+  // Each figure captioned as the analysis captions it (results.json's figures).
+  EXPECT_NE(index.find("<figcaption>The noise-free relative RMSE r* of every model on every material"), std::string::npos) << "error_curves captioned";
+  EXPECT_NE(index.find("<figcaption>Mean rank of each model"), std::string::npos);
+  // The lighting section: a table per lighting, the agreement across them, the small sample stated.
+  EXPECT_NE(index.find("<h4>Lighting</h4>"), std::string::npos);
+  for (const char* lighting : {"<h5>dim-grey: 2 materials, 2 sheets</h5>", "<h5>sky: 2 materials, 2 sheets</h5>", "<h5>Across lightings</h5>"})
+    EXPECT_NE(index.find(lighting), std::string::npos) << lighting;
+  EXPECT_NE(index.find("<th scope=\"col\">median r* [95 %]</th>"), std::string::npos);
+  EXPECT_NE(index.find("Friedman test: none (n/a: 2 materials; tests need \xE2\x89\xA5 6)"), std::string::npos);
+  EXPECT_NE(index.find("\"analysis/lighting.tex\""), std::string::npos);
   EXPECT_EQ(index.find("<figcaption>error_curves.svg</figcaption>"), std::string::npos);
   EXPECT_NE(index.find("data-noun=\"rows\""), std::string::npos);
   const std::vector<study::StudyRow> rows = study::readStudyRows(studyDir());

@@ -15,7 +15,7 @@ bin. With atan2, float32 picks glossy's (double) bin except near bin edges and w
 direction, where phi_h (hence phi_d) turns with the float32 rounding of L and V (check_plugins.py: 5 of
 2000 test pairs, all there).
 
-Sampling is not glossy's tabulated scheme (materials/merl/merl_sampling.*): Mitsuba's side samples the
+Sampling is not glossy's tabulated scheme (materials/models/merl_sampling.*): Mitsuba's side samples the
 material's fitted Cook-Torrance lobe as a proposal, exactly the mixture of cook_torrance.py (Beckmann half
 vector with probability p_spec of the fit, else the cosine lobe), with that mixture's exact density as
 pdf() and the table's value in the weight. This is what a Mitsuba user without a tabulated sampler would

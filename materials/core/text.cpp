@@ -1,5 +1,8 @@
 #include "materials/core/text.h"
 
+#include <filesystem>
+#include <sstream>
+
 namespace glossy {
 
 namespace {
@@ -30,10 +33,15 @@ char32_t codePoint(std::string_view s) {
 }
 
 // "5012" as "5,012".
+// Built by appending: GCC 12 misreads string::insert's overlap check here and warns (-Wrestrict).
 std::string withThousands(size_t n) {
-  std::string digits = std::to_string(n);
-  for (size_t k = digits.size(); k > 3; k -= 3) digits.insert(k - 3, ",");
-  return digits;
+  const std::string digits = std::to_string(n);
+  std::string out;
+  for (size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
 }
 
 // `text` as its characters, each escaped when it is not printable (see safeLine).
@@ -129,6 +137,17 @@ std::string printableLine(const std::string& text, size_t maxLength) {
   }
   while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
   if (i < text.size()) out += "...";
+  return out;
+}
+
+std::string withoutFolders(const std::string& text) {
+  std::istringstream in(text);
+  std::string word, out;
+  while (in >> word) {
+    if (word.find('/') != std::string::npos)
+      if (const std::string file = std::filesystem::path(word).filename().string(); !file.empty()) word = file;
+    out += (out.empty() ? "" : " ") + word;
+  }
   return out;
 }
 

@@ -55,6 +55,11 @@ std::string safeLine(std::string_view text, size_t maxCharacters = 1000);
 // number or a pasted file does not fill the screen. (safeLine escapes it with the rest of the message.)
 std::string shortened(std::string_view text, size_t maxCharacters = 40);
 
+// A source or scene as a published site shows it: every word that is a path cut to its file name
+// ("MERL /home/me/merl/chrome.binary" -> "MERL chrome.binary"), so the site carries no local folders and
+// two checkouts of one scene read alike.
+std::string withoutFolders(const std::string& text);
+
 inline std::optional<double> parseNumber(std::string_view text) {
   if (text.starts_with('+')) text.remove_prefix(1);
   double v = 0.0;

@@ -14,6 +14,7 @@
 #include "materials/models/microfacet.h"
 #include "materials/models/ngan_ashikhmin_shirley.h"
 #include "materials/models/ngan_cook_torrance.h"
+#include "materials/models/sgd.h"
 #include "materials/models/smooth.h"
 #include "materials/models/ward.h"
 #include "materials/models/ward_duer.h"
@@ -24,6 +25,6 @@ template <class... Models>
 struct ModelList {};
 
 using BuiltinModels = ModelList<Microfacet, Smooth, AshikhminShirley, CookTorrance, Lambertian, Ggx, Ward, WardDuer,
-                           BlinnPhong, Lafortune, NganAshikhminShirley, NganCookTorrance>;
+                           BlinnPhong, Lafortune, NganAshikhminShirley, NganCookTorrance, Sgd>;
 
 }  // namespace glossy

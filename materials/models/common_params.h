@@ -1,7 +1,7 @@
 // Parameter declarations several models share, so that their meaning and bounds are written once.
 #pragma once
 
-#include "materials/params/param_set.h"
+#include "materials/models/param_set.h"
 
 namespace glossy::params {
 

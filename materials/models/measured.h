@@ -2,16 +2,16 @@
 //   ρ(L, V) = table[bin(θ_h, θ_d, φ_d)] × channel scale,  0 in unmeasured bins and below the horizon.
 //
 // Sampling: a one-sample mixture of
-//   - the tabulated half-vector density built from the table (materials/merl/merl_sampling.h), weight 1 − c − q,
+//   - the tabulated half-vector density built from the table (materials/models/merl_sampling.h), weight 1 − c − q,
 //   - the cosine lobe, weight c (everything the table's proposal might miss stays reachable),
 //   - optionally an analytic proposal (e.g. the material's best-fitting lobe), weight q.
 //   pdf(L) = (1 − c − q) p_table(L) + c cos θ_L / π + q p_fit(L).
 // The defaults (c = 0.1, q = 0) were chosen by measurement: docs/sampling.md, "Measured data".
 #pragma once
 
-#include "materials/merl/merl_sampling.h"
 #include "materials/merl/merl_table.h"
 #include "materials/models/brdf_model.h"
+#include "materials/models/merl_sampling.h"
 
 #include <memory>
 

@@ -131,25 +131,31 @@ std::vector<MaterialFile> importSupplement(std::string_view text, const std::str
 
 namespace {
 
-// Ngan et al. 2005's models as bbm names them → glossy's model and argument names. He et al.'s (NganHe) is
-// not a glossy model (docs/models.md).
-struct NganModel {
+// The models of other papers' published fits as bbm names them → glossy's model, metric and argument names.
+// He et al.'s (NganHe) is not a glossy model (docs/models.md).
+struct PaperModel {
   const char* bbm;
   const char* model;
+  std::string_view metric;
   std::map<std::string, std::string> keys;
 };
-const NganModel* nganModel(const std::string& bbmModel) {
-  static const NganModel models[] = {
-      {"NganWard", "ward", {{"albedo", "ks"}, {"roughness", "alpha"}}},
-      {"NganWardDuer", "ward-duer", {{"albedo", "ks"}, {"roughness", "alpha"}}},
+const PaperModel* paperModel(const std::string& bbmModel) {
+  static const PaperModel models[] = {
+      {"NganWard", "ward", FitId::kNgan05, {{"albedo", "ks"}, {"roughness", "alpha"}}},
+      {"NganWardDuer", "ward-duer", FitId::kNgan05, {{"albedo", "ks"}, {"roughness", "alpha"}}},
       // bbm evaluates the mirror-vector Phong for these; glossy reads them on the half vector (blinn_phong.h).
-      {"NganBlinnPhong", "blinn-phong", {{"albedo", "ks"}, {"sharpness", "n"}}},
-      {"NganLafortune", "lafortune", {{"albedo", "ks"}, {"Cxy", "cxy"}, {"Cz", "cz"}, {"sharpness", "n"}}},
-      {"NganAshikhminShirley", "ngan-ashikhmin-shirley", {{"albedo", "ks"}, {"fresnelReflectance", "f0"}, {"sharpness", "n"}}},
+      {"NganBlinnPhong", "blinn-phong", FitId::kNgan05, {{"albedo", "ks"}, {"sharpness", "n"}}},
+      {"NganLafortune", "lafortune", FitId::kNgan05, {{"albedo", "ks"}, {"Cxy", "cxy"}, {"Cz", "cz"}, {"sharpness", "n"}}},
+      {"NganAshikhminShirley", "ngan-ashikhmin-shirley", FitId::kNgan05,
+       {{"albedo", "ks"}, {"fresnelReflectance", "f0"}, {"sharpness", "n"}}},
       // bbm's `eta` here is Schlick's F0, a reflectance (ngan_cook_torrance.h).
-      {"NganCookTorrance", "ngan-cook-torrance", {{"albedo", "ks"}, {"eta", "f0"}, {"roughness", "m"}}},
+      {"NganCookTorrance", "ngan-cook-torrance", FitId::kNgan05, {{"albedo", "ks"}, {"eta", "f0"}, {"roughness", "m"}}},
+      // bbm's `eta` here is the pair [F0, F1] of Bagher's Fresnel term, each RGB (sgd.h).
+      {"Bagher", "sgd", FitId::kBagher12,
+       {{"albedo", "ks"}, {"alpha", "alpha"}, {"p", "p"}, {"eta", "f0,f1"}, {"K", "norm"}, {"Lambda", "lambda"},
+        {"c", "c"}, {"k", "k"}, {"theta0", "theta0"}}},
   };
-  for (const NganModel& m : models)
+  for (const PaperModel& m : models)
     if (bbmModel == m.bbm) return &m;
   return nullptr;
 }
@@ -161,12 +167,18 @@ std::string nganFitSource(const std::string& fileName) {
          ", commit 9807fb38d7ab51802f3a0fe0f65cf763cb01a0f4)";
 }
 
+std::string bagherFitSource(const std::string& fileName) {
+  return "Bagher, Soler & Holzschuch 2012, published fits as transcribed by bbm (fits/" + fileName +
+         ", commit 9807fb38d7ab51802f3a0fe0f65cf763cb01a0f4)";
+}
+
 std::vector<MaterialFile> importFitLines(std::string_view text, const std::string& source) {
   static const std::regex fileMetric(R"(_(E[12])\.fit$)");
   static const std::regex commentMetric(R"(\b(E[12]) fits\b)");
   static const std::regex line(
       R"(^\s*([^=\s]+)\s*=\s*Aggregate\(\s*Lambertian\(\s*albedo\s*=\s*\[([^\]]*)\]\s*\)\s*,\s*(\w+)\((.*)\)\s*\)\s*$)");
-  static const std::regex argument(R"((\w+)\s*=\s*(\[[^\]]*\]|[^,\s)]+))");
+  // A value: a number, [R, G, B], or a pair of them, [[R, G, B], [R, G, B]] (Bagher's `eta`).
+  static const std::regex argument(R"((\w+)\s*=\s*(\[\s*\[[^\]]*\]\s*,\s*\[[^\]]*\]\s*\]|\[[^\]]*\]|[^,\s)]+))");
 
   const auto lines = splitLines(text);
   std::string metric;
@@ -195,13 +207,13 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
     fit.id.metric = metric;
     // bbm's model and argument names → ours.
     std::map<std::string, std::string> keys;
-    const NganModel* ngan = nganModel(bbmModel);
-    if (!ngan && metric.empty())
+    const PaperModel* paper = paperModel(bbmModel);
+    if (!paper && metric.empty())
       throw InputError(source + ": cannot tell the metric (name the file *_E1.fit or *_E2.fit)");
-    if (ngan) {
-      fit.id = {ngan->model, std::string(FitId::kNgan05)};
-      keys = ngan->keys;
-      fit.source = nganFitSource(fileName);
+    if (paper) {
+      fit.id = {paper->model, std::string(paper->metric)};
+      keys = paper->keys;
+      fit.source = paper->metric == FitId::kNgan05 ? nganFitSource(fileName) : bagherFitSource(fileName);
     } else if (bbmModel == "LowMicrofacetFit" || bbmModel == "LowSmooth") {
       fit.id.model = bbmModel == "LowSmooth" ? "smooth" : "microfacet";
       keys = {{"A", "a"}, {"B", "b"}, {"C", "c"}, {"eta", "eta"}};
@@ -220,14 +232,22 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
       const std::string arg = (*a)[1], value = (*a)[2];
       auto key = keys.find(arg);
       if (key == keys.end()) throw InputError(context + ": unknown argument '" + arg + "' of " + bbmModel);
-      if (fit.params.has(key->second)) throw InputError(context + ": argument '" + arg + "' given twice");
-      if (value.front() == '[')
+      if (fit.params.has(key->second.substr(0, key->second.find(','))))
+        throw InputError(context + ": argument '" + arg + "' given twice");
+      if (const size_t comma = key->second.find(','); comma != std::string::npos) {
+        // A pair of RGB values for two keys ("f0,f1"): [[...], [...]].
+        static const std::regex pair(R"(^\[\s*\[([^\]]*)\]\s*,\s*\[([^\]]*)\]\s*\]$)");
+        std::smatch two;
+        if (!std::regex_match(value, two, pair)) throw InputError(context + ": " + arg + " must be [[R, G, B], [R, G, B]]");
+        fit.params.set(key->second.substr(0, comma), parseRgb(two[1], context + ": " + arg));
+        fit.params.set(key->second.substr(comma + 1), parseRgb(two[2], context + ": " + arg));
+      } else if (value.front() == '[')
         fit.params.set(key->second, parseRgb(value.substr(1, value.size() - 2), context + ": " + arg));
       else
         fit.params.set(key->second, requireNumber(value, context + ": " + arg));
     }
     validateFit(fit, context);
-    MaterialFile mat = measuredMaterial(name, ngan ? fit.source : std::string(kFitLinesSource));
+    MaterialFile mat = measuredMaterial(name, paper ? fit.source : std::string(kFitLinesSource));
     mat.put(std::move(fit));
     for (const MaterialFile& prev : out)
       if (prev.name == name) throw InputError(where + ": material '" + name + "' appears twice in this file");

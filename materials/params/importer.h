@@ -22,10 +22,13 @@ inline constexpr std::string_view kFitLinesSource =
 std::vector<MaterialFile> importSupplement(std::string_view text, const std::string& source);
 // The metric is not on the lines. Löw et al.'s: from the file name (low_cooktorrance_E1.fit) or, failing that,
 // from a header comment naming "E1 fits"/"E2 fits". Ngan et al.'s (models NganWard, …): FitId::kNgan05, and
-// each fit's `source` names the paper, the file and bbm's commit (the file's second line names the paper).
+// each fit's `source` names the paper, the file and bbm's commit (the file's second line names the paper);
+// Bagher et al.'s (model Bagher): FitId::kBagher12, likewise.
 std::vector<MaterialFile> importFitLines(std::string_view text, const std::string& source);
 // The provenance of an Ngan et al. fit read from bbm's file `fileName` ("ngan_ward.fit").
 std::string nganFitSource(const std::string& fileName);
+// The provenance of a Bagher et al. fit read from bbm's file `fileName` ("bagher_sgd.fit").
+std::string bagherFitSource(const std::string& fileName);
 
 // Gathers fits from many sources into one MaterialFile per material. Where two sources give the same
 // MODEL:METRIC for a material, the supplement's text (6 significant decimals) beats the .fit lines (5),

@@ -21,8 +21,9 @@ void checkParam(const ParamSpec& spec, const ParamSet::Value& v, const std::stri
 namespace {
 
 void checkMetric(const std::string& metric, const std::string& what) {
-  if (metric != "E1" && metric != "E2" && metric != FitId::kNgan05)
-    throw InputError(what + " must be E1, E2 or " + std::string(FitId::kNgan05) + ", got '" + metric + "'");
+  if (metric != "E1" && metric != "E2" && metric != FitId::kNgan05 && metric != FitId::kBagher12)
+    throw InputError(what + " must be E1, E2, " + std::string(FitId::kNgan05) + " or " + std::string(FitId::kBagher12) +
+                     ", got '" + metric + "'");
 }
 
 size_t modelRank(const std::string& model) {

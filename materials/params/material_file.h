@@ -3,7 +3,7 @@
 #pragma once
 
 #include "materials/models/brdf.h"
-#include "materials/params/param_set.h"
+#include "materials/models/param_set.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -19,7 +19,7 @@ namespace glossy {
 // for the other.
 struct FitId {
   std::string model;   // a registry name: "cook-torrance"
-  std::string metric;  // "E1" | "E2" | kNgan05
+  std::string metric;  // "E1" | "E2" | kNgan05 | kBagher12
   std::string by = {};  // "" for a published fit, kGlossy for a fit `glossy fit` made
 
   static constexpr std::string_view kGlossy = "glossy";
@@ -28,6 +28,10 @@ struct FitId {
   // neither fits nor evaluates it (`glossy fit --metric` takes E1 and E2; `glossy error` reports E1 and E2
   // of any fit). docs/materials.md.
   static constexpr std::string_view kNgan05 = "Ngan05";
+  // Bagher, Soler & Holzschuch 2012's, likewise (their SGD fits of the 100 MERL materials).
+  static constexpr std::string_view kBagher12 = "Bagher12";
+  // Löw et al.'s metrics, which glossy also fits and reports, as against another paper's own objective.
+  bool isLowMetric() const { return metric == "E1" || metric == "E2"; }
   bool isGlossys() const { return by == kGlossy; }
   std::string str() const { return model + ":" + metric + (by.empty() ? "" : ":" + by); }
   bool operator==(const FitId&) const = default;

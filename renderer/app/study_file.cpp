@@ -157,13 +157,14 @@ StudyScene readScene(const Reader& r, const std::string& name, const toml::node&
   const toml::table* t = node.as_table();
   if (!t) r.fail(node, key, "must be a table: { builtin = \"preview\" } or { gltf = \"SCENE.gltf\" }");
   r.keys(*t, key + ".", {"builtin", "gltf", "camera"});
-  StudyScene s{r.name(node, key, name), "", ""};
+  StudyScene s{r.name(node, key, name), "", "", ""};
   if (int(t->contains("builtin")) + int(t->contains("gltf")) != 1) r.fail(node, key, "give exactly one of builtin = \"preview\" or \"sphere\", gltf = \"FILE\"");
   if (const toml::node* b = t->get("builtin")) {
     const std::string which = r.text(*b, key + ".builtin");
     if (std::find(std::begin(kBuiltinScenes), std::end(kBuiltinScenes), which) == std::end(kBuiltinScenes))
       r.fail(*b, key + ".builtin", "'" + shortened(which) + "' is not a built-in scene (preview, sphere)");
     s.gltf = (dataDir() / "scenes" / (which + ".gltf")).string();
+    s.builtin = which;
   }
   if (const toml::node* g = t->get("gltf")) {
     s.gltf = r.path(*g, key + ".gltf", false).string();
@@ -270,7 +271,8 @@ StudyFile loadStudyFile(const fs::path& path, const fs::path& library) {
   std::error_code ec;
   const Reader r{path.string(), fs::weakly_canonical(path, ec).parent_path()};
   study.plan.study = fs::weakly_canonical(fs::absolute(path, ec), ec);
-  const toml::table root = parseToml(readInputFile(path, kMaxStudyFileBytes, "study file"), r.source);
+  study.text = readInputFile(path, kMaxStudyFileBytes, "study file");
+  const toml::table root = parseToml(study.text, r.source);
   r.keys(root, "", {"materials", "perceptual", "lightings", "scenes", "settings", "analysis"});
 
   // Settings first: the analysis's reference names one of their panels.
@@ -328,7 +330,7 @@ StudyFile loadStudyFile(const fs::path& path, const fs::path& library) {
       r.fail(*scenes, "scenes", "give at least one, e.g. [scenes] preview = { builtin = \"preview\" }");
     for (const auto& [name, node] : *scenes->as_table()) study.scenes.push_back(readScene(r, std::string(name.str()), node));
   } else {
-    study.scenes.push_back({"preview", (dataDir() / "scenes/preview.gltf").string(), ""});
+    study.scenes.push_back({"preview", (dataDir() / "scenes/preview.gltf").string(), "", "preview"});
   }
   if (const std::uintmax_t sheets = std::uintmax_t(study.plan.materials.size()) * study.lightings.size() * study.scenes.size();
       sheets > kMaxStudySheets)

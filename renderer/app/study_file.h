@@ -27,10 +27,12 @@ struct StudyScene {
   std::string name;
   std::string gltf;    // absolute
   std::string camera;  // "" (the scene's first), a name, or "auto"
+  std::string builtin;  // "preview" or "sphere" for a scene glossy ships, else ""
 };
 
 struct StudyFile {
   std::filesystem::path path;
+  std::string text;  // its bytes as read and parsed: what the analysis keeps a copy of
   study::StudyPlan plan;
   std::vector<StudyLighting> lightings;  // in the plan's order
   std::vector<StudyScene> scenes;        // likewise

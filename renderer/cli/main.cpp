@@ -3,6 +3,7 @@
 #include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "renderer/util/build_info.h"
 #include "renderer/util/notes.h"
 #include "materials/params/material_file.h"
 #include "renderer/cli/command.h"
@@ -15,7 +16,7 @@ int main(int argc, char** argv) {
   using namespace glossy;
   removeTemporariesOnSignal();  // an interrupted write leaves no NAME.exr.tmp.* behind
   CLI::App app{"glossy " GLOSSY_VERSION ": render and compare glossy BRDF models (Löw et al. 2012) with measured data"};
-  app.set_version_flag("--version", std::string(GLOSSY_VERSION));
+  app.set_version_flag("--version", std::string(glossyVersion()) + " (" + std::string(glossyCommit()) + ")");
   app.require_subcommand(1);
   std::vector<cli::Command> commands = {cli::addErrorCommand(app),  cli::addEvalCommand(app),   cli::addFitCommand(app),
                                         cli::addImportCommand(app), cli::addListCommand(app),   cli::addMergeCommand(app),

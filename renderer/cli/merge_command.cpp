@@ -3,15 +3,15 @@
 //                                             a published fit never replaced unless --replace)
 //   glossy merge sheets DIR --csv F --json F  every sheet's error figures in one table
 // Both read and check everything before writing anything, and write atomically.
-#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
-#include "renderer/util/output_lock.h"
 #include "materials/core/text.h"
 #include "materials/params/material_file.h"
 #include "renderer/app/destination.h"
-#include "renderer/output/inside_folder.h"
 #include "renderer/cli/command.h"
-#include "renderer/report/sheet_record.h"
+#include "renderer/output/inside_folder.h"
+#include "renderer/sheet/sheet_record.h"
+#include "renderer/util/atomic_file.h"
+#include "renderer/util/output_lock.h"
 
 #include <nlohmann/json.hpp>
 

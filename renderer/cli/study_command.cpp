@@ -5,6 +5,7 @@
 #include "materials/core/input_file.h"
 #include "materials/core/text.h"
 #include "materials/params/material_file.h"
+#include "renderer/app/brdf_options.h"
 #include "renderer/app/destination.h"
 #include "renderer/app/image_memory.h"
 #include "renderer/app/shard.h"
@@ -15,6 +16,7 @@
 #include "renderer/study/study_analysis.h"
 #include "renderer/study/study_folder.h"
 #include "renderer/study/study_rows.h"
+#include "renderer/util/digest.h"
 #include "renderer/util/fresh_folder.h"
 #include "renderer/util/notes.h"
 #include "renderer/util/output_lock.h"
@@ -44,6 +46,49 @@ struct StudyItem {
   fs::path exr;  // absolute within OUT
   std::string tag;
 };
+
+// What the study's results stand on (renderer/study/study_provenance.h): the study file as read, its
+// settings, each lighting and scene with the digest of its contents (`environments`: each lighting's own
+// description; `sceneDigests`: each scene's), each material's measured data.
+study::StudyProvenance provenanceOf(const StudyFile& file, const SheetJob& job, const std::vector<MaterialFile>& materials,
+                                    const std::vector<std::string>& environments, const std::vector<std::string>& sceneDigests) {
+  study::StudyProvenance p;
+  p.studyFile = file.path.filename().string();
+  p.studyText = file.text;
+  const SheetSettings& s = job.settings;
+  p.settings = {s.width, s.height, s.spp, file.sppGiven, s.secondsPerPanel, s.targetError, s.seed, s.maxDepth, s.lightSamples,
+                s.bsdfSamples, job.exposure, panelList(s.panels), job.half, file.resamples, file.referenceModel};
+  for (size_t l = 0; l < file.lightings.size(); ++l) {
+    const StudyLighting& lighting = file.lightings[l];
+    study::LightingProvenance lp;
+    lp.name = lighting.name;
+    lp.kind = !lighting.env.empty() ? "map" : (!lighting.envConstant.empty() ? "constant" : "sky");
+    lp.description = environments[l];
+    if (!lighting.env.empty()) {
+      lp.map = fs::path(lighting.env).filename().string();
+      lp.digest = fileDigest(lighting.env, "environment map");
+    }
+    lp.rotate = lighting.rotate;
+    p.lightings.push_back(lp);
+  }
+  for (size_t k = 0; k < file.scenes.size(); ++k) {
+    const StudyScene& scene = file.scenes[k];
+    p.scenes.push_back({scene.name, scene.builtin, fs::path(scene.gltf).filename().string(), scene.camera, sceneDigests[k]});
+  }
+  for (size_t m = 0; m < file.plan.materials.size(); ++m) {
+    study::MaterialProvenance mp{file.plan.materials[m].name, file.plan.materials[m].database, "none", "", ""};
+    if (const auto path = resolveMeasured(materials[m], job.merlDir)) {
+      mp.measuredSource = measuredDatabase(*path);
+      mp.measured = mp.measuredSource.find("(NBRDF reconstruction)") != std::string::npos ? "NBRDF reconstruction" : "MERL table";
+      std::error_code ec;
+      // MerlTable::load reads NAME.binary.xz for an absent NAME.binary, as the sheets' settings record it.
+      const fs::path data = fs::exists(*path, ec) || path->extension() == ".xz" ? *path : fs::path(path->string() + ".xz");
+      mp.measuredDigest = fileDigest(data, "measured data");
+    }
+    p.materials.push_back(mp);
+  }
+  return p;
+}
 
 // "40 s", "12 min", "3.5 h".
 std::string durationText(double seconds) {
@@ -107,15 +152,18 @@ int runStudy(const StudyOptions& o) {
   // holding a scene and an environment per pair — a study of many lightings would not fit in memory.
   const double aspect = double(job.settings.width) / double(job.settings.height);
   std::vector<std::string> inputs(plan.scenes.size() * plan.lightings.size());
+  std::vector<std::string> environments, sceneDigests;  // for the results' provenance
   {
     std::vector<SceneDescription> scenes;  // each one's file and digest, not its geometry
     for (size_t s = 0; s < plan.scenes.size(); ++s) {
       SceneDescription scene = loadGltf(file.sceneOptions(s, 0).scenePath());
       (void)file.sceneOptions(s, 0).cameraOf(scene, aspect);
       scenes.push_back({scene.source, scene.digest, {}, {}, {}, {}});
+      sceneDigests.push_back(scene.digest);
     }
     for (size_t l = 0; l < plan.lightings.size(); ++l) {
       const Environment environment = file.sceneOptions(0, l).environment();
+      environments.push_back(environment.description());
       for (size_t s = 0; s < plan.scenes.size(); ++s)
         inputs[s * plan.lightings.size() + l] = file.sceneOptions(s, l).inputs(scenes[s], environment);
     }
@@ -192,6 +240,7 @@ int runStudy(const StudyOptions& o) {
   analysis.resamples = file.resamples;
   analysis.perceptualDir = plan.perceptualDir;
   analysis.referenceModel = file.referenceModel;
+  analysis.provenance = provenanceOf(file, job, materials, environments, sceneDigests);
   const auto analysisStart = std::chrono::steady_clock::now();
   analysis.progress = [&](int step, int steps, const std::string& what) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - analysisStart).count();

@@ -3,7 +3,7 @@
 #include "materials/core/input_error.h"
 #include "materials/core/input_file.h"
 #include "materials/core/text.h"
-#include "renderer/lights/exr_preflight.h"
+#include "renderer/image/exr_preflight.h"
 
 namespace glossy {
 

@@ -1,6 +1,6 @@
 // Opening an image file to read, the one way every reader of glossy does it: the path must be a regular
 // file (OpenImageIO would wait on a FIFO for ever and read a device without end), an OpenEXR's headers are
-// checked first (renderer/lights/exr_preflight.h), and only the reader of the file's extension is tried —
+// checked first (renderer/image/exr_preflight.h), and only the reader of the file's extension is tried —
 // ImageInput::open hands a file its reader refuses to every other format OpenImageIO has (video and
 // camera-raw decoders among them), each a parser of hostile bytes and some slow to give up.
 #pragma once

@@ -10,13 +10,13 @@
 #include "materials/core/input_file.h"
 #include "materials/core/text.h"
 #include "materials/models/warp.h"
-#include "renderer/lights/bilinear_patch.h"
-#include "renderer/lights/nested_grid.h"
 #include "materials/sampling/unit_interval.h"
+#include "renderer/image/exr_preflight.h"
+#include "renderer/lights/bilinear_patch.h"
 #include "renderer/lights/cosine_bins.h"
 #include "renderer/lights/default_sky.h"
-#include "renderer/lights/exr_preflight.h"
 #include "renderer/lights/latlong.h"
+#include "renderer/lights/nested_grid.h"
 #include "renderer/util/memory.h"
 
 #include <OpenImageIO/imageio.h>

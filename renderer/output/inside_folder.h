@@ -1,5 +1,5 @@
-// What stays inside a folder: the one rule by which the readers of input folders (renderer/report/
-// input_folder.h) and the writers of output folders keep to the folder they were given. A symlink is
+// What stays inside a folder: the one rule by which the readers of input folders (input_folder.h)
+// and the writers of output folders keep to the folder they were given. A symlink is
 // followed only while it stays inside; one leading out would make a reader publish any file the user can
 // read, and a writer write, and overwrite, files anywhere (`OUT/analysis -> ~/thesis`).
 #pragma once

@@ -5,8 +5,6 @@
 #include "renderer/report/site_layout.h"
 
 #include <cmath>
-#include <filesystem>
-#include <sstream>
 
 namespace glossy::report {
 
@@ -49,17 +47,6 @@ std::string pageStart(const std::string& title, const std::string& root) {
 
 std::string pageEnd(const std::string& footerHtml) {
   return "<footer class=\"site\"><p>" + footerHtml + "</p></footer>\n</body>\n</html>\n";
-}
-
-std::string withoutFolders(const std::string& text) {
-  std::istringstream in(text);
-  std::string word, out;
-  while (in >> word) {
-    if (word.find('/') != std::string::npos)
-      if (const std::string file = std::filesystem::path(word).filename().string(); !file.empty()) word = file;
-    out += (out.empty() ? "" : " ") + word;
-  }
-  return out;
 }
 
 }  // namespace glossy::report

@@ -21,11 +21,6 @@ std::string shortNumber(const std::optional<double>& v);
 // Full precision for data-value attributes; "" when absent (sorted last).
 std::string sortValue(const std::optional<double>& v);
 
-// A source or scene as a published site shows it: every word that is a path cut to its file name
-// ("MERL /home/me/merl/chrome.binary" -> "MERL chrome.binary"), so the site carries no local folders and
-// two checkouts of one scene read alike.
-std::string withoutFolders(const std::string& text);
-
 // The opening of every page up to <body>: its title, the style sheet and script found through `root`
 // (the relative path to the site's top, "" or "../../"), and no favicon request (an empty data: icon).
 std::string pageStart(const std::string& title, const std::string& root);

@@ -4,6 +4,7 @@
 #include "renderer/report/html_text.h"
 
 #include <algorithm>
+#include <cctype>
 #include <sstream>
 #include <vector>
 
@@ -17,12 +18,19 @@ std::string_view trimmed(std::string_view s) {
   return s.substr(begin, s.find_last_not_of(" \t") - begin + 1);
 }
 
-// Inline markup: `code` first (nothing inside it is markup), then **strong** and *em* / _em_ in the text
-// between code spans. An opener without its closer is text.
+// Inline markup: `code` first (nothing inside it is markup), then backslash escapes, **strong** and *em* /
+// _em_ in the text between code spans. An opener without its closer is text.
 std::string emphasis(std::string_view text) {
   std::string out;
   size_t i = 0;
   while (i < text.size()) {
+    // A backslash before punctuation is that character as text, as in CommonMark: "r\\*" is r*, never
+    // the start of emphasis.
+    if (text[i] == '\\' && i + 1 < text.size() && std::ispunct(static_cast<unsigned char>(text[i + 1]))) {
+      out += escapeHtml(text.substr(i + 1, 1));
+      i += 2;
+      continue;
+    }
     const bool strong = text.compare(i, 2, "**") == 0;
     const char mark = text[i];
     if (strong || mark == '*' || mark == '_') {
@@ -38,7 +46,7 @@ std::string emphasis(std::string_view text) {
         continue;
       }
     }
-    const size_t next = std::min(text.find_first_of("*_", i + 1), text.size());
+    const size_t next = std::min(text.find_first_of("*_\\", i + 1), text.size());
     out += escapeHtml(text.substr(i, next - i));
     i = next;
   }

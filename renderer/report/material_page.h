@@ -4,7 +4,7 @@
 #pragma once
 
 #include "renderer/report/plot_index.h"
-#include "renderer/report/sheet_record.h"
+#include "renderer/sheet/sheet_record.h"
 
 #include <string>
 

@@ -3,7 +3,7 @@
 // over the materials that have it.
 #pragma once
 
-#include "renderer/report/sheet_record.h"
+#include "renderer/sheet/sheet_record.h"
 
 #include <optional>
 #include <string>

@@ -3,7 +3,7 @@
 
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
-#include "renderer/report/input_folder.h"
+#include "renderer/output/input_folder.h"
 
 #include <nlohmann/json.hpp>
 

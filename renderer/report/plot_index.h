@@ -2,7 +2,8 @@
 // ({"material", "measured", "channel", "figures": [{"kind", "title", "caption", "svg", "png", "csv"}]}) with
 // the files beside it. The report copies the files into the site, so every file name is checked to be a
 // plain name of an existing file in that folder: a plots.json cannot make the report read or write
-// anywhere else. Every file is a regular file inside PLOTS_DIR (input_folder.h).
+// anywhere else. Every file is a regular file inside PLOTS_DIR
+// (renderer/output/input_folder.h).
 #pragma once
 
 #include <filesystem>

@@ -1,24 +1,26 @@
 // Building the report site (report_site.h).
 #include "renderer/report/report_site.h"
 
-#include "renderer/util/atomic_file.h"
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "materials/params/material_name.h"
+#include "renderer/output/input_folder.h"
 #include "renderer/output/owned_folder.h"
 #include "renderer/plot/plot_output.h"
 #include "renderer/report/index_page.h"
-#include "renderer/report/input_folder.h"
 #include "renderer/report/material_page.h"
 #include "renderer/report/plot_index.h"
 #include "renderer/report/plot_picture.h"
 #include "renderer/report/sheet_images.h"
-#include "renderer/report/sheet_record.h"
 #include "renderer/report/site_assets.h"
 #include "renderer/report/site_layout.h"
 #include "renderer/report/study_page.h"
+#include "renderer/sheet/sheet_record.h"
 #include "renderer/study/study_plan.h"
 #include "renderer/study/study_rows.h"
-#include "materials/params/material_name.h"
+#include "renderer/util/atomic_file.h"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <map>
@@ -165,6 +167,15 @@ StudyFiles studyFiles(const fs::path& analysis) {
       out.others.push_back(f);
     if (p.stem() == "summary" && (ext == ".txt" || ext == ".md"))
       out.summary = readInputFile(analysis, analysis / p, kMaxPlotFileBytes, "summary");
+  }
+  // The figures' captions, as the analysis wrote them; an analysis without them keeps the page's own.
+  if (names.count("results.json")) {
+    const nlohmann::json results =
+        nlohmann::json::parse(readInputFile(analysis, analysis / "results.json", kMaxPlotFileBytes, "study results"), nullptr, false);
+    if (results.is_object() && results.contains("figures") && results["figures"].is_array())
+      for (const nlohmann::json& f : results["figures"])
+        if (f.is_object() && f.contains("name") && f["name"].is_string() && f.contains("caption") && f["caption"].is_string())
+          out.captions[f["name"].get<std::string>()] = f["caption"].get<std::string>();
   }
   return out;
 }

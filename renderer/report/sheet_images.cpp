@@ -5,8 +5,8 @@
 #include "materials/core/text.h"
 #include "renderer/image/exr_image.h"
 #include "renderer/image/image_input.h"
-#include "renderer/report/sheet_record.h"
 #include "renderer/report/site_layout.h"
+#include "renderer/sheet/sheet_record.h"
 
 #include <OpenImageIO/imageio.h>
 

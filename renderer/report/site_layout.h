@@ -5,7 +5,8 @@
 //       panel-LAYER.png, sheet-lower.png (sheet_images.h), plots/FILE
 //   SITE/.glossy-manifest                 what glossy wrote (renderer/output/owned_folder.h)
 // Material pages sit in a folder of their own so that no material name ("index.html", "assets") can
-// collide with the site's own files. NAME and LAYER are checked plain names (sheet_record.h).
+// collide with the site's own files. NAME and LAYER are checked plain names
+// (renderer/sheet/sheet_record.h).
 #pragma once
 
 #include <string>

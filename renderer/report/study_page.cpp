@@ -25,8 +25,8 @@ std::string numberCell(const std::optional<double>& v, const std::string& extra 
 
 std::string list(const std::vector<std::string>& names) { return joined(names, ", ", escapeHtml); }
 
-// What a figure of the analysis shows (docs/study.md, "The files"), by its file's stem; a figure the page
-// does not know is captioned by its file name.
+// What a figure of the analysis shows (docs/study.md, "The files"), by its file's stem, for an analysis whose
+// results.json gives no caption; a figure the page does not know is captioned by its file name.
 std::string figureCaption(const std::string& file) {
   static const std::map<std::string, std::string> kCaptions = {
       {"error_curves", "Relative RMSE r* per material, the materials sorted by the reference model's r* (log axis)"},
@@ -74,7 +74,8 @@ std::string studyPage(const study::StudyPlan& plan, const std::vector<study::Stu
     h << "<h2 id=\"figures-heading\">Figures</h2>\n";
     for (const std::string& f : files.figures) {
       const std::string src = escapeHtml(study_layout::analysisFile(f));
-      const std::string caption = figureCaption(f);
+      const auto known = files.captions.find(std::filesystem::path(f).stem().string());
+      const std::string caption = known != files.captions.end() ? known->second : figureCaption(f);
       h << "<figure class=\"study-figure\"><a href=\"" << src << "\"><img src=\"" << src << "\" alt=\"" << escapeHtml(caption)
         << "\" loading=\"lazy\" style=\"max-width:100%\"></a><figcaption>" << escapeHtml(caption) << " (<code>" << escapeHtml(f)
         << "</code>)</figcaption></figure>\n";

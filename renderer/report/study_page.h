@@ -6,6 +6,7 @@
 #include "renderer/study/study_plan.h"
 #include "renderer/study/study_row.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct StudyFiles {
   std::string summary;              // the text of its summary file, "" when it has none
   std::vector<std::string> figures;  // shown as pictures (SVG, else PNG of the same stem)
   std::vector<std::string> others;   // linked (CSV, JSON, LaTeX, the figures' other formats)
+  std::map<std::string, std::string> captions;  // by figure stem, as results.json gives them
 };
 
 std::string studyPage(const study::StudyPlan& plan, const std::vector<study::StudyRow>& rows, const StudyFiles& files);

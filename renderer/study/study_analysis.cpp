@@ -11,6 +11,11 @@
 #include "renderer/sheet/comparison_grid.h"
 #include "renderer/study/perceptual.h"
 #include "renderer/study/study_figures.h"
+#include "renderer/study/study_intervals.h"
+#include "renderer/study/study_latex.h"
+#include "renderer/study/study_lighting.h"
+#include "renderer/study/study_methods.h"
+#include "renderer/study/study_provenance.h"
 #include "renderer/study/study_tables.h"
 #include "renderer/study/study_statistics.h"
 #include "renderer/util/atomic_file.h"
@@ -34,36 +39,7 @@ using Opt = std::optional<double>;
 
 constexpr double kAlpha = 0.05;
 
-// A bootstrap's own seed: the study's seed mixed with the statistic's name, so that adding a statistic
-// leaves the others' intervals unchanged.
-std::uint64_t seedFor(std::uint64_t seed, const std::string& key) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : key) h = (h ^ c) * 1099511628211ull;
-  std::uint64_t z = seed + h + 0x9e3779b97f4a7c15ull;  // splitmix64's finaliser
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
-
 Json num(const Opt& v) { return v ? Json(*v) : Json(nullptr); }
-
-Json intervalJson(const Interval& i) {
-  Json j;
-  j["estimate"] = num(i.estimate);
-  j["lo"] = num(i.lo);
-  j["hi"] = num(i.hi);
-  j["resamples"] = i.resamples;
-  j["undefinedResamples"] = i.undefined;
-  if (!i.reason.empty()) j["reason"] = i.reason;
-  return j;
-}
-
-std::string intervalText(const Interval& i, const char* f = "%.4g") {
-  if (!i.estimate) return "undefined (" + i.reason + ")";
-  std::string s = formatted(f, *i.estimate);
-  if (i.lo && i.hi) s += " [" + formatted(f, *i.lo) + ", " + formatted(f, *i.hi) + "]";
-  return s;
-}
 
 void checkFinite(const StudyRow& r, const Opt& v, const char* what) {
   if (v && !std::isfinite(*v))
@@ -281,6 +257,7 @@ Json perMaterial(const Study& s) {
 struct RankTests {
   std::optional<FriedmanResult> friedman;
   std::string friedmanReason;
+  bool friedmanTested = false;  // the mean ranks stand on any number of materials, the test on kTestMinMaterials
   std::vector<std::size_t> complete;  // materials with every model
   std::vector<std::vector<Opt>> pHolm;  // [a][b]
   std::vector<std::vector<bool>> different;
@@ -302,8 +279,13 @@ RankTests rankTests(const Study& s) {
     blocks.push_back(b);
   }
   t.friedman = friedman(blocks);
-  if (!t.friedman)
-    t.friedmanReason = nk < 2 ? "fewer than 2 models" : (blocks.size() < 2 ? "fewer than 2 materials with every model" : "every material ties every model");
+  if (nk < 2)
+    t.friedmanReason = "fewer than 2 models";
+  else if (blocks.size() < kTestMinMaterials)
+    t.friedmanReason = tooFewForTest(blocks.size());
+  else if (!t.friedman)
+    t.friedmanReason = "every material ties every model";
+  t.friedmanTested = t.friedman && blocks.size() >= kTestMinMaterials;
   t.pHolm.assign(nk, std::vector<Opt>(nk));
   t.different.assign(nk, std::vector<bool>(nk, false));
   std::vector<std::pair<std::size_t, std::size_t>> tested;
@@ -392,16 +374,16 @@ Json pairwiseTable(const Study& s, const std::vector<std::size_t>& materials, co
   for (std::size_t a = 0; a < s.models.size(); ++a)
     for (std::size_t b = 0; b < s.models.size(); ++b) {
       if (a == b) continue;
-      const auto iv = bootstrap(
+      int n = 0;
+      for (std::size_t i : materials) n += s.rrmse[i][a] && s.rrmse[i][b] ? 1 : 0;
+      const auto iv = materialInterval(
           materials.size(),
           [&](const std::vector<std::size_t>& idx) {
             std::vector<std::size_t> drawn;
             for (std::size_t i : idx) drawn.push_back(materials[i]);
             return closerShare(s, a, b, drawn);
           },
-          o.resamples, seedFor(o.seed, "closer/" + key + "/" + s.models[a] + "/" + s.models[b]));
-      int n = 0;
-      for (std::size_t i : materials) n += s.rrmse[i][a] && s.rrmse[i][b] ? 1 : 0;
+          o.resamples, seedFor(o.seed, "closer/" + key + "/" + s.models[a] + "/" + s.models[b]), std::size_t(n));
       Json j;
       j["x"] = s.models[a];
       j["y"] = s.models[b];
@@ -432,9 +414,9 @@ Json perModel(const Study& s, const RankTests& t, const AnalysisOptions& o, std:
       for (std::size_t i : idx) v.push_back(*s.rrmse[have[i]][k]);
       return v;
     };
-    const auto mean = bootstrap(have.size(), [&](const auto& idx) { return meanOf(values(idx)); }, o.resamples,
+    const auto mean = materialInterval(have.size(), [&](const auto& idx) { return meanOf(values(idx)); }, o.resamples,
                                 seedFor(o.seed, "mean/" + s.models[k]));
-    const auto median = bootstrap(have.size(), [&](const auto& idx) { return medianOf(values(idx)); }, o.resamples,
+    const auto median = materialInterval(have.size(), [&](const auto& idx) { return medianOf(values(idx)); }, o.resamples,
                                   seedFor(o.seed, "median/" + s.models[k]));
     meanIv.push_back(mean);
     Json j;
@@ -502,7 +484,7 @@ Json brdfVsImage(const Study& s, const AnalysisOptions& o, Json& differences, st
   const Named images[] = {{"rrmse", &Study::rrmse}, {"flip", &Study::flip}};
   std::vector<std::size_t> all(s.materials.size());
   std::iota(all.begin(), all.end(), 0);
-  std::map<std::string, Interval> pooledRho;
+  std::map<std::string, Interval> pooledRho, withinRho;
   for (const auto& img : images)
     for (const auto& br : brdfs) {
       const std::string key = std::string(br.name) + "/" + img.name;
@@ -516,7 +498,7 @@ Json brdfVsImage(const Study& s, const AnalysisOptions& o, Json& differences, st
       for (const auto& named : {std::pair<const char*, Corr>{"spearman", spearman}, {"kendallTauB", kendallTauB}}) {
         const char* const cname = named.first;
         const Corr corr = named.second;
-        const auto iv = bootstrap(
+        const auto iv = materialInterval(
             all.size(),
             [&](const std::vector<std::size_t>& idx) {
               const Pair p = pooled(s, br.column, img.column, idx);
@@ -533,8 +515,10 @@ Json brdfVsImage(const Study& s, const AnalysisOptions& o, Json& differences, st
           within[i] = corr(p.x, p.y);
           defined += within[i] ? 1 : 0;
         }
-        const auto wiv = bootstrap(all.size(), meanOfDrawn(within), o.resamples, seedFor(o.seed, "within/" + key + "/" + cname));
+        const auto wiv = materialInterval(all.size(), meanOfDrawn(within), o.resamples, seedFor(o.seed, "within/" + key + "/" + cname),
+                                          std::size_t(defined));
         jw[cname] = intervalJson(wiv);
+        if (std::string(cname) == "spearman") withinRho[key] = wiv;
         jw["materials"] = defined;
         jw["materialsUndefined"] = int(s.materials.size()) - defined;
       }
@@ -543,17 +527,20 @@ Json brdfVsImage(const Study& s, const AnalysisOptions& o, Json& differences, st
       std::vector<Opt> agrees(s.materials.size());
       int n = 0;
       for (std::size_t i = 0; i < s.materials.size(); ++i) n += (agrees[i] = bestAgrees(s, br.column, img.column, i)) ? 1 : 0;
-      const auto share = bootstrap(all.size(), meanOfDrawn(agrees), o.resamples, seedFor(o.seed, "best/" + key));
+      const auto share = materialInterval(all.size(), meanOfDrawn(agrees), o.resamples, seedFor(o.seed, "best/" + key), std::size_t(n));
       Json jb;
       jb["materials"] = n;
       jb["share"] = intervalJson(share);
       j["bestIsImageBest"] = jb;
       out.push_back(j);
     }
-  // Whether E2 ranks the fits more like the image than E1 does: the difference of the pooled ρ, both
-  // computed on the same resampled materials (a paired interval, not two intervals compared by eye).
+  // Whether E2 ranks the fits more like the image than E1 does, asked two ways, each a paired interval
+  // (both ρ on the same resampled materials, not two intervals compared by eye). Pooled: the difference
+  // of the ρ over every (material, model) pair — across materials, where a material's overall level
+  // dominates. Within: each material's ρ across its fits, E2's minus E1's, then the mean over materials —
+  // Löw et al.'s question, whether the metric ranks one material's fits as the image does.
   for (const auto& img : images) {
-    const auto diff = bootstrap(
+    const auto diff = materialInterval(
         all.size(),
         [&](const std::vector<std::size_t>& idx) -> Opt {
           const Pair p1 = pooled(s, &Study::e1, img.column, idx), p2 = pooled(s, &Study::e2, img.column, idx);
@@ -562,20 +549,37 @@ Json brdfVsImage(const Study& s, const AnalysisOptions& o, Json& differences, st
           return *b - *a;
         },
         o.resamples, seedFor(o.seed, std::string("e2-e1/") + img.name));
+    std::vector<Opt> withinDiff(s.materials.size());
+    int defined = 0;
+    for (std::size_t i = 0; i < s.materials.size(); ++i) {
+      const Pair p1 = pooled(s, &Study::e1, img.column, {i}), p2 = pooled(s, &Study::e2, img.column, {i});
+      const Opt a = spearman(p1.x, p1.y), b = spearman(p2.x, p2.y);
+      if (a && b) withinDiff[i] = *b - *a;
+      defined += withinDiff[i] ? 1 : 0;
+    }
+    const auto within = materialInterval(all.size(), meanOfDrawn(withinDiff), o.resamples,
+                                         seedFor(o.seed, std::string("e2-e1/within/") + img.name), std::size_t(defined));
     Json j;
     j["image"] = img.name;
     j["pooledSpearman"] = intervalJson(diff);
+    Json jw = intervalJson(within);
+    jw["materials"] = defined;
+    jw["materialsUndefined"] = int(s.materials.size()) - defined;
+    j["withinMaterialSpearman"] = jw;
     differences.push_back(j);
     if (std::string(img.name) != "rrmse") continue;
-    headline = "BRDF error against image error (pooled Spearman ρ with rRMSE): E1 " + intervalText(pooledRho["E1/rrmse"], "%.3f") +
-               ", E2 " + intervalText(pooledRho["E2/rrmse"], "%.3f") + "; E2 − E1 " + intervalText(diff, "%.3f");
-    if (diff.lo && diff.hi && *diff.lo > 0.0) {
-      headline += " — E2 predicts image error better than E1.";
-    } else if (diff.lo && diff.hi && *diff.hi < 0.0) {
-      headline += " — E1 predicts image error better than E2.";
-    } else {
-      headline += " — no difference between E1 and E2 shown.";
-    }
+    const auto verdict = [](const Interval& d) -> std::string {
+      if (!d.lo || !d.hi) return d.estimate ? " — not decided (no interval)." : " — not decided.";
+      if (*d.lo > 0.0) return " — E2 predicts image error better than E1.";
+      if (*d.hi < 0.0) return " — E1 predicts image error better than E2.";
+      return " — no difference between E1 and E2 shown.";
+    };
+    headline = "Does E2 predict image error (rRMSE) better than E1? Spearman ρ, two questions:\n"
+               "  Across materials (pooled over every material and model): E1 " + intervalText(pooledRho["E1/rrmse"], "%.3f") +
+               ", E2 " + intervalText(pooledRho["E2/rrmse"], "%.3f") + "; E2 − E1 " + intervalText(diff, "%.3f") + verdict(diff) +
+               "\n  Across a material's fits (within each material, then the mean; Löw et al.'s question): E1 " +
+               intervalText(withinRho["E1/rrmse"], "%.3f") + ", E2 " + intervalText(withinRho["E2/rrmse"], "%.3f") +
+               "; E2 − E1 " + intervalText(within, "%.3f") + " over " + std::to_string(defined) + " materials" + verdict(within);
   }
   return out;
 }
@@ -661,7 +665,7 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
       for (const auto& named : {std::pair<const char*, Corr>{"spearman", spearman}, {"kendallTauB", kendallTauB}}) {
         const char* const cname = named.first;
         const Corr corr = named.second;
-        const auto iv = bootstrap(
+        const auto iv = materialInterval(
             unit.size(),
             [&](const std::vector<std::size_t>& idx) {
               std::vector<double> x, y;
@@ -687,8 +691,10 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, std::string& headli
     headline += (headline.empty() ? "" : "\n") + std::string("Against people (") + pairName + ", " + std::to_string(mats.size()) +
                 " MERL materials): " +
                 (best.empty() ? std::string("no figure correlates (undefined)")
-                              : "the figure that agrees best with the perceived distance is " + best + ", Spearman ρ " +
-                                    intervalText(bestIv, "%.3f"));
+                 : bestIv.lo  ? "the figure that agrees best with the perceived distance is " + best + ", Spearman ρ " +
+                                   intervalText(bestIv, "%.3f")
+                              // Without an interval the highest ρ is a description of these materials, not a finding.
+                              : "the highest Spearman ρ with the perceived distance is " + best + "'s, " + intervalText(bestIv, "%.3f"));
     fits.push_back(jf);
   }
   out["fits"] = fits;
@@ -701,17 +707,16 @@ std::vector<ModelStyle> modelStyles(const Study& s) {
   std::vector<ModelStyle> out;
   std::set<std::string> used;
   for (std::size_t k = 0; k < s.models.size(); ++k) {
-    ModelStyle m{s.models[k], {}};
+    ModelStyle m{s.models[k], {}, ""};
     // The sheet's colour for the fit (renderer/sheet/comparison_grid.h), so figures match the sheets.
     const std::string fit = s.fitOf[k].substr(0, s.fitOf[k].find(':', s.fitOf[k].find(':') + 1));
     for (const GridFit& g : gridFits())
       if (g.fit == fit) m.style.colour = std::string(g.colour);
-    // Dashed: glossy's own fits only, as the sheets draw them.
-    const bool glossyOnly = s.sourcesOf[k].size() == 1 && s.sourcesOf[k].count("glossy");
-    const std::string key = glossyOnly ? "d" : "";
-    if (m.style.colour == "#000000" || used.count(m.style.colour + key)) m.style.colour = kPalette[k % std::size(kPalette)];
-    if (glossyOnly) m.style.dash = "6 3";
-    used.insert(m.style.colour + key);
+    // Solid lines throughout (a dashed curve of many materials reads as gaps); whose fit it is, the legend says.
+    if (s.sourcesOf[k].size() > 1) m.note = "published and glossy's fits";
+    else if (s.sourcesOf[k].count("glossy")) m.note = "glossy's fit";
+    if (m.style.colour == "#000000" || used.count(m.style.colour)) m.style.colour = kPalette[k % std::size(kPalette)];
+    used.insert(m.style.colour);
     out.push_back(m);
   }
   return out;
@@ -739,6 +744,10 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
 
   Json results;
   results["generator"] = "glossy study";
+  results["glossy"] = glossyJson();
+  if (options.provenance) results["provenance"] = provenanceJson(*options.provenance);
+  else results["provenance"] = Json{{"reason", "the rows were analysed without their study file"}};
+  results["fits"] = fitsJson(s.all);
   results["seed"] = options.seed;
   results["resamples"] = options.resamples;
   results["interval"] = "95 % percentile bootstrap, materials resampled with their sheets";
@@ -752,14 +761,14 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   results["counts"] = counts;
   results["materials"] = perMaterial(s);
 
-  step(2, "per-model intervals");
+  step(2, "per-model and per-lighting intervals");
   std::vector<Interval> meanIv;
   const Json models = perModel(s, t, options, meanIv);
   results["models"] = models;
   Json jf;
   jf["materials"] = int(t.complete.size());
   jf["materialsLeftOut"] = int(s.materials.size() - t.complete.size());
-  if (t.friedman) {
+  if (t.friedmanTested) {
     jf["chiSquare"] = t.friedman->chiSquare;
     jf["df"] = t.friedman->treatments - 1;
     jf["p"] = t.friedman->pChiSquare;
@@ -786,6 +795,10 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   }
   jw["cliques"] = cliques;
   results["wilcoxon"] = jw;
+  std::vector<std::string> rankOrder;
+  for (std::size_t k : t.rankOrder) rankOrder.push_back(s.models[k]);
+  const LightingAnalysis lighting = analyseLighting(s.used, rankOrder, options.resamples, options.seed);
+  results["lighting"] = lighting.json;
 
   step(3, "pairwise shares of materials");
   std::vector<std::size_t> all(s.materials.size());
@@ -823,7 +836,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
                std::to_string(m["sheets"].get<int>()) + " sheets, tied on " + std::to_string(m["tied"].get<int>()) +
                "; mean rank " + (m["meanRank"].is_null() ? std::string("—") : formatted("%.2f", m["meanRank"].get<double>())) +
                "; mean rRMSE " + intervalCell(m["meanRrmse"]) + "\n";
-  if (t.friedman) {
+  if (t.friedmanTested) {
     summary += formatted("Friedman χ² = %.3f (df %d), p = %.3g", t.friedman->chiSquare, t.friedman->treatments - 1, t.friedman->pChiSquare);
     if (t.friedman->pF) summary += formatted("; Iman–Davenport F p = %.3g", *t.friedman->pF);
     summary += " over " + std::to_string(t.complete.size()) + " materials.\n";
@@ -832,7 +845,12 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   } else {
     summary += "Friedman test: none (" + t.friedmanReason + ").\n";
   }
+  summary += lighting.headline;
   summary += claimHeadline + "\n";
+  if (s.materials.size() < kIntervalMinMaterials)
+    summary += "A small sample: no interval (" + tooFewForInterval(s.materials.size()) + ")" +
+               (s.materials.size() < kTestMinMaterials ? "; no test (" + tooFewForTest(s.materials.size()) + ")" : std::string()) +
+               " — docs/study.md, \"Small samples\", says why.\n";
   if (!peopleHeadline.empty()) summary += peopleHeadline + "\n";
   results["summary"] = summary;
 
@@ -842,6 +860,11 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
       {"error_curves", errorCurvesSvg(table, options.referenceModel)},
       {"heat_map", heatMapSvg(table)},
   };
+  // Each figure's caption by its name, for results.json, summary.md and the report page.
+  std::map<std::string, std::string> captions = {{"error_curves", errorCurvesCaption(table, options.referenceModel)},
+                                                 {"heat_map", heatMapCaption()},
+                                                 {"brdf_vs_image", brdfVsImageCaption()},
+                                                 {"perceptual", perceptualCaption()}};
   {
     std::vector<CdModel> cd;
     if (t.friedman)
@@ -849,6 +872,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
     std::string test = t.methods.empty() ? std::string("no Wilcoxon test") : *t.methods.begin();
     if (t.methods.size() > 1) test = "exact or normal approximation";
     svgs.emplace_back("critical_difference", criticalDifferenceSvg(cd, t.cliques, int(t.complete.size()), test));
+    captions["critical_difference"] = criticalDifferenceCaption(int(t.complete.size()), test);
   }
   svgs.emplace_back("brdf_vs_image", brdfVsImageSvg(table));
   if (!options.perceptualDir.empty())
@@ -871,18 +895,36 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
       plot::svgToPng(*rsvg, folder / (name + ".svg"), folder / (name + ".png"), 1.5);
       result.files.emplace_back(name + ".png");
     }
-    figures.push_back({{"name", name}, {"svg", name + ".svg"}, {"png", rsvg ? Json(name + ".png") : Json(nullptr)}});
+    figures.push_back({{"name", name},
+                       {"svg", name + ".svg"},
+                       {"png", rsvg ? Json(name + ".png") : Json(nullptr)},
+                       {"caption", captions.count(name) ? Json(captions.at(name)) : Json(nullptr)}});
   }
   results["figures"] = figures;
   write("results.json", dump(results));
-  write("models.tex", modelsTex(models, int(s.materials.size())));
-  std::string md = "# Study summary\n\n```\n" + summary + "```\n\nEvery statistic with its interval: `results.json`; "
-                   "the rows: `rows.csv`, `rows.json`; per-model table: `models.tex`; figures: ";
+  write("models.tex", modelsTex(results));
+  write("lighting.tex", lighting.tex);
+  write("methods.tex", methodsTex(results));
+  // The study file as it was read: the settings of these results, beside them.
+  if (options.provenance && !options.provenance->studyText.empty()) write(kStudyFileCopy, options.provenance->studyText);
+  std::string md = "# Study summary\n\n```\n" + summary + "```\n\n" + lighting.markdown +
+                   "\nEvery statistic with its interval: `results.json`; "
+                   "the rows: `rows.csv`, `rows.json`; per-model tables: `models.tex`; per-lighting table: `lighting.tex`; "
+                   "methods: `methods.tex`" +
+                   std::string(options.provenance && !options.provenance->studyText.empty() ? "; the study file: `study.toml`" : "") +
+                   "; figures: ";
   for (std::size_t i = 0; i < svgs.size(); ++i) md += (i ? ", " : "") + std::string("`") + svgs[i].first + ".svg`";
-  md += ".\n";
+  md += ".\n\n## Figures\n\n";
+  for (const auto& [name, svg] : svgs)
+    if (captions.count(name)) {
+      std::string text;  // "r*" is not Markdown's emphasis
+      for (char c : captions.at(name)) text += c == '*' ? std::string("\\*") : std::string(1, c);
+      md += "- `" + name + ".svg`: " + text + "\n";
+    }
   if (!options.perceptualDir.empty())
     md += "\nPerceived distances: Lavoué, Bonneel, Farrugia, Soler, \"Perceptual quality of BRDF approximations: dataset and "
           "metrics\", Computer Graphics Forum 40(2), 2021.\n";
+  md += "\n## Methods\n\n" + methodsMarkdown(results);
   write("summary.md", md);
   return result;
 }

@@ -5,11 +5,13 @@
 // command, its tests and Python see the same numbers.
 #pragma once
 
+#include "renderer/study/study_provenance.h"
 #include "renderer/study/study_row.h"
 
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -23,6 +25,10 @@ struct AnalysisOptions {
   std::filesystem::path perceptualDir;
   // The label the per-material error curves are sorted by.
   std::string referenceModel = "Microfacet E2";
+  // What the rows stand on (the study file, its settings, lightings, scenes, measured data), recorded in
+  // results.json and the methods; the study file is kept as study.toml beside them. Absent: rows analysed
+  // on their own, and the methods say only what the rows do.
+  std::optional<StudyProvenance> provenance;
   // Told as each step starts (`step` of `steps`, from 1, and what it computes), for a progress line: the
   // bootstraps take minutes on a large study. Unset: nothing is told.
   std::function<void(int step, int steps, const std::string& what)> progress;

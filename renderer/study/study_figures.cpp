@@ -39,7 +39,7 @@ std::vector<double> valuesOf(const std::vector<std::vector<std::optional<double>
 
 std::vector<LegendEntry> legendOf(const MaterialTable& t) {
   std::vector<LegendEntry> out;
-  for (const ModelStyle& m : t.models) out.push_back({m.label, m.style, true, ""});
+  for (const ModelStyle& m : t.models) out.push_back({m.label, m.style, true, m.note});
   return out;
 }
 
@@ -50,6 +50,40 @@ double tickStep(int n) {
 }
 
 }  // namespace
+
+std::string errorCurvesCaption(const MaterialTable& t, const std::string& referenceModel) {
+  const auto ref = std::find_if(t.models.begin(), t.models.end(), [&](const ModelStyle& m) { return m.label == referenceModel; });
+  const std::string refName = t.models.empty() ? std::string("—") : t.models[ref == t.models.end() ? 0 : std::size_t(ref - t.models.begin())].label;
+  return "The noise-free relative RMSE r* of every model on every material (averaged over the material's sheets), "
+         "materials sorted by " + refName + "'s error" + (ref == t.models.end() && !t.models.empty() ? " (" + referenceModel + " is not in the study)" : "") +
+         "; log scale. A curve below another is the closer model on that material; a circle on the axis floor is an r* of 0 "
+         "(an estimate below 0 clamped to it); a gap is a material the model was not rendered for.";
+}
+
+std::string heatMapCaption() {
+  return "r* (noise-free relative RMSE, averaged over each material's sheets) of every model (columns) on every material "
+         "(rows), on a log colour scale; an r* of 0 (an estimate below 0 clamped to it) takes the scale's lowest colour and "
+         "is marked 0; grey: not rendered.";
+}
+
+std::string criticalDifferenceCaption(int materials, const std::string& test) {
+  return "Mean rank of each model's r* over " + std::to_string(materials) +
+         " materials (1 = closest; Friedman). Models joined by a bar are not significantly different under pairwise "
+         "Wilcoxon signed-rank tests (" + test + ") with Holm's correction at α = 0.05 (Demšar 2006; cliques as Benavoli et al. 2016 recommend).";
+}
+
+std::string brdfVsImageCaption() {
+  return "Each fit's BRDF-space error (E1 left, E2 right) against its image-space error r* on each material (averaged over "
+         "the material's sheets), log-log. If the BRDF metric predicted what the image shows, the points of a material "
+         "would rise together; results.json gives the rank correlations with their intervals. An r* of 0 is drawn on the "
+         "r* axis's floor.";
+}
+
+std::string perceptualCaption() {
+  return "glossy's figures of the fits the perceptual dataset shares (x, log scale) against the distance people perceived "
+         "between the fit's render and the measured material (y; 0 = indistinguishable, 1 = most different), one point "
+         "per MERL material. Perceived distances: Lavoué, Bonneel, Farrugia, Soler, CGF 40(2), 2021.";
+}
 
 std::string errorCurvesSvg(const MaterialTable& t, const std::string& referenceModel) {
   const auto ref = std::find_if(t.models.begin(), t.models.end(), [&](const ModelStyle& m) { return m.label == referenceModel; });
@@ -64,10 +98,7 @@ std::string errorCurvesSvg(const MaterialTable& t, const std::string& referenceM
     return bool(x) && !y;
   });
   const std::string refName = t.models.empty() ? std::string("—") : t.models[r].label;
-  const std::vector<std::string> caption = {
-      "The noise-free relative RMSE r* of every model on every material (averaged over the material's sheets), "
-      "materials sorted by " + refName + "'s error" + (ref == t.models.end() && !t.models.empty() ? " (" + referenceModel + " is not in the study)" : "") +
-      "; log scale. A curve below another is the closer model on that material; a gap is a material the model was not rendered for."};
+  const std::vector<std::string> caption = {errorCurvesCaption(t, referenceModel)};
   GridLayout g;
   g.panelW = 620.0;
   g.panelH = 300.0;
@@ -79,13 +110,19 @@ std::string errorCurvesSvg(const MaterialTable& t, const std::string& referenceM
                 linearAxis(0.0, std::max(1.0, std::ceil(n / tickStep(n)) * tickStep(n)), tickStep(n), 0, "material (rank by " + refName + ")"),
                 logAxis(lo, hi, "r* (rel. RMSE)")};
   area.draw(svg, "", "clip0");
+  // A zero sits on the axis's floor, joined to its neighbours and circled: a log axis has no place for it,
+  // and a gap would read as a material not rendered.
+  const double floor = std::pow(10.0, lo);
   for (std::size_t k = 0; k < t.models.size(); ++k) {
-    std::vector<Point> pts;
+    std::vector<Point> pts, zeros;
     for (std::size_t i = 0; i < order.size(); ++i) {
       const auto& v = t.rrmse[order[i]][k];
-      pts.push_back({double(i + 1), v ? *v : std::nan("")});
+      pts.push_back({double(i + 1), v ? std::max(*v, floor) : std::nan("")});
+      if (v && *v <= 0.0) zeros.push_back(pts.back());
     }
     drawCurve(svg, area, pts, t.models[k].style, "clip0");
+    for (const Point& z : zeros)
+      if (const Point at = area.at(z.x, z.y); std::isfinite(at.x) && std::isfinite(at.y)) svg.circle(at, 3.2, t.models[k].style.colour, 1.4);
   }
   drawLegend(svg, g.legendX(), g.top, g.legendW, legendOf(t));
   drawCaption(svg, 24.0, g.captionY(), g.width() - 48.0, caption);
@@ -96,9 +133,7 @@ std::string heatMapSvg(const MaterialTable& t) {
   const double cellW = 70.0, cellH = std::clamp(600.0 / std::max<std::size_t>(1, t.materials.size()), 6.0, 18.0);
   const double left = 190.0, top = 130.0;
   const double gridW = cellW * double(t.models.size()), gridH = cellH * double(t.materials.size());
-  const std::vector<std::string> caption = {
-      "r* (noise-free relative RMSE, averaged over each material's sheets) of every model (columns) on every material "
-      "(rows), on a log colour scale; grey: not rendered."};
+  const std::vector<std::string> caption = {heatMapCaption()};
   const double width = std::max(left + gridW + 160.0, 520.0);
   SvgDocument svg(width, top + gridH + 30.0 + captionHeight(width - 48.0, caption) + 16.0);
   drawFigureTitle(svg, "Material × model error");
@@ -112,11 +147,17 @@ std::string heatMapSvg(const MaterialTable& t) {
   for (std::size_t i = 0; i < t.materials.size(); ++i) {
     for (std::size_t k = 0; k < t.models.size(); ++k) {
       const auto& v = t.rrmse[i][k];
+      // A zero is the scale's lowest colour (marked below), not the grey of a model not rendered.
       svg.rect(left + cellW * double(k), top + cellH * double(i), cellW, cellH,
-               v && *v > 0.0 ? hexColour(viridisColour(tOf(*v))) : std::string("#dddddd"));
+               !v ? std::string("#dddddd") : hexColour(viridisColour(*v > 0.0 ? tOf(*v) : 0.0)));
     }
   }
   svg.endGroup();
+  for (std::size_t i = 0; i < t.materials.size(); ++i)
+    for (std::size_t k = 0; k < t.models.size(); ++k)
+      if (const auto& v = t.rrmse[i][k]; v && *v <= 0.0)
+        svg.text({left + cellW * (double(k) + 0.5), top + cellH * (double(i) + 0.5) + std::min(4.0, cellH / 2.0 - 1.0)}, "0",
+                 {std::min(11.0, std::max(cellH - 1.0, 5.0)), Anchor::Middle, false, "#ffffff"});
   if (labelRows)
     for (std::size_t i = 0; i < t.materials.size(); ++i)
       svg.text({left - 6.0, top + cellH * (double(i) + 0.75)}, t.materials[i], {std::min(11.0, cellH - 1.0), Anchor::End});
@@ -132,10 +173,7 @@ std::string criticalDifferenceSvg(const std::vector<CdModel>& models, const std:
                                   int materials, const std::string& test) {
   const std::size_t k = models.size();
   const double width = 760.0, left = 150.0, right = width - 150.0, axisY = 110.0;
-  const std::vector<std::string> caption = {
-      "Mean rank of each model's r* over " + std::to_string(materials) +
-      " materials (1 = closest; Friedman). Models joined by a bar are not significantly different under pairwise "
-      "Wilcoxon signed-rank tests (" + test + ") with Holm's correction at α = 0.05 (Demšar 2006; cliques as Benavoli et al. 2016 recommend)."};
+  const std::vector<std::string> caption = {criticalDifferenceCaption(materials, test)};
   const double labelsH = 30.0 + 22.0 * double((k + 1) / 2);
   const double barsH = 14.0 * double(cliques.size()) + 20.0;
   SvgDocument svg(width, axisY + std::max(labelsH, barsH) + 30.0 + captionHeight(width - 48.0, caption) + 16.0);
@@ -173,10 +211,7 @@ std::string criticalDifferenceSvg(const std::vector<CdModel>& models, const std:
 }
 
 std::string brdfVsImageSvg(const MaterialTable& t) {
-  const std::vector<std::string> caption = {
-      "Each fit's BRDF-space error (E1 left, E2 right) against its image-space error r* on each material (averaged over "
-      "the material's sheets), log-log. If the BRDF metric predicted what the image shows, the points of a material "
-      "would rise together; results.json gives the rank correlations with their intervals."};
+  const std::vector<std::string> caption = {brdfVsImageCaption()};
   GridLayout g;
   g.columns = 2;
   SvgDocument svg = gridFigure(g, "BRDF error against image error", caption);
@@ -194,7 +229,7 @@ std::string brdfVsImageSvg(const MaterialTable& t) {
         const auto& x = (*xs[p])[i][k];
         const auto& y = t.rrmse[i][k];
         if (!x || !y) continue;
-        const Point at = area.at(*x, *y);
+        const Point at = area.at(*x, std::max(*y, std::pow(10.0, ylo)));
         if (std::isfinite(at.x) && std::isfinite(at.y)) svg.circle(at, 2.6, t.models[k].style.colour, 1.2);
       }
   }
@@ -204,10 +239,7 @@ std::string brdfVsImageSvg(const MaterialTable& t) {
 }
 
 std::string perceptualSvg(const std::vector<PerceptualSeries>& series, const std::vector<std::string>& figureNames) {
-  const std::vector<std::string> caption = {
-      "glossy's figures of the fits the perceptual dataset shares (x, log scale) against the distance people perceived "
-      "between the fit's render and the measured material (y; 0 = indistinguishable, 1 = most different), one point "
-      "per MERL material. Perceived distances: Lavoué, Bonneel, Farrugia, Soler, CGF 40(2), 2021."};
+  const std::vector<std::string> caption = {perceptualCaption()};
   GridLayout g;
   g.columns = 2;
   g.rows = 2;

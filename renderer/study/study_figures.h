@@ -15,6 +15,7 @@ namespace glossy::study {
 struct ModelStyle {
   std::string label;
   plot::CurveStyle style;
+  std::string note;  // under its legend entry, e.g. "glossy's fit"
 };
 
 // Per material (rows) and model (columns): the figure averaged over the material's sheets.
@@ -37,6 +38,16 @@ struct PerceptualSeries {
   std::vector<std::vector<plot::Point>> points;
 };
 
+// Each figure's caption, as drawn under it and as results.json, summary.md and the report page give it.
+std::string errorCurvesCaption(const MaterialTable& t, const std::string& referenceModel);
+std::string heatMapCaption();
+std::string criticalDifferenceCaption(int materials, const std::string& test);
+std::string brdfVsImageCaption();
+std::string perceptualCaption();
+
+// A zero r* (a negative estimate clamped to 0) is a figure, not a gap: the error curves draw it as a point
+// on the log axis's floor, the heat map in the scale's lowest colour marked "0". Lines are solid; glossy's
+// own fits are told apart in the legend.
 std::string errorCurvesSvg(const MaterialTable& t, const std::string& referenceModel);
 std::string heatMapSvg(const MaterialTable& t);
 // `models` in rank order; `cliques` as [first, last] index ranges of models not significantly different.

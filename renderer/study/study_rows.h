@@ -3,7 +3,7 @@
 // after its shards) and `glossy report` read the same rows.
 #pragma once
 
-#include "renderer/report/sheet_record.h"
+#include "renderer/sheet/sheet_record.h"
 #include "renderer/study/study_plan.h"
 #include "renderer/study/study_row.h"
 

@@ -2,6 +2,8 @@
 
 #include "materials/core/text.h"
 
+#include <charconv>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -12,7 +14,24 @@ namespace {
 using Json = nlohmann::ordered_json;
 using Opt = std::optional<double>;
 
-Json num(const Opt& v) { return v ? Json(*v) : Json(nullptr); }
+// The shortest text that reads back as `v`: a float32 figure's (the sheets store figures as float32) as
+// float, so that 0.1f is "0.1" rather than its double expansion "0.10000000149011612"; any other as double.
+std::string shortest(double v) {
+  char buffer[64];
+  const float f = static_cast<float>(v);
+  const auto [end, ec] = std::isfinite(v) && static_cast<double>(f) == v ? std::to_chars(buffer, buffer + sizeof buffer, f)
+                                                                          : std::to_chars(buffer, buffer + sizeof buffer, v);
+  return ec == std::errc() ? std::string(buffer, end) : formatted("%.17g", v);
+}
+
+// A figure as the files hold it: the double its shortest text reads as, which JSON then prints as that text.
+Json num(const Opt& v) {
+  if (!v) return Json(nullptr);
+  const std::string text = shortest(*v);
+  double d = *v;
+  std::from_chars(text.data(), text.data() + text.size(), d);
+  return Json(d);
+}
 
 // A row's fields in the files' order, declared once: the CSV's column, the JSON's key, the value.
 struct Column {
@@ -51,11 +70,11 @@ const Column kColumns[] = {
     {"seed", "seed", [](const StudyRow& r) { return Json(r.seed); }},
 };
 
-// A value as its CSV field: a figure in full (%.17g), absent as an empty field, a flag as 1 or 0.
+// A value as its CSV field: a figure as its shortest text, absent as an empty field, a flag as 1 or 0.
 std::string csvCell(const Json& v) {
   if (v.is_null()) return "";
   if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
-  if (v.is_number_float()) return formatted("%.17g", v.get<double>());
+  if (v.is_number_float()) return shortest(v.get<double>());
   if (v.is_number()) return v.dump();
   return csvField(v.get<std::string>());
 }
@@ -81,44 +100,47 @@ nlohmann::ordered_json rowsJson(std::span<const StudyRow> rows) {
   return out;
 }
 
-namespace {
-
 std::string latexEscape(const std::string& s) {
+  static const std::pair<const char*, const char*> kKnown[] = {{"°", "\\textdegree{}"}, {"ö", "\\\"{o}"},     {"–", "--"},
+                                                               {"×", "$\\times$"},     {"ρ", "$\\rho$"}, {"²", "$^2$"},
+                                                               {"≥", "$\\geq$"}};
   std::string out;
-  for (char c : s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const char c = s[i];
+    if (static_cast<unsigned char>(c) >= 0x80) {
+      std::size_t n = 1;  // the UTF-8 sequence's length, from its lead byte
+      const auto lead = static_cast<unsigned char>(c);
+      if (lead >= 0xf0) n = 4;
+      else if (lead >= 0xe0) n = 3;
+      else if (lead >= 0xc0) n = 2;
+      const std::string seq = s.substr(i, n);
+      const char* as = "?";
+      for (const auto& [from, to] : kKnown)
+        if (seq == from) as = to;
+      out += as;
+      i += n;
+      continue;
+    }
     switch (c) {
       case '&': case '%': case '$': case '#': case '_': case '{': case '}': out += std::string("\\") + c; break;
       case '~': out += "\\textasciitilde{}"; break;
       case '^': out += "\\textasciicircum{}"; break;
       case '\\': out += "\\textbackslash{}"; break;
+      case '<': out += "\\textless{}"; break;
+      case '>': out += "\\textgreater{}"; break;
+      case '|': out += "\\textbar{}"; break;
       default: out += c;
     }
+    ++i;
   }
   return out;
 }
-
-}  // namespace
 
 std::string intervalCell(const Json& j) {
   if (j["estimate"].is_null()) return "--";
   std::string s = formatted("%.4f", j["estimate"].get<double>());
   if (!j["lo"].is_null()) s += formatted(" [%.4f, %.4f]", j["lo"].get<double>(), j["hi"].get<double>());
   return s;
-}
-
-std::string modelsTex(const nlohmann::ordered_json& models, int materials) {
-  std::string out =
-      "% glossy study: per-model results (needs \\usepackage{booktabs}). Intervals: 95 % percentile bootstrap over materials.\n"
-      "\\begin{tabular}{lrrrll}\n\\toprule\n"
-      "Model & Closest & Tied & Mean rank & Mean $r^*$ [95\\,\\% CI] & Median $r^*$ [95\\,\\% CI] \\\\\n\\midrule\n";
-  for (const Json& m : models) {
-    out += latexEscape(m["label"].get<std::string>()) + " & " + std::to_string(m["closest"].get<int>()) + " & " +
-           std::to_string(m["tied"].get<int>()) + " & " +
-           (m["meanRank"].is_null() ? std::string("--") : formatted("%.2f", m["meanRank"].get<double>())) + " & " +
-           intervalCell(m["meanRrmse"]) + " & " + intervalCell(m["medianRrmse"]) + " \\\\\n";
-  }
-  out += "\\bottomrule\n\\end{tabular}\n% " + std::to_string(materials) + " materials.\n";
-  return out;
 }
 
 }  // namespace glossy::study

@@ -3,7 +3,7 @@
 // from the PNG beside it in those boxes, as the report does. OpenImageIO reads only from a path: the bytes
 // become NAME.exr, with a valid PNG beside it (the record requires one).
 #include "renderer/report/sheet_images.h"
-#include "renderer/report/sheet_record.h"
+#include "renderer/sheet/sheet_record.h"
 #include "tests/fuzz/fuzz_entries.h"
 #include "tests/fuzz/fuzz_temp_dir.h"
 

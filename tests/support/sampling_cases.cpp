@@ -61,10 +61,11 @@ std::vector<LibraryFit> supplementFits() {
              return p.material == r.material && p.fit.id == FitId{r.fit.id.model, r.fit.id.metric};
            });
   };
-  // Ngan et al.'s fits of the six are left to publishedLobeChi2Fits (each model's extremes) and the sweep.
+  // Ngan et al.'s and Bagher et al.'s fits of the six are left to publishedLobeChi2Fits (each model's extremes)
+  // and the sweep.
   std::vector<LibraryFit> out;
   for (const FitRecord& r : records)
-    if (isSupplement(r.material) && !refit(r) && r.fit.id.metric != FitId::kNgan05) out.push_back(toLibraryFit(r));
+    if (isSupplement(r.material) && !refit(r) && r.fit.id.isLowMetric()) out.push_back(toLibraryFit(r));
   return out;
 }
 
@@ -110,8 +111,38 @@ std::vector<LibraryFit> ggxChi2Fits() {
   return {{"ggx alpha=0.02", Ggx{Rgb(0.1), Rgb(1.0), 0.02, 1.5}}, {"ggx alpha=0.5", Ggx{Rgb(0.1), Rgb(1.0), 0.5, 1.5}}};
 }
 
+namespace {
+
+// Bagher et al.'s fits, every parameter per channel: kd, ks, alpha, p, f0, f1, norm, lambda, c, k, theta0.
+Brdf sgdFit(std::initializer_list<Rgb> values) {
+  static constexpr const char* keys[] = {"kd", "ks", "alpha", "p", "f0", "f1", "norm", "lambda", "c", "k", "theta0"};
+  ParamSet params;
+  const Rgb* v = values.begin();
+  for (const char* key : keys) params.set(key, *v++);
+  return Sgd::fromParams(params);
+}
+
+}  // namespace
+
 std::vector<LibraryFit> publishedLobeChi2Fits() {
   return {
+      // SGD: specular-orange-phenolic (α down to 1.6e-5, the sharpest; channels of different widths),
+      // chrome-steel (a metal whose shadowing has c up to 1.6e109) and teflon (α 0.58-0.68, p up to 1.44).
+      {"sgd specular-orange-phenolic",
+       sgdFit({Rgb(0.32771, 0.0540131, 0.00883213), Rgb(0.051915, 0.0686764, 0.0489478), Rgb(7.91913e-05, 0.000139576, 1.62017e-05),
+               Rgb(0.253564, 0.354675, 3.55583e-12), Rgb(0.0768695, 0.0496641, 0.0223538), Rgb(-0.015514, -0.023864, -0.0433847),
+               Rgb(10274.5, 5159.16, 61722.9), Rgb(7.4207, 3.83488, 8722070.0), Rgb(2.91305e+71, 1.02522e-07, 23012400.0),
+               Rgb(170.364, 373.255, 855.811), Rgb(1.19475, 0.53082, 0.608547)})},
+      {"sgd chrome-steel",
+       sgdFit({Rgb(0.0206718, 0.0240818, 0.024351), Rgb(0.129782, 0.109032, 0.0524555), Rgb(5.51292e-05, 3.13288e-05, 4.51944e-05),
+               Rgb(0.207979, 0.152758, 0.325431), Rgb(1.18818e-12, 2.06813e-11, 0.580895), Rgb(-0.316807, -0.265326, -0.419105),
+               Rgb(15466.8, 28628.9, 16531.2), Rgb(12.8988, 68.7898, 4.68237), Rgb(1.43049e+84, 1.63655e+109, 44.7025),
+               Rgb(197.744, 257.536, 618.155), Rgb(1.20035, 1.2003, 0.579562)})},
+      {"sgd teflon",
+       sgdFit({Rgb(0.276442, 0.263098, 0.260294), Rgb(1.56924, 1.52804, 1.43859), Rgb(0.678586, 0.662167, 0.577852),
+               Rgb(1.2402, 1.14126, 1.44077), Rgb(9.40662e-13, 3.57656e-11, 1.50208e-11), Rgb(-0.0492032, -0.0587316, -0.0548028),
+               Rgb(3.91532, 3.82834, 3.64944), Rgb(2.09871, 2.05044, 2.90315), Rgb(0.0378525, 0.0435869, 0.0028469),
+               Rgb(6.8689, 6.72229, 9.65585), Rgb(0.166634, 0.181605, -0.0468321)})},
       // Ward: hematite (α = 0.00576, the sharpest) and red-fabric (α = 0.5, the broadest, Ngan's bound).
       {"ward hematite", Ward{Rgb(0.0317, 0.0275, 0.0191), Rgb(0.0849, 0.0739, 0.0513), 0.00576}},
       {"ward red-fabric", Ward{Rgb(0.176, 0.017, 0.00287), Rgb(0.063, 0.0134, 0.00565), 0.5}},
@@ -186,6 +217,12 @@ double lobeWidth(const Brdf& brdf) {
     width = 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));  // cos θ_h = ξ^(1/(n+1))
   } else if (const auto* m = brdf.as<NganAshikhminShirley>()) {
     width = 2.0 * std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));
+  } else if (const auto* m = brdf.as<Sgd>()) {
+    // The broadest channel's quantile, from the proposal's table (close to D cos θ_h's own).
+    double tan2 = 0.0;
+    for (int ch = 0; ch < 3; ++ch)
+      if (m->channelWeight[ch] > 0.0) tan2 = std::max(tan2, m->tables[ch].sampleTan2(q));
+    width = 2.0 * std::atan(std::sqrt(tan2));
   } else if (const auto* m = brdf.as<Lafortune>()) {
     width = std::acos(std::pow(1.0 - q, 1.0 / (m->n + 1.0)));  // about the lobe's axis, not the half vector
   }

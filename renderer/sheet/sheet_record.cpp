@@ -1,12 +1,11 @@
 // Reading a sheet's figures from its EXR header (sheet_record.h).
-#include "renderer/report/sheet_record.h"
+#include "renderer/sheet/sheet_record.h"
 
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "materials/params/material_name.h"
 #include "renderer/image/image_input.h"
-#include "renderer/report/html_text.h"
-#include "renderer/report/input_folder.h"
+#include "renderer/output/input_folder.h"
 #include "renderer/sheet/comparison_grid.h"
 
 #include <OpenImageIO/imageio.h>

@@ -1,4 +1,4 @@
-#include "materials/params/param_set.h"
+#include "materials/models/param_set.h"
 
 #include "materials/core/text.h"
 

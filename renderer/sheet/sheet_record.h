@@ -1,8 +1,8 @@
-// What the report shows of one material sheet, read from the header of the layered EXR that `glossy sheet`
-// writes (renderer/sheet/sheet.cpp, writeSheetExr): the panels in grid order with their boxes, labels,
-// notes and fit parameters, each analytic panel's error figures against the measured panel, and the
-// verdict, and the settings it was made with. Figures a sheet does not carry (an older sheet, an empty panel)
-// are absent, never zero, so the report can show "–" for them and sort them last. Every size and offset
+// One material sheet as `glossy report`, `glossy merge sheets` and the study read it back, from the header of
+// the layered EXR that `glossy sheet` writes (sheet.cpp, writeSheetExr): the panels in grid order with their
+// boxes, labels, notes and fit parameters, each analytic panel's error figures against the measured panel, and
+// the verdict, and the settings it was made with. Figures a sheet does not carry (an older sheet, an empty
+// panel) are absent, never zero, so the report can show "–" for them and sort them last. Every size and offset
 // read from the header is checked in 64-bit arithmetic against the image before it is used.
 #pragma once
 

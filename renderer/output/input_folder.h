@@ -1,4 +1,5 @@
-// The files the report reads from its input folders (SHEETS_DIR, PLOTS_DIR): regular files inside the folder.
+// The files a command reads from its input folders (the report's SHEETS_DIR and PLOTS_DIR, a study's output
+// folder): regular files inside the folder.
 // A symlink is followed only while it stays inside the folder — one leading elsewhere could copy any file
 // the user can read into a site meant for publishing — and a FIFO, device or socket is refused without being
 // opened, so nothing blocks or reads forever.

@@ -1,4 +1,4 @@
-#include "materials/merl/merl_sampling.h"
+#include "materials/models/merl_sampling.h"
 
 #include "materials/merl/merl_table.h"
 #include "materials/models/brdf_sample.h"

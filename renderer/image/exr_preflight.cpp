@@ -1,4 +1,4 @@
-#include "renderer/lights/exr_preflight.h"
+#include "renderer/image/exr_preflight.h"
 
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"

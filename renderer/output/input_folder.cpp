@@ -1,5 +1,5 @@
 // Reading regular files inside an input folder (input_folder.h).
-#include "renderer/report/input_folder.h"
+#include "renderer/output/input_folder.h"
 
 #include "materials/core/input_error.h"
 #include "materials/core/input_file.h"
