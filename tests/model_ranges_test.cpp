@@ -71,7 +71,9 @@ TEST(ModelRanges, EveryRangeIsFiniteAndBounded) {
       EXPECT_TRUE(std::isfinite(spec.range.lo) && std::isfinite(spec.range.hi) && spec.range.lo <= spec.range.hi)
           << model.name << " " << spec.key;
       // A parameter of a BRDF has no business beyond ±1e9; the loose default range means one was forgotten.
-      EXPECT_LE(spec.range.hi, 1e9) << model.name << " " << spec.key;
+      // Save SGD's shadowing rate c, which Bagher et al.'s published fits take up to 1.6e109 (chrome-steel).
+      const bool publishedBeyond = model.name == "sgd" && spec.key == "c";
+      EXPECT_LE(spec.range.hi, publishedBeyond ? 1e300 : 1e9) << model.name << " " << spec.key;
       EXPECT_GE(spec.range.lo, -1e9) << model.name << " " << spec.key;
     }
 }

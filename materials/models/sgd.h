@@ -98,7 +98,7 @@ struct Sgd {
       {"f0", ParamKind::Rgb, {0.0, 100.0}, "Fresnel term F0 (R, G, B)"},
       {"f1", ParamKind::Rgb, {-100.0, 100.0}, "Fresnel term F1 (R, G, B)"},
       {"norm", ParamKind::Rgb, {0.0, 1e8}, "normalisation K of D (R, G, B)"},
-      {"lambda", ParamKind::Rgb, {0.0, 1e12}, "shadowing scale Λ (R, G, B)"},
+      {"lambda", ParamKind::Rgb, {0.0, 1e9}, "shadowing scale Λ (R, G, B)"},
       {"c", ParamKind::Rgb, {0.0, 1e300}, "shadowing rate c (R, G, B)"},
       {"k", ParamKind::Rgb, {0.0, 1e4}, "shadowing exponent k (R, G, B)"},
       {"theta0", ParamKind::Rgb, {-kPi / 2.0, kPi / 2.0}, "shadowing onset θ0 in radians (R, G, B)"},

@@ -33,6 +33,8 @@ std::vector<LibraryFit> ggxChi2Fits();
 
 // The models of Ngan et al. 2005's published fits: each model's sharpest and broadest published fit (values from bbm's fits/*.fit, commit 9807fb38), over their own Lambertian bases.
 std::vector<LibraryFit> publishedLobeChi2Fits();
+// Bagher et al.'s SGD: its sharpest, a metal's and its broadest published fit; in the sweep only (libraryFits).
+std::vector<LibraryFit> sgdChi2Fits();
 
 // View elevations: head-on, two in between, and grazing (82°).
 inline constexpr std::array<double, 4> kViewAnglesDeg = {0.0, 35.0, 65.0, 82.0};
