@@ -768,18 +768,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   Json jf;
   jf["materials"] = int(t.complete.size());
   jf["materialsLeftOut"] = int(s.materials.size() - t.complete.size());
-  if (t.friedmanTested) {
-    jf["chiSquare"] = t.friedman->chiSquare;
-    jf["df"] = t.friedman->treatments - 1;
-    jf["p"] = t.friedman->pChiSquare;
-    jf["imanDavenportF"] = num(t.friedman->imanDavenportF);
-    if (!t.friedman->imanDavenportF) jf["imanDavenportFReason"] = "infinite: every material ranks the models alike";
-    jf["fDf"] = Json::array({t.friedman->treatments - 1, (t.friedman->treatments - 1) * (t.friedman->blocks - 1)});
-    jf["pF"] = num(t.friedman->pF);
-  } else {
-    jf["p"] = nullptr;
-    jf["reason"] = t.friedmanReason;
-  }
+  jf.update(friedmanJson(t.friedmanTested ? t.friedman : std::nullopt, t.friedmanReason));
   results["friedman"] = jf;
   Json jw;
   jw["alpha"] = kAlpha;

@@ -79,4 +79,22 @@ std::string intervalText(const Interval& i, const char* f) {
   return s;
 }
 
+nlohmann::ordered_json friedmanJson(const std::optional<FriedmanResult>& test, const std::string& reason) {
+  const auto num = [](const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr); };
+  nlohmann::ordered_json j;
+  if (!test) {
+    j["p"] = nullptr;
+    j["reason"] = reason;
+    return j;
+  }
+  j["chiSquare"] = test->chiSquare;
+  j["df"] = test->treatments - 1;
+  j["p"] = test->pChiSquare;
+  j["imanDavenportF"] = num(test->imanDavenportF);
+  if (!test->imanDavenportF) j["imanDavenportFReason"] = "infinite: every material ranks the models alike";
+  j["fDf"] = nlohmann::ordered_json::array({test->treatments - 1, (test->treatments - 1) * (test->blocks - 1)});
+  j["pF"] = num(test->pF);
+  return j;
+}
+
 }  // namespace glossy::study

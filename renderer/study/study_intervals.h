@@ -48,4 +48,8 @@ nlohmann::ordered_json intervalJson(const Interval& interval);
 // need ≥ 10)", "0.123 (no interval: REASON)", or "undefined (REASON)".
 std::string intervalText(const Interval& interval, const char* format = "%.4g");
 
+// A Friedman test as results.json writes it, overall and per lighting alike: χ², its df and p, Iman and
+// Davenport's F, its df and p; or a null p with `reason` when the test is absent.
+nlohmann::ordered_json friedmanJson(const std::optional<FriedmanResult>& test, const std::string& reason);
+
 }  // namespace glossy::study

@@ -189,18 +189,7 @@ Json tableJson(const Data& d, const LightingTable& t) {
     models.push_back(m);
   }
   j["models"] = models;
-  Json f;
-  if (t.friedman) {
-    f["chiSquare"] = t.friedman->chiSquare;
-    f["df"] = t.friedman->treatments - 1;
-    f["p"] = t.friedman->pChiSquare;
-    f["imanDavenportF"] = num(t.friedman->imanDavenportF);
-    f["pF"] = num(t.friedman->pF);
-  } else {
-    f["p"] = nullptr;
-    f["reason"] = t.friedmanReason;
-  }
-  j["friedman"] = f;
+  j["friedman"] = friedmanJson(t.friedman, t.friedmanReason);
   Json p;
   p["a"] = t.top ? Json(d.models[t.top->first]) : Json(nullptr);
   p["b"] = t.top ? Json(d.models[t.top->second]) : Json(nullptr);
