@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace glossy::study {
 
@@ -22,6 +23,23 @@ std::string pText(const Json& p) {
   if (p.is_null()) return "--";
   const double v = p.get<double>();
   return v < 0.001 ? std::string("$<$0.001") : formatted("%.3f", v);
+}
+
+// Why the figures a table prints without an interval have none (small samples, resamples that all agree):
+// gathered while the rows are written, then said in the caption, so no bare estimate reads as exact.
+void noteAbsent(const Json& interval, std::set<std::string>& reasons) {
+  if (!interval.is_object() || interval["estimate"].is_null() || !interval["lo"].is_null()) return;
+  if (!interval.contains("reason") || !interval["reason"].is_string()) return;
+  std::string reason = interval["reason"].get<std::string>();
+  if (reason.starts_with("no interval: ")) reason.erase(0, 13);
+  reasons.insert(reason);
+}
+std::string absentSentence(const std::set<std::string>& reasons) {
+  if (reasons.empty()) return "";
+  std::string s = " Figures without an interval have none:";
+  for (const std::string& r : reasons) s += " " + latexEscape(r) + ";";
+  s.back() = '.';
+  return s;
 }
 
 std::string shareCell(const Json& share) {
@@ -127,18 +145,27 @@ std::string modelsTex(const Json& results) {
       "Model & Group & Closest & Tied & Mean rank & Mean $r^*$ [95\\,\\% CI] & Median $r^*$ [95\\,\\% CI] & Closer than next [95\\,\\% CI] \\\\\n"
       "\\midrule\n";
   const Json& closer = results["closerThan"]["overall"];
+  std::set<std::string> absent;
   for (std::size_t k = 0; k < order.size(); ++k) {
     const Json& m = *find(results["models"], "label", order[k]);
+    noteAbsent(m["meanRrmse"], absent);
+    noteAbsent(m["medianRrmse"], absent);
     std::string next = "--";
     if (k + 1 < order.size())
       for (const Json& c : closer)
-        if (c["x"] == order[k] && c["y"] == order[k + 1]) next = shareCell(c["share"]);
+        if (c["x"] == order[k] && c["y"] == order[k + 1]) {
+          next = shareCell(c["share"]);
+          noteAbsent(c["share"], absent);
+        }
     out += latexEscape(order[k]) + " & " + letters[k] + " & " + std::to_string(m["closest"].get<int>()) + " & " +
            std::to_string(m["tied"].get<int>()) + " & " +
            (m["meanRank"].is_null() ? std::string("--") : formatted("%.2f", m["meanRank"].get<double>())) + " & " +
            intervalCell(m["meanRrmse"]) + " & " + intervalCell(m["medianRrmse"]) + " & " + next + " \\\\\n";
   }
   out += "\\bottomrule\n\\end{tabular}\n\\end{table}\n\n";
+  const std::string modelsLabel = "}\n\\label{tab:glossy-study-models}";
+  out.insert(out.find(modelsLabel), absentSentence(absent));
+  absent.clear();
 
   // Every pair, the better-ranked model first: the effect size beside the test.
   out +=
@@ -157,10 +184,13 @@ std::string modelsTex(const Json& results) {
       const Json* w = nullptr;
       for (const Json& j : results["wilcoxon"]["pairs"])
         if ((j["a"] == order[a] && j["b"] == order[b]) || (j["a"] == order[b] && j["b"] == order[a])) w = &j;
+      if (c) noteAbsent((*c)["share"], absent);
       out += latexEscape(order[a]) + " & " + latexEscape(order[b]) + " & " + (c ? std::to_string((*c)["materials"].get<int>()) : "--") +
              " & " + (c ? shareCell((*c)["share"]) : "--") + " & " + (w ? pText((*w)["pHolm"]) : "--") + " \\\\\n";
     }
   out += "\\bottomrule\n\\end{tabular}\n\\end{table}\n";
+  const std::string closerLabel = "}\n\\label{tab:glossy-study-closer}";
+  out.insert(out.find(closerLabel), absentSentence(absent));
   return out;
 }
 
