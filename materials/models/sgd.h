@@ -19,6 +19,7 @@
 #include "materials/models/brdf_sample.h"
 #include "materials/models/common_params.h"
 #include "materials/models/half_vector.h"
+#include "materials/models/schlick.h"
 #include "materials/models/ward.h"
 
 #include <algorithm>
@@ -123,8 +124,7 @@ struct Sgd {
     return std::max(0.0, 1.0 - lambda[ch] * std::expm1(e));
   }
   double fresnel(int ch, double cd) const {
-    const double m = 1.0 - cd, m2 = m * m;
-    return std::max(0.0, f0[ch] + (1.0 - f0[ch]) * m2 * m2 * m - f1[ch] * cd);
+    return std::max(0.0, fresnelSchlick(cd, f0[ch]) - f1[ch] * cd);
   }
 
   Rgb eval(const Vec3& L, const Vec3& V) const {

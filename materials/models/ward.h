@@ -40,17 +40,23 @@ inline double lobePdf(double alpha, const Vec3& L, const Vec3& V) {
 
 }  // namespace ward_sampling
 
+// The one parameter both Ward forms (this and ward_duer.h) share. α from 1e-4 (a MERL table's first θ_h bin is
+// 1.9e-4 rad wide, so no measurement tells a sharper lobe from a mirror) to 10.
+namespace ward_params {
+
+inline constexpr ParamSpec kAlpha = {"alpha", ParamKind::Scalar, {1e-4, 10.0},
+                                     "Ward roughness α (slope RMS, not α²)"};
+inline constexpr double kAlphaStarts[] = {0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.4};
+inline constexpr ShapeParam kAlphaShape = {"alpha", FitScale::Log, 1e-4, 10.0, kAlphaStarts};
+
+}  // namespace ward_params
+
 struct Ward {
   static constexpr std::string_view kName = "ward";
   static constexpr std::string_view kLabel = "Ward";
   static constexpr std::string_view kConventions = "Ngan 2005: 1/(4 pi a^2 sqrt(cos cos)), a the slope RMS";
-  // α from 1e-4 (a MERL table's first θ_h bin is 1.9e-4 rad wide, so no measurement tells a sharper lobe from
-  // a mirror) to 10; the published fits span 0.00576 (hematite) to 0.5, the bound of Ngan's search.
-  static constexpr ParamSpec kParams[] = {
-      params::kKd,
-      params::kKs,
-      {"alpha", ParamKind::Scalar, {1e-4, 10.0}, "Ward roughness α (slope RMS, not α²)"},
-  };
+  // The published fits' α span 0.00576 (hematite) to 0.5, the bound of Ngan's search.
+  static constexpr ParamSpec kParams[] = {params::kKd, params::kKs, ward_params::kAlpha};
   static Ward fromParams(const ParamSet& p) { return {p.rgb("kd"), p.rgb("ks"), p.scalar("alpha")}; }
 
   Rgb kd{0.0}, ks{0.0};
@@ -58,8 +64,7 @@ struct Ward {
 
   // ρ = Kd/π + Ks ρ_s, ρ_s = exp(−tan²θ_h/α²) / (4π α² √(⟨L,N⟩⟨V,N⟩)); shape = {α}.
   static constexpr std::string_view kScaleKey = "ks";
-  static constexpr double kAlphaStarts[] = {0.005, 0.01, 0.02, 0.05, 0.1, 0.2, 0.4};
-  static constexpr ShapeParam kShape[] = {{"alpha", FitScale::Log, 1e-4, 10.0, kAlphaStarts}};
+  static constexpr ShapeParam kShape[] = {ward_params::kAlphaShape};
   template <class T>
   T lobe(const LobeGeometry& g, const T* shape) const {
     using std::exp;

@@ -16,11 +16,7 @@ struct WardDuer {
   static constexpr std::string_view kLabel = "Ward-Duer";
   static constexpr std::string_view kConventions = "Ngan 2005: 1/(4 pi a^2 cos cos), a the slope RMS";
   // As Ward's α (ward.h); the published fits span 0.00509 (hematite) to 0.5.
-  static constexpr ParamSpec kParams[] = {
-      params::kKd,
-      params::kKs,
-      {"alpha", ParamKind::Scalar, {1e-4, 10.0}, "Ward roughness α (slope RMS, not α²)"},
-  };
+  static constexpr ParamSpec kParams[] = {params::kKd, params::kKs, ward_params::kAlpha};
   static WardDuer fromParams(const ParamSet& p) { return {p.rgb("kd"), p.rgb("ks"), p.scalar("alpha")}; }
 
   Rgb kd{0.0}, ks{0.0};
@@ -28,7 +24,7 @@ struct WardDuer {
 
   // ρ = Kd/π + Ks ρ_s, ρ_s = exp(−tan²θ_h/α²) / (4π α² ⟨L,N⟩⟨V,N⟩); shape = {α}.
   static constexpr std::string_view kScaleKey = "ks";
-  static constexpr ShapeParam kShape[] = {{"alpha", FitScale::Log, 1e-4, 10.0, Ward::kAlphaStarts}};
+  static constexpr ShapeParam kShape[] = {ward_params::kAlphaShape};
   template <class T>
   T lobe(const LobeGeometry& g, const T* shape) const {
     using std::exp;

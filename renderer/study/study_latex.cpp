@@ -42,13 +42,6 @@ std::string absentSentence(const std::set<std::string>& reasons) {
   return s;
 }
 
-std::string shareCell(const Json& share) {
-  if (share["estimate"].is_null()) return "--";
-  std::string s = formatted("%.2f", share["estimate"].get<double>());
-  if (!share["lo"].is_null()) s += formatted(" [%.2f, %.2f]", share["lo"].get<double>(), share["hi"].get<double>());
-  return s;
-}
-
 }  // namespace
 
 std::vector<std::string> modelsByRank(const Json& results) {
@@ -154,7 +147,7 @@ std::string modelsTex(const Json& results) {
     if (k + 1 < order.size())
       for (const Json& c : closer)
         if (c["x"] == order[k] && c["y"] == order[k + 1]) {
-          next = shareCell(c["share"]);
+          next = intervalCell(c["share"], 2);
           noteAbsent(c["share"], absent);
         }
     out += latexEscape(order[k]) + " & " + letters[k] + " & " + std::to_string(m["closest"].get<int>()) + " & " +
@@ -186,7 +179,7 @@ std::string modelsTex(const Json& results) {
         if ((j["a"] == order[a] && j["b"] == order[b]) || (j["a"] == order[b] && j["b"] == order[a])) w = &j;
       if (c) noteAbsent((*c)["share"], absent);
       out += latexEscape(order[a]) + " & " + latexEscape(order[b]) + " & " + (c ? std::to_string((*c)["materials"].get<int>()) : "--") +
-             " & " + (c ? shareCell((*c)["share"]) : "--") + " & " + (w ? pText((*w)["pHolm"]) : "--") + " \\\\\n";
+             " & " + (c ? intervalCell((*c)["share"], 2) : "--") + " & " + (w ? pText((*w)["pHolm"]) : "--") + " \\\\\n";
     }
   out += "\\bottomrule\n\\end{tabular}\n\\end{table}\n";
   const std::string closerLabel = "}\n\\label{tab:glossy-study-closer}";

@@ -136,10 +136,10 @@ std::string latexEscape(const std::string& s) {
   return out;
 }
 
-std::string intervalCell(const Json& j) {
+std::string intervalCell(const Json& j, int decimals) {
   if (j["estimate"].is_null()) return "--";
-  std::string s = formatted("%.4f", j["estimate"].get<double>());
-  if (!j["lo"].is_null()) s += formatted(" [%.4f, %.4f]", j["lo"].get<double>(), j["hi"].get<double>());
+  std::string s = formatted("%.*f", decimals, j["estimate"].get<double>());
+  if (!j["lo"].is_null()) s += formatted(" [%.*f, %.*f]", decimals, j["lo"].get<double>(), decimals, j["hi"].get<double>());
   return s;
 }
 

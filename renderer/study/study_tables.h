@@ -20,7 +20,8 @@ nlohmann::ordered_json rowsJson(std::span<const StudyRow> rows);
 // (°, ö, –, ×, ρ, ², ≥) as LaTeX commands, and any other non-ASCII character as "?", so that the file compiles
 // with pdflatex and no package.
 std::string latexEscape(const std::string& s);
-// An interval of results.json as the tables print it: "0.0123 [0.0110, 0.0135]", "--" when absent.
-std::string intervalCell(const nlohmann::ordered_json& interval);
+// An interval of results.json as the tables print it: "0.0123 [0.0110, 0.0135]" at `decimals` places,
+// "--" when absent.
+std::string intervalCell(const nlohmann::ordered_json& interval, int decimals = 4);
 
 }  // namespace glossy::study
