@@ -1,5 +1,7 @@
-# Types of the glossy package (renderer/python/*.cpp define it; their docstrings explain each name).
+# Types of the glossy package (renderer/python/*.cpp and glossy/_study.py define it; their docstrings explain
+# each name).
 import os
+import pathlib
 from typing import Callable, Literal, Mapping, Sequence, Union
 
 import numpy as np
@@ -120,3 +122,11 @@ def sheet(*, material: Path | Material, measured: Path | None = None, merl_dir: 
           output: Path | None = None) -> Sheet: ...
 def comparison_grid() -> list[dict[str, str | bool]]: ...
 def read_exr(path: Path, layer: str = "") -> npt.NDArray[np.float32]: ...
+
+class Study:
+    folder: pathlib.Path
+    plan: dict[str, object]
+    rows: dict[str, npt.NDArray[np.generic]]
+    results: dict[str, object]
+    summary: str
+def read_study(folder: Path) -> Study: ...
