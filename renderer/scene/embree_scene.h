@@ -31,7 +31,7 @@ struct Hit {
   double margin = 0.0;
 };
 
-// The margin of a surface whose coordinates reach maxAbs: 32 float ulps of it. The origin's rounding to
+// The margin of a surface whose coordinates reach maxAbs: 2⁻¹⁹ of it, 16 to 32 float ulps of it. The origin's rounding to
 // float (½ ulp a coordinate) and Embree's float plane test (a few ulps of the vertices' magnitude) stay
 // below it, and it scales with the scene, so a scene and its copy scaled by 1e3 render alike.
 inline double surfaceMargin(double maxAbs) { return 0x1p-19 * maxAbs; }
