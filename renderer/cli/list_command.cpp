@@ -7,6 +7,7 @@
 #include "materials/params/material_file.h"
 #include "renderer/cli/command.h"
 #include "renderer/sheet/comparison_grid.h"
+#include "renderer/util/data_dir.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -57,7 +58,7 @@ int runList(const ListOptions& o) {
   const std::vector<SheetPanel> columns = o.panelsOption->count() == 0 ? std::vector<SheetPanel>(sheetPanels().begin(), sheetPanels().end())
                                                                        : parsePanels(o.panels, "--panels");
   const auto files = materialFiles(o.paths);
-  if (files.empty()) throw InputError((o.paths.empty() ? defaultMaterialsDir().string() : o.paths.front()) + ": no .toml material files");
+  if (files.empty()) throw InputError((o.paths.empty() ? materialLibraryDir().string() : o.paths.front()) + ": no .toml material files");
 
   std::printf("Head-on directional albedo a(N) = ∫ρ(L,N) cos θ_L dω_L of each fit (mean of R, G, B), a section\n"
               "per database folder; 'measured' says whether the material's MERL table was found (--merl-dir,\n"

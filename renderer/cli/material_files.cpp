@@ -6,16 +6,10 @@
 
 namespace glossy::cli {
 
-std::filesystem::path defaultMaterialsDir() {
-  std::error_code ec;
-  if (std::filesystem::exists("materials/library/merl/alum-bronze.toml", ec)) return "materials/library";
-  return dataDir() / "materials/library";
-}
-
 std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>& paths) {
   std::vector<std::filesystem::path> files;
   std::error_code ec;
-  for (const std::string& p : paths.empty() ? std::vector<std::string>{defaultMaterialsDir().string()} : paths) {
+  for (const std::string& p : paths.empty() ? std::vector<std::string>{materialLibraryDir().string()} : paths) {
     if (!std::filesystem::is_directory(p, ec)) {
       files.emplace_back(p);
       continue;

@@ -83,4 +83,5 @@ PYBIND11_MODULE(_core, m) {
   bindBrdfs(m);
   bindFitting(m);
   bindRendering(m);
+  bindStudies(m);
 }

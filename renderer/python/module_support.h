@@ -23,6 +23,7 @@ namespace py = pybind11;
 void bindBrdfs(py::module_& m);
 void bindFitting(py::module_& m);
 void bindRendering(py::module_& m);
+void bindStudies(py::module_& m);
 
 // Hands the library's queued notes to Python as warnings, glossy.GlossyWarning (needs the GIL).
 void warnNotes();

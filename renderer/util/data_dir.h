@@ -8,6 +8,9 @@
 namespace glossy {
 
 std::filesystem::path dataDir();
+// The material library: the working folder's materials/library when it is a checkout's (a relative path, as
+// the user would write it), else the one in dataDir().
+std::filesystem::path materialLibraryDir();
 // Not synchronised with readers: set it before anything loads a scene.
 void setDataDir(std::filesystem::path dir);
 

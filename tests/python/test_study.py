@@ -126,3 +126,80 @@ def test_the_docs_study_example_runs_and_agrees_with_the_results(study_folder, c
         assert line.split()[0] == model["label"].split()[0], line
         # The mean r* recomputed from the rows is the one results.json reports.
         assert line.endswith(f"mean r* {model['meanRrmse']['estimate']:.4f}"), line
+
+
+def outputs(folder):
+    """Every file under `folder` (relative path: bytes), but the sheets' EXRs, which record their render time."""
+    return {p.relative_to(folder).as_posix(): p.read_bytes() for p in sorted(folder.rglob("*"))
+            if p.is_file() and p.suffix != ".exr"}
+
+
+def test_glossy_study_writes_the_commands_bytes_whole_and_in_shards(study_folder, tmp_path):
+    file = tmp_path / "tiny.toml"
+    file.write_text(TINY_STUDY)
+    whole = glossy.study(file, tmp_path / "whole")
+    assert isinstance(whole, glossy.Study)
+    # The command's run (the fixture) read the same study file text from another folder: same bytes but
+    # for the path study.json records.
+    ours, theirs = outputs(tmp_path / "whole"), outputs(study_folder)
+    assert ours.keys() == theirs.keys()
+    for name in ours:
+        if name != "study.json":
+            assert ours[name] == theirs[name], name
+    assert whole.results == glossy.read_study(study_folder).results
+    assert glossy.study(file, tmp_path / "sharded", shard="0/2") is None
+    with pytest.raises(RuntimeError, match="not every sheet is complete"):
+        glossy.study(file, tmp_path / "sharded", analyse=True)
+    assert glossy.study(file, tmp_path / "sharded", shard="1/2") is None
+    sharded = glossy.study(file, tmp_path / "sharded", analyse=True)
+    assert outputs(tmp_path / "sharded") == ours
+    assert sharded.results == whole.results
+    # Run again: every sheet is complete, nothing is rendered, the same analysis is written.
+    again = glossy.study(file, tmp_path / "whole", threads=1)
+    assert outputs(tmp_path / "whole") == ours and again.summary == whole.summary
+
+
+def test_glossy_study_refuses_bad_input_before_any_work_naming_the_keyword(tmp_path):
+    file = tmp_path / "tiny.toml"
+    file.write_text(TINY_STUDY)
+    for kwargs, message in [({"threads": -1}, r"^threads: must be a whole number in \[0, "),
+                            ({"threads": 1.5}, r"^threads: must be a whole number"),
+                            ({"shard": "3/2"}, r"^shard: '3/2' is not i/N"),
+                            ({"shard": "0/2", "analyse": True}, r"^analyse: analyses the whole study, not a shard"),
+                            ({"merl_dir": tmp_path / "absent"}, r"absent")]:
+        with pytest.raises(glossy.InputError, match=message):
+            glossy.study(file, tmp_path / "out", **kwargs)
+        assert not (tmp_path / "out").exists(), kwargs
+    (tmp_path / "bad.toml").write_text(TINY_STUDY.replace("spp = 16", "spp = -1"))
+    with pytest.raises(glossy.InputError, match=r"bad\.toml:\d+: settings\.spp"):
+        glossy.study(tmp_path / "bad.toml", tmp_path / "out")
+    assert not (tmp_path / "out").exists()
+    (tmp_path / "mine").mkdir()
+    (tmp_path / "mine" / "notes.txt").write_text("the user's")
+    with pytest.raises(glossy.InputError, match=r"mine"):
+        glossy.study(file, tmp_path / "mine")
+    assert [p.name for p in (tmp_path / "mine").iterdir()] == ["notes.txt"]
+
+
+def test_ctrl_c_stops_a_study_and_a_second_call_resumes_it(tmp_path):
+    import os
+    import signal
+    import threading
+    import time
+    file = tmp_path / "slow.toml"
+    file.write_text(TINY_STUDY.replace("spp = 16", "spp = 4096").replace("width = 16\nheight = 16", "width = 64\nheight = 64"))
+    timer = threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        glossy.study(file, tmp_path / "out")
+    timer.join()
+    scale = float(os.environ.get("GLOSSY_TEST_TIME_SCALE", "1"))
+    assert time.monotonic() - start < 10 * scale  # the sheet in progress stopped at its next tile
+    # What it left is a study folder of this study, no sheet half-written: the next call takes it up.
+    assert (tmp_path / "out" / "study.json").is_file()
+    assert not list((tmp_path / "out").rglob("*.tmp*"))
+    # An edited study file is the same study (study_plan.h): its sheets of other settings render again.
+    file.write_text(TINY_STUDY)
+    resumed = glossy.study(file, tmp_path / "out")
+    assert len(resumed.rows["material"]) == 12 and (resumed.rows["spp"] == 16).all()

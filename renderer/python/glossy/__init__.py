@@ -26,9 +26,9 @@ if _core._pybind11_version < (2, 12) and int(_np.__version__.split(".")[0]) >= 2
 if (_Path(__file__).parent / "data" / "scenes").is_dir():
     _core._set_data_dir(str(_Path(__file__).parent / "data"))
 
-from ._study import Study, read_study  # noqa: E402 (after the NumPy check above)
+from ._study import Study, read_study, study  # noqa: E402 (after the NumPy check above)
 
-__all__ = sorted(["__version__", "Study", "read_study"] + [_name for _name in vars(_core) if not _name.startswith("_")])
+__all__ = sorted(["__version__", "Study", "read_study", "study"] + [_name for _name in vars(_core) if not _name.startswith("_")])
 
 # Tracebacks and help() name them glossy.X, as users write them.
 for _name in __all__:

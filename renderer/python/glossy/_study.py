@@ -76,6 +76,27 @@ class Study:
     """summary.md."""
 
 
+def study(file, output, *, shard=None, analyse=False, merl_dir=None, threads=None):
+    """Runs a study as `glossy study FILE -o OUTPUT` does — the same checks, sheets and analysis, the same
+    bytes in OUTPUT — and returns its results, read_study(OUTPUT). Sheets already complete are kept, so a
+    run stopped by Ctrl-C resumes where it was.
+
+    shard: "i/N" renders only shard i (0-based) of N, the sheets split by expected cost, and returns None:
+    once every shard is done, study(file, output, analyse=True) analyses them (every sheet must be
+    complete); None: the job array's task when run as one (Slurm, a Kubernetes indexed Job, AWS Batch;
+    docs/cluster.md), else every sheet. merl_dir: MERL tables (else $GLOSSY_MERL_DIR). threads: unset, the
+    study file's settings.threads. Raises InputError (the command's one line) for bad input, before any work, and
+    RuntimeError when sheets are still being written by another run or, with analyse, are not complete."""
+    ended, _summary = _core._study(file, output, shard=shard, analyse=analyse, merl_dir=merl_dir, threads=threads)
+    if ended == "analysed":
+        return read_study(output)
+    if ended == "shard done":
+        return None
+    if ended == "busy":
+        raise RuntimeError(f"{_safe(output)}: some sheets are being written by another run; run again to analyse")
+    raise RuntimeError(f"{_safe(output)}: not every sheet is complete: render them first (study without analyse)")
+
+
 def read_study(folder):
     """Reads what `glossy study STUDY -o FOLDER` (or `glossy.study`) wrote: its plan, its rows as NumPy
     arrays and its results as dicts. Raises InputError naming the file when the folder is not an analysed
