@@ -9,6 +9,8 @@
 #include "renderer/sheet/comparison_grid.h"
 #include "renderer/util/data_dir.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -25,7 +27,22 @@ struct ListOptions {
   std::string merlDir;
   std::string panels;
   CLI::Option* panelsOption = nullptr;
+  bool grid = false;
 };
+
+// The comparison grid's table as JSON, a row per panel (glossy.comparison_grid() gives the same rows): what
+// scripts read instead of restating the grid or its colours.
+int printGrid() {
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  const auto row = [&](const SheetPanel& p, bool inGrid) {
+    rows.push_back({{"fit", p.fit.empty() ? std::string("measured") : p.fit}, {"layer", p.layer}, {"label", p.label},
+                    {"colour", p.colour}, {"default", inGrid}});
+  };
+  row(SheetPanel::measured(), true);
+  for (const GridFit& g : gridFits()) row(SheetPanel::ofFit(FitId::parse(g.fit, "the sheet grid")), g.inGrid);
+  std::cout << rows.dump(1) << "\n";
+  return 0;
+}
 
 // A column per fit of the sheets' comparison grid.
 int width(const SheetPanel& column) { return std::max(9, int(column.label.size())); }
@@ -54,6 +71,7 @@ std::string databaseLabel(const std::filesystem::path& folder) {
 }
 
 int runList(const ListOptions& o) {
+  if (o.grid) return printGrid();
   // The grid's fits, or the fits --panels names (those outside the grid: Ngan et al.'s, glossy's own).
   const std::vector<SheetPanel> columns = o.panelsOption->count() == 0 ? std::vector<SheetPanel>(sheetPanels().begin(), sheetPanels().end())
                                                                        : parsePanels(o.panels, "--panels");
@@ -133,6 +151,10 @@ Command addListCommand(CLI::App& parent) {
   o->panelsOption = app->add_option("--panels", o->panels,
                                     "Columns instead of the grid's fits: a comma list of MODEL:METRIC[:glossy], e.g. "
                                     "ward:Ngan05,blinn-phong:Ngan05 (Ngan et al. 2005's published fits)");
+  app->add_flag("--grid", o->grid,
+                "Print the comparison grid's table instead, as JSON: a row per panel (fit, EXR layer, label, colour, whether "
+                "the default grid shows it), in the grid's order")
+      ->excludes(o->panelsOption);
   return {app, [o] { return runList(*o); }};
 }
 

@@ -1,5 +1,6 @@
 """glossy.render and glossy.sheet: the images of `glossy render` and `glossy sheet`, bit for bit, with a
 progress callback, Ctrl-C, the GIL released while they work, and the command line's messages."""
+import json
 import os
 import signal
 import subprocess
@@ -204,6 +205,8 @@ def test_sheet_panels_are_the_cli_panels_and_the_grid_is_the_sheets(tmp_path):
     assert [row["colour"] for row in default][:2] == ["#000000", "#e69f00"]
     assert {"fit", "layer", "label", "colour", "default"} == set(grid[0])
     assert any(row["fit"] == "smooth:E1" and not row["default"] for row in grid)
+    # The command gives scripts the same table, row for row.
+    assert json.loads(run_cli("list", "--grid").stdout) == grid
 
 
 def test_read_exr_refuses_a_fifo_at_once(tmp_path):
