@@ -379,6 +379,43 @@ TEST(StudyAnalysis, RowsWithoutAnImageErrorAreSkippedAndCounted) {
   EXPECT_EQ(test::readCsv(dir / "rows.csv").size(), 96u);  // still listed, with the figure empty
 }
 
+TEST(StudyAnalysis, VerdictCountsSayHowManySheetsDecidedAndClampedEstimatesAreMarked) {
+  TempDir dir;
+  auto rows = syntheticStudy();  // 24 sheets: 22 name Microfacet E2 closest, 2 a tie
+  for (auto& r : rows)
+    if (r.material == kMaterials[5] && r.lighting == "sky") r.closest = false;  // a sheet without a verdict
+  int clamped = 0;
+  for (auto& r : rows)
+    if (r.label == "Smooth E2" && clamped < 2) {
+      r.rrmse = r.rrmseLo = 0.0;
+      r.rrmseClamped = true;
+      ++clamped;
+    }
+  const auto res = analyseStudy(rows, fastOptions(), dir.path());
+  const Json r = results(dir);
+  EXPECT_EQ(r["counts"]["sheetsDecided"], 21);
+  EXPECT_EQ(r["counts"]["sheetsTied"], 2);
+  EXPECT_EQ(r["counts"]["sheetsWithoutVerdict"], 1);
+  EXPECT_EQ(r["counts"]["rowsRrmseClamped"], 2);
+  EXPECT_EQ(modelEntry(r, "Smooth E2")["rrmseClamped"], 2);
+  EXPECT_EQ(modelEntry(r, "Microfacet E2")["rrmseClamped"], 0);
+  EXPECT_NE(res.summary.find("Verdicts: 21 of 24 sheets name one closest model, 2 a tie, 1 none"), std::string::npos) << res.summary;
+  EXPECT_NE(res.summary.find("; 2 r* clamped to 0"), std::string::npos) << res.summary;
+  EXPECT_NE(res.summary.find("Smooth E2: closest on 0 of 24 sheets, tied on 2; mean rank"), std::string::npos) << res.summary;
+  EXPECT_NE(res.summary.find("r* clamped to 0 on 2\n"), std::string::npos) << res.summary;
+  // The rows mark them: 1 in rows.csv, true in rows.json, for those two rows only.
+  const auto csv = test::readCsv(dir / "rows.csv");
+  int marked = 0;
+  for (const auto& row : csv) {
+    marked += row.at("rrmse_clamped") == "1" ? 1 : 0;
+    if (row.at("rrmse_clamped") == "1") EXPECT_EQ(row.at("rrmse"), "0");
+  }
+  EXPECT_EQ(marked, 2);
+  int inJson = 0;
+  for (const Json& row : Json::parse(test::readText(dir / "rows.json"))) inJson += row["rrmseClamped"].get<bool>() ? 1 : 0;
+  EXPECT_EQ(inJson, 2);
+}
+
 TEST(StudyAnalysis, UndefinedStatisticsAreNullWithAReasonNeverNaN) {
   TempDir dir;
   auto rows = syntheticStudy();

@@ -398,13 +398,14 @@ Json perModel(const Study& s, const RankTests& t, const AnalysisOptions& o, std:
   Json out = Json::array();
   meanIv.clear();
   for (std::size_t k = 0; k < s.models.size(); ++k) {
-    int sheets = 0, closest = 0, tied = 0, warned = 0;
+    int sheets = 0, closest = 0, tied = 0, warned = 0, clamped = 0;
     for (const auto& [key, sheet] : s.sheets)
       if (const auto it = sheet.find(s.models[k]); it != sheet.end()) {
         ++sheets;
         closest += it->second->closest ? 1 : 0;
         tied += it->second->tied ? 1 : 0;
         warned += it->second->warning.empty() ? 0 : 1;
+        clamped += it->second->rrmseClamped ? 1 : 0;
       }
     std::vector<std::size_t> have;
     for (std::size_t i = 0; i < s.materials.size(); ++i)
@@ -427,6 +428,7 @@ Json perModel(const Study& s, const RankTests& t, const AnalysisOptions& o, std:
     j["closest"] = closest;
     j["tied"] = tied;
     j["sheetsWithWarning"] = warned;
+    j["rrmseClamped"] = clamped;
     j["materials"] = int(have.size());
     j["meanRank"] = t.friedman ? Json(t.friedman->meanRanks[k]) : Json(nullptr);
     j["meanRrmse"] = intervalJson(mean);
@@ -758,6 +760,23 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   counts["materials"] = int(s.materials.size());
   counts["sheets"] = int(s.sheets.size());
   counts["models"] = int(s.models.size());
+  // How many sheets decided: a verdict that names one model, a tie, or none (the intervals do not part the
+  // models, or the sheet warns that they may be too narrow); and the r* that are 0 by clamping.
+  int decided = 0, tiedSheets = 0, clamped = 0;
+  for (const auto& [key, sheet] : s.sheets) {
+    bool one = false, tie = false;
+    for (const auto& [model, row] : sheet) {
+      one = one || row->closest;
+      tie = tie || row->tied;
+      clamped += row->rrmseClamped ? 1 : 0;
+    }
+    decided += one ? 1 : 0;
+    tiedSheets += !one && tie ? 1 : 0;
+  }
+  counts["sheetsDecided"] = decided;
+  counts["sheetsTied"] = tiedSheets;
+  counts["sheetsWithoutVerdict"] = int(s.sheets.size()) - decided - tiedSheets;
+  counts["rowsRrmseClamped"] = clamped;
   results["counts"] = counts;
   results["materials"] = perMaterial(s);
 
@@ -820,11 +839,17 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
                         " sheets, " + std::to_string(s.models.size()) + " models; " + std::to_string(s.used.size()) + " rows used";
   if (s.skipped) summary += ", " + std::to_string(s.skipped) + " without rRMSE skipped";
   summary += ".\n";
+  summary += "Verdicts: " + std::to_string(decided) + " of " + std::to_string(s.sheets.size()) + " sheets name one closest model, " +
+             std::to_string(tiedSheets) + " a tie, " + std::to_string(int(s.sheets.size()) - decided - tiedSheets) +
+             " none (intervals that do not part the models, or a warning that they may be too narrow)";
+  if (clamped > 0) summary += "; " + std::to_string(clamped) + " r* clamped to 0 (the model within the render noise), ranked as 0";
+  summary += ".\n";
   for (const Json& m : models)
     summary += "  " + m["label"].get<std::string>() + ": closest on " + std::to_string(m["closest"].get<int>()) + " of " +
                std::to_string(m["sheets"].get<int>()) + " sheets, tied on " + std::to_string(m["tied"].get<int>()) +
                "; mean rank " + (m["meanRank"].is_null() ? std::string("—") : formatted("%.2f", m["meanRank"].get<double>())) +
-               "; mean rRMSE " + intervalCell(m["meanRrmse"]) + "\n";
+               "; mean rRMSE " + intervalCell(m["meanRrmse"]) +
+               (m["rrmseClamped"].get<int>() > 0 ? "; r* clamped to 0 on " + std::to_string(m["rrmseClamped"].get<int>()) : "") + "\n";
   if (t.friedmanTested) {
     summary += formatted("Friedman χ² = %.3f (df %d), p = %.3g", t.friedman->chiSquare, t.friedman->treatments - 1, t.friedman->pChiSquare);
     if (t.friedman->pF) summary += formatted("; Iman–Davenport F p = %.3g", *t.friedman->pF);

@@ -26,6 +26,9 @@ struct StudyRow {
   // measured panel with their 95 % intervals (absent where the sheet has none).
   std::optional<double> e1, e2;
   std::optional<double> rrmse, rrmseLo, rrmseHi;  // noise-free relative RMSE r*
+  // r* is 0 by clamping: the noise-free estimate of its square came out negative (the model is within the
+  // render noise of the measured panel). Ranked as 0, drawn as 0, and counted (results.json).
+  bool rrmseClamped = false;
   std::optional<double> flip, flipLo, flipHi;     // mean HDR-ꟻLIP over the object
   std::optional<double> luminanceRatio;
   // The sheet's verdict as it concerns this model.

@@ -83,6 +83,7 @@ std::vector<StudyRow> sheetRows(const report::SheetRecord& sheet, const PlannedM
     r.rrmse = p.relativeRmse.value;
     r.rrmseLo = p.relativeRmse.lo;
     r.rrmseHi = p.relativeRmse.hi;
+    r.rrmseClamped = p.relativeRmse.value && p.noiseFree.starts_with("clamped");
     r.flip = p.flip.value;
     r.flipLo = p.flip.lo;
     r.flipHi = p.flip.hi;

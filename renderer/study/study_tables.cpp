@@ -56,6 +56,7 @@ const Column kColumns[] = {
     {"rrmse", "rrmse", [](const StudyRow& r) { return num(r.rrmse); }},
     {"rrmse_lo", "rrmseLo", [](const StudyRow& r) { return num(r.rrmseLo); }},
     {"rrmse_hi", "rrmseHi", [](const StudyRow& r) { return num(r.rrmseHi); }},
+    {"rrmse_clamped", "rrmseClamped", [](const StudyRow& r) { return Json(r.rrmseClamped); }},
     {"flip", "flip", [](const StudyRow& r) { return num(r.flip); }},
     {"flip_lo", "flipLo", [](const StudyRow& r) { return num(r.flipLo); }},
     {"flip_hi", "flipHi", [](const StudyRow& r) { return num(r.flipHi); }},

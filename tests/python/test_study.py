@@ -69,6 +69,11 @@ def test_the_rows_are_rows_csv_column_for_column(study_folder):
     assert study.rows["closest"].dtype == bool
     assert study.rows["spp"].dtype == np.int64
     assert set(study.rows["material"]) == {"gold-paint", "bluebook"}
+    # r* that the sheets clamped to 0 (their noise-free estimate came out negative) are marked as such.
+    clamped = study.rows["rrmse_clamped"]
+    assert clamped.dtype == bool and clamped.any()  # at 16² and 16 spp some model is within the noise
+    assert (study.rows["rrmse"][clamped] == 0).all()
+    assert study.results["counts"]["rowsRrmseClamped"] == clamped.sum()
 
 
 def test_results_plan_and_summary_are_the_files(study_folder):
