@@ -1,11 +1,13 @@
 // The glossy command as the interface contract states it: eval (test vectors, --pdf), import (the
 // committed library regenerates byte for byte), exit status 2 with one line naming the file for bad input.
 #include "materials/params/material_file.h"
+#include "renderer/sheet/comparison_grid.h"
 #include "tests/support/test_support.h"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 #include <cmath>
 
@@ -283,6 +285,32 @@ TEST(CliList, ListsTheFitsPanelsNames) {
   EXPECT_NE(r.out.find("Ward Ngan05"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("100 materials, 86 of the named fits"), std::string::npos) << r.out;
   expectOneLineError(runGlossy({"list", "--panels", "ward:E7", materialsDir().string()}), "--panels");
+}
+
+// A grid's name stands for its panels wherever panels are named; every fit of a named grid has a colour of
+// its own (not the grey of a fit the table lacks); an unknown word is refused naming the grids.
+TEST(CliList, NamedGridsAreTheirPanelsEachInItsOwnColour) {
+  const RunResult people = runGlossy({"list", "--panels", "lavoue2021", materialsDir().string()});
+  ASSERT_EQ(people.status, 0) << people.err;
+  for (const char* column : {"Microfacet E2", "Smooth E2", "Ward Ngan05", "BP Ngan05", "Lafortune Ngan05", "SGD Bagher12"})
+    EXPECT_NE(people.out.find(column), std::string::npos) << column << ": " << people.out;
+  // 100 materials × ABC's two + Bagher's 100 + 86 each of Ngan's three.
+  EXPECT_NE(people.out.find("100 materials, " + std::to_string(200 + 100 + 3 * 86) + " of the named fits"), std::string::npos) << people.out;
+  const RunResult supplement = runGlossy({"list", "--panels", "supplement", materialsDir().string()});
+  const RunResult byDefault = runGlossy({"list", materialsDir().string()});
+  ASSERT_EQ(supplement.status, 0) << supplement.err;
+  // The same table (its last line says "named" for a --panels list where the default says "the grid's").
+  const auto table = [](const std::string& out) { return out.substr(out.find("\n\n"), out.rfind("\n\n") - out.find("\n\n")); };
+  EXPECT_TRUE(table(supplement.out) == table(byDefault.out));
+  for (const NamedGrid& g : namedGrids()) {
+    std::set<std::string> colours;
+    for (const SheetPanel& p : parsePanels(g.name, "--panels")) {
+      EXPECT_NE(p.colour, "#999999") << g.name << ": " << p.fit << " has no colour of its own";
+      EXPECT_TRUE(colours.insert(p.colour).second) << g.name << ": " << p.fit << " shares its colour";
+    }
+  }
+  expectOneLineError(runGlossy({"list", "--panels", "people", materialsDir().string()}),
+                     "--panels: 'people' is not a grid (supplement, lavoue2021, ngan05)");
 }
 
 // `glossy eval` reaches Ngan et al.'s and Bagher et al.'s fits by MODEL:Ngan05 and sgd:Bagher12, with the value the

@@ -149,8 +149,8 @@ Command addListCommand(CLI::App& parent) {
                   "a section per database)");
   app->add_option("--merl-dir", o->merlDir, "Folder holding the MERL .binary tables");
   o->panelsOption = app->add_option("--panels", o->panels,
-                                    "Columns instead of the grid's fits: a comma list of MODEL:METRIC[:glossy], e.g. "
-                                    "ward:Ngan05,blinn-phong:Ngan05 (Ngan et al. 2005's published fits)");
+                                    "Columns instead of the grid's fits: a grid's name (" + gridNames() + ") or a comma list of "
+                                    "MODEL:METRIC[:glossy], e.g. ward:Ngan05,blinn-phong:Ngan05 (Ngan et al. 2005's published fits)");
   app->add_flag("--grid", o->grid,
                 "Print the comparison grid's table instead, as JSON: a row per panel (fit, EXR layer, label, colour, whether "
                 "the default grid shows it), in the grid's order")

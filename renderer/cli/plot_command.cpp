@@ -94,8 +94,8 @@ Command addPlotCommand(CLI::App& parent) {
       ->check(CLI::IsMember({"R", "G", "B", "luminance"}))
       ->capture_default_str();
   o->panelsOption = app->add_option("--panels", o->panels,
-                  "The BRDFs to draw, as a sheet's --panels: a comma list of measured and MODEL:METRIC fits, in order; "
-                  "default: " + panelList(sheetPanels()));
+                  "The BRDFs to draw, as a sheet's --panels: a grid's name (" + gridNames() + ") or a comma list of "
+                  "measured and MODEL:METRIC fits, in order; default: " + panelList(sheetPanels()));
   app->add_option("--figures", o->figures, "Only these kinds of figure (default: all): theta_h, image_slice, albedo, polar")
       ->check(CLI::IsMember(std::vector<std::string>(plot::kPlotKinds.begin(), plot::kPlotKinds.end())))
       ->delimiter(',');

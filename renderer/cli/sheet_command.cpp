@@ -41,8 +41,9 @@ void addRenderOptions(CLI::App* app, SheetOptions& o) {
   for (const OptionField& f : sheetOptionFields(o)) addOption(app, f);
   o.spp = app->get_option("--spp");
   o.panelsOption = app->add_option("--panels", o.panels,
-                                   "The panels, a comma list of measured and MODEL:METRIC fits of any model glossy knows, "
-                                   "in order; default: " + panelList(sheetPanels()));
+                                   "The panels: a grid's name (" + gridNames() + "; docs/sheets.md) or a comma list of measured and "
+                                   "MODEL:METRIC fits of any model glossy knows, in order; default: the supplement's, " +
+                                   panelList(sheetPanels()));
   app->add_flag("--half", o.half, "Write half-float EXR (default: float); values above 65504 are clipped to it, and counted on stderr");
 }
 

@@ -335,8 +335,8 @@ model's error figures with 95 % intervals. spp (default 64) is split among 4 ind
 time (seconds per panel) or target_error (the widest interval's half-width) render in passes until met;
 target_error alone stops at 4096 spp (spp sets another cap), with a GlossyWarning when it stops short.
 measured: the data for the measured panel (default: the one the material names, then the network
-embedded beside it). panels: "measured,MODEL:METRIC,..." as `glossy sheet --panels` (default: the
-supplement's grid, glossy.comparison_grid()). progress(done, total) and Ctrl-C as in render(); total is 0 while unknown (time,
+embedded beside it). panels: a grid's name ("lavoue2021", "ngan05") or "measured,MODEL:METRIC,..." as
+`glossy sheet --panels` (default: the supplement's grid, glossy.comparison_grid()). progress(done, total) and Ctrl-C as in render(); total is 0 while unknown (time,
 target_error). output: also write the EXR and PNG (or call Sheet.save later).
 )doc");
 

@@ -38,9 +38,19 @@ std::span<const GridFit> gridFits();
 // The supplement's grid, the default panels: Measured, then its six fits in its order.
 std::span<const SheetPanel> sheetPanels();
 
-// The panels --panels names: a comma list of "measured" and MODEL:METRIC fits, in the order given.
-// InputError naming `option` and the value for an empty list or item, an unknown model or metric, or a
-// panel named twice.
+// A grid --panels takes by its name, beside the supplement's: the panels a question needs (namedGrids()).
+struct NamedGrid {
+  std::string_view name;
+  std::string_view panels;  // as --panels takes them; empty: the supplement's grid, sheetPanels()
+  std::string_view description;
+};
+std::span<const NamedGrid> namedGrids();
+// Their names for help and messages: "supplement, lavoue2021, ngan05".
+std::string gridNames();
+
+// The panels --panels names: a grid's name (namedGrids()), or a comma list of "measured" and MODEL:METRIC
+// fits, in the order given. InputError naming `option` and the value for an empty list or item, an
+// unknown model or metric, or a panel named twice.
 std::vector<SheetPanel> parsePanels(std::string_view list, const std::string& option);
 // The list back, as parsePanels reads it: "measured,microfacet:E2,...".
 std::string panelList(std::span<const SheetPanel> panels);
