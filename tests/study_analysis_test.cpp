@@ -408,7 +408,9 @@ TEST(StudyAnalysis, VerdictCountsSayHowManySheetsDecidedAndClampedEstimatesAreMa
   int marked = 0;
   for (const auto& row : csv) {
     marked += row.at("rrmse_clamped") == "1" ? 1 : 0;
-    if (row.at("rrmse_clamped") == "1") EXPECT_EQ(row.at("rrmse"), "0");
+    if (row.at("rrmse_clamped") == "1") {
+      EXPECT_EQ(row.at("rrmse"), "0");
+    }
   }
   EXPECT_EQ(marked, 2);
   int inJson = 0;

@@ -54,6 +54,14 @@ const std::vector<PerceptualFit>& perceptualFits() {
   return fits;
 }
 
+const std::vector<PerceptualFit>& judgedApproximations() {
+  static const std::vector<PerceptualFit> fits = {{"WARD", "ward:Ngan05", "published"},
+                                                  {"BLINN-PHONG", "blinn-phong:Ngan05", "published"},
+                                                  {"LAFORTUNE", "lafortune:Ngan05", "published"},
+                                                  {"SGD", "sgd:Bagher12", "published"}};
+  return fits;
+}
+
 std::string perceptualName(const std::string& material) {
   std::string s = material;
   for (char& c : s)
@@ -113,6 +121,11 @@ std::optional<double> PerceptualData::distance(const std::string& method, const 
   for (const std::string& name : {material, perceptualName(material)})
     if (const auto it = m->second.find(name); it != m->second.end()) return it->second;
   return std::nullopt;
+}
+
+std::size_t PerceptualData::materialCount(const std::string& method) const {
+  const auto m = distances_.find(method);
+  return m == distances_.end() ? 0 : m->second.size();
 }
 
 }  // namespace glossy::study

@@ -23,6 +23,11 @@ struct PerceptualFit {
   std::string fitSource;  // StudyRow::fitSource: "published"
 };
 const std::vector<PerceptualFit>& perceptualFits();
+// The other approximations the dataset judged whose parameters are published and in glossy's library, each
+// with the fit its rows judge: Ngan et al. 2005's Ward, Blinn-Phong and Lafortune (the dataset's 86
+// materials are the 86 Ngan fitted) and Bagher et al. 2012's SGD ("SGD"; the dataset's "BAGHER" rows are
+// Bagher et al.'s 2016 non-parametric model, which glossy does not have).
+const std::vector<PerceptualFit>& judgedApproximations();
 
 class PerceptualData {
  public:
@@ -37,6 +42,8 @@ class PerceptualData {
   std::string materialClass(const std::string& material) const;
   // The perceived distance of `method` from `material` (0 = indistinguishable, 1 = most different), if given.
   std::optional<double> distance(const std::string& method, const std::string& material) const;
+  // How many materials the dataset gives `method` for.
+  std::size_t materialCount(const std::string& method) const;
 
  private:
   std::map<std::string, std::map<std::string, double>> distances_;  // method → material → distance

@@ -15,6 +15,7 @@
 #include "renderer/study/study_latex.h"
 #include "renderer/study/study_lighting.h"
 #include "renderer/study/study_methods.h"
+#include "renderer/study/study_people.h"
 #include "renderer/study/study_provenance.h"
 #include "renderer/study/study_tables.h"
 #include "renderer/study/study_statistics.h"
@@ -833,6 +834,12 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   std::vector<PerceptualSeries> series;
   step(5, "against people");
   results["againstPeople"] = againstPeople(s, options, peopleHeadline, series);
+  if (!options.perceptualDir.empty()) {
+    const PeopleAnalysis within = closestToPeople(s.used, PerceptualData::read(options.perceptualDir), options.resamples, options.seed);
+    results["againstPeople"]["withinMaterial"] = within.json;
+    peopleHeadline += (peopleHeadline.empty() ? "" : "\n") + within.headline;
+    if (!peopleHeadline.empty() && peopleHeadline.back() == '\n') peopleHeadline.pop_back();
+  }
 
   // The headline.
   std::string summary = "Study: " + std::to_string(s.materials.size()) + " materials, " + std::to_string(s.sheets.size()) +
