@@ -9,28 +9,10 @@ import numpy as np
 import pytest
 
 import glossy
-from conftest import run_cli
+from conftest import SOURCE_DIR, run_cli
 
-TINY_STUDY = """materials = ["merl/gold-paint", "nielsen2015/bluebook"]
-
-[lightings]
-sky = { sky = true }
-grey = { constant = [0.8, 0.8, 0.9] }
-
-[scenes]
-preview = { builtin = "preview" }
-
-[settings]
-width = 16
-height = 16
-spp = 16
-seed = 7
-threads = 2
-panels = "measured,microfacet:E2,smooth:E2,cook-torrance:E2"
-
-[analysis]
-resamples = 200
-"""
+# Two materials of two databases under two lightings, three models: seconds (docs/study.md shows it).
+TINY_STUDY = (SOURCE_DIR / "scenes" / "studies" / "tiny.toml").read_text()
 
 
 @pytest.fixture(scope="module")
@@ -117,7 +99,6 @@ def test_a_folder_that_is_not_an_analysed_study_is_one_line_naming_the_file(stud
 
 
 def test_the_docs_study_example_runs_and_agrees_with_the_results(study_folder, capsys):
-    from conftest import SOURCE_DIR
     import re
     text = (SOURCE_DIR / "docs" / "python.md").read_text()
     blocks = re.findall(r"```python study\n(.*?)```", text, flags=re.S)
@@ -192,7 +173,7 @@ def test_ctrl_c_stops_a_study_and_a_second_call_resumes_it(tmp_path):
     import threading
     import time
     file = tmp_path / "slow.toml"
-    file.write_text(TINY_STUDY.replace("spp = 16", "spp = 4096").replace("width = 16\nheight = 16", "width = 64\nheight = 64"))
+    file.write_text(TINY_STUDY.replace("spp = 16", "spp = 4096").replace("width = 32\nheight = 32", "width = 64\nheight = 64"))
     timer = threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT))
     start = time.monotonic()
     timer.start()
