@@ -89,178 +89,222 @@ std::string durationText(double seconds) {
   return formatted("%.1f h", seconds / 3600.0);
 }
 
-}  // namespace
-
-StudyRun runStudy(const StudyRequest& o) {
-  const StudyFile file = loadStudyFile(o.file, materialLibraryDir());
-  SheetJob job = file.job;
-  job.merlDir = o.merlDir;
-  if (o.threads) job.settings.threads = *o.threads;
-  job.settings.control = o.control;
-  job.settings.progress = false;
-  job.settings.passLines = true;
-  checkOutputFolder(o.out, o.outName);
-  const fs::path out = o.out;
-  // The plan this run renders and analyses, held here: never read back from OUT (study_folder.h).
-  const study::StudyPlan& plan = file.plan;
-  study::checkStudyFolder(out, plan);
-  try {
-    checkImageMemory(job.settings.width, job.settings.height, int(job.settings.panels.size()), kSheetBytesPerPanelPixel);
-  } catch (const InputError& e) {
-    throw InputError(o.file + ": settings: " + e.what());  // the study file's keys, not the command line's
+// The study of one run, in the order it goes: the study file and everything it names checked, every sheet
+// planned (all of them, not just this shard's: the other shards write to the same folder), the scenes' and
+// lightings' inputs known; then this run's sheets rendered; then, when every sheet is complete, the
+// analysis.
+class Study {
+ public:
+  explicit Study(const StudyRequest& o) : o_(o), file_(loadStudyFile(o.file, materialLibraryDir())), plan_(file_.plan), out_(o.out) {
+    job_ = file_.job;
+    job_.merlDir = o.merlDir;
+    if (o.threads) job_.settings.threads = *o.threads;
+    job_.settings.control = o.control;
+    job_.settings.progress = false;
+    job_.settings.passLines = true;
+    checkOutputFolder(o.out, o.outName);
+    // The plan this run renders and analyses, held here: never read back from OUT (study_folder.h).
+    study::checkStudyFolder(out_, plan_);
+    try {
+      checkImageMemory(job_.settings.width, job_.settings.height, int(job_.settings.panels.size()), kSheetBytesPerPanelPixel);
+    } catch (const InputError& e) {
+      throw InputError(o.file + ": settings: " + e.what());  // the study file's keys, not the command line's
+    }
+    if (o.analyseOnly && !o.shard.empty()) throw InputError("--analyse: analyses the whole study, not a shard (drop --shard)");
+    shard_ = o.analyseOnly ? Shard{} : shardFrom(o.shard);
+    planSheets();
+    loadInputs();
   }
-  if (o.analyseOnly && !o.shard.empty()) throw InputError("--analyse: analyses the whole study, not a shard (drop --shard)");
-  const Shard shard = o.analyseOnly ? Shard{} : shardFrom(o.shard);
 
-  // Every sheet, its cost and its place, checked before any work; all of them, not just this shard's: the
-  // other shards write to the same folder.
-  std::vector<MaterialFile> materials;
-  for (const study::PlannedMaterial& m : plan.materials) materials.push_back(loadMaterialFile(m.file));
-  // The figures the analysis ranks by are against the measured panel: without any material's measured
-  // data, every row would be skipped once every sheet had rendered.
-  if (std::none_of(materials.begin(), materials.end(),
-                   [&](const MaterialFile& m) { return resolveMeasured(m, job.merlDir).has_value(); }))
-    throw InputError(o.file + ": materials: none has its measured data here (MERL tables: --merl-dir or $GLOSSY_MERL_DIR): no sheet "
-                              "could measure a model");
-  std::vector<StudyItem> items;
-  std::vector<double> costs;
-  for (size_t s = 0; s < plan.scenes.size(); ++s)
-    for (size_t l = 0; l < plan.lightings.size(); ++l)
-      for (size_t m = 0; m < plan.materials.size(); ++m) {
-        const fs::path relative = study::sheetPath(plan.scenes[s], plan.lightings[l], plan.materials[m].name);
-        std::error_code ec;
-        for (const char* extension : {".exr", ".png"}) {
-          const fs::path p = (out / relative).replace_extension(extension);
-          checkWriteInside(out, p, o.outName);  // OUT/sheets/SCENE/LIGHTING a symlink out of OUT: refused, not followed
-          if (fs::exists(p, ec) && !fs::is_regular_file(p, ec))
-            throw InputError(p.string() + ": is in the way of a sheet of the study (not a file)");
+  // The analysis's cost, said before the sheets: a million resamples would otherwise be a silent hour at the
+  // end of the run.
+  double analysisSeconds() const {
+    const auto& panels = job_.settings.panels;
+    const size_t models = size_t(std::count_if(panels.begin(), panels.end(), [](const SheetPanel& p) { return !p.fit.empty(); }));
+    const double seconds = study::expectedAnalysisSeconds(file_.resamples, plan_.materials.size(), models);
+    if (shard_.source.empty() && seconds >= 60.0)
+      std::fprintf(stderr, "glossy study: the analysis will take about %s (analysis.resamples = %d over %zu materials and %zu models); "
+                           "fewer resamples make it quicker\n", durationText(seconds).c_str(), file_.resamples, plan_.materials.size(), models);
+    return seconds;
+  }
+
+  // This run's sheets (its shard's), each rendered unless complete; how many another run holds.
+  size_t renderMine() {
+    const std::vector<size_t> mine = shardItems(costs_, shard_, "glossy study", "sheets");
+    // The plan, so that the sheets read back into rows with nothing but OUT (every run writes the same
+    // bytes), and the folder's marker: from here, a run of another study is refused.
+    study::claimStudyFolder(out_, plan_);
+    if (o_.analyseOnly) return 0;
+    std::vector<double> myCosts;
+    for (size_t k : mine) myCosts.push_back(costs_[k]);
+    const size_t busy = renderBatch(
+        myCosts, [&](size_t n) { return items_[mine[n]].tag; },
+        [&](size_t n, const std::string& tag) {
+          const StudyItem& item = items_[mine[n]];
+          return renderBatchSheet(inputsOf(item), [&]() -> const Stage& { return stageOf(item); }, plan_.materials[item.material].file,
+                                  jobOf(item), item.exr, tag);
+        },
+        "glossy study", o_.out);
+    stage_.reset();
+    return busy;
+  }
+
+  bool isShard() const { return !shard_.source.empty(); }
+  size_t sheets() const { return items_.size(); }
+  fs::path analysisFolder() const { return out_ / study::kAnalysisFolder; }
+
+  // The analysis stands on every sheet, each complete with this study's settings: how many are not, and
+  // why the first is not.
+  size_t incomplete(std::string& first) const {
+    size_t missing = 0;
+    for (const StudyItem& item : items_) {
+      const std::string why =
+          whyIncomplete(item.exr, sheetSettings(materials_[item.material], inputsOf(item), jobOf(item), ""), job_.settings);
+      if (!why.empty() && missing++ == 0) first = item.tag + ": " + why;
+    }
+    return missing;
+  }
+
+  // The sheets read back into rows and analysed into OUT/analysis, written whole: into a fresh folder, then
+  // swapped in, so that it is always one run's — no file of an earlier run left beside this one's (a
+  // perceptual.svg from before the perceptual data was dropped), none of this run's beside an earlier one's
+  // if it fails half-way. Analyses of one folder take turns.
+  StudyRun analyse(double expectedSeconds) const {
+    const std::vector<study::StudyRow> rows = study::readStudyRows(out_, plan_);
+    study::AnalysisOptions analysis;
+    analysis.seed = job_.settings.seed;
+    analysis.resamples = file_.resamples;
+    analysis.perceptualDir = plan_.perceptualDir;
+    analysis.referenceModel = file_.referenceModel;
+    analysis.provenance = provenanceOf(file_, job_, materials_, environments_, sceneDigests_);
+    const auto start = std::chrono::steady_clock::now();
+    analysis.progress = [&](int step, int steps, const std::string& what) {
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::fprintf(stderr, "glossy study: analysis %d/%d: %s (%.0f s elapsed, about %s in all)\n", step, steps, what.c_str(), elapsed,
+                   durationText(expectedSeconds).c_str());
+    };
+    const fs::path folder = analysisFolder();
+    const OutputLock lock(folder, o_.outName, OutputLock::Busy::Wait);
+    checkWriteInside(out_, folder, o_.outName);
+    FreshFolder fresh(folder);
+    const study::AnalysisResult result = study::analyseStudy(rows, analysis, fresh.path());
+    fresh.replaceTarget();
+    std::fprintf(stderr, "glossy study: %zu rows of %zu sheets analysed into %s (%zu files)\n", rows.size(), items_.size(), folder.c_str(),
+                 result.files.size());
+    StudyRun run;
+    run.summary = result.summary;
+    run.rows = rows.size();
+    run.files = result.files.size();
+    return run;
+  }
+
+ private:
+  // Every sheet, its cost and its place, checked before any work.
+  void planSheets() {
+    for (const study::PlannedMaterial& m : plan_.materials) materials_.push_back(loadMaterialFile(m.file));
+    // The figures the analysis ranks by are against the measured panel: without any material's measured
+    // data, every row would be skipped once every sheet had rendered.
+    if (std::none_of(materials_.begin(), materials_.end(),
+                     [&](const MaterialFile& m) { return resolveMeasured(m, job_.merlDir).has_value(); }))
+      throw InputError(o_.file + ": materials: none has its measured data here (MERL tables: --merl-dir or $GLOSSY_MERL_DIR): no "
+                                 "sheet could measure a model");
+    for (size_t s = 0; s < plan_.scenes.size(); ++s)
+      for (size_t l = 0; l < plan_.lightings.size(); ++l)
+        for (size_t m = 0; m < plan_.materials.size(); ++m) {
+          const fs::path relative = study::sheetPath(plan_.scenes[s], plan_.lightings[l], plan_.materials[m].name);
+          std::error_code ec;
+          for (const char* extension : {".exr", ".png"}) {
+            const fs::path p = (out_ / relative).replace_extension(extension);
+            checkWriteInside(out_, p, o_.outName);  // OUT/sheets/SCENE/LIGHTING a symlink out of OUT: refused, not followed
+            if (fs::exists(p, ec) && !fs::is_regular_file(p, ec))
+              throw InputError(p.string() + ": is in the way of a sheet of the study (not a file)");
+          }
+          items_.push_back({s, l, m, out_ / relative, relative.generic_string()});
+          costs_.push_back(sheetCost(materials_[m], job_));
         }
-        items.push_back({s, l, m, out / relative, relative.generic_string()});
-        costs.push_back(sheetCost(materials[m], job));
-      }
-  const fs::path analysisFolder = out / study::kAnalysisFolder;
-  checkWriteInside(out, analysisFolder, o.outName);
-  if (std::error_code ec; fs::exists(fs::symlink_status(analysisFolder, ec)) && !fs::is_directory(analysisFolder, ec))
-    throw InputError(analysisFolder.string() + ": is in the way of the study's analysis (not a folder)");
+    const fs::path folder = analysisFolder();
+    checkWriteInside(out_, folder, o_.outName);
+    if (std::error_code ec; fs::exists(fs::symlink_status(folder, ec)) && !fs::is_directory(folder, ec))
+      throw InputError(folder.string() + ": is in the way of the study's analysis (not a folder)");
+  }
+
   // Each scene and lighting is checked here, loaded once and let go: a missing map, a bad scene or camera
   // fails before any sheet, and what the sheets record of them (SceneOptions::inputs) is known without
   // holding a scene and an environment per pair — a study of many lightings would not fit in memory.
-  const double aspect = double(job.settings.width) / double(job.settings.height);
-  std::vector<std::string> inputs(plan.scenes.size() * plan.lightings.size());
-  std::vector<std::string> environments, sceneDigests;  // for the results' provenance
-  {
+  void loadInputs() {
+    inputs_.resize(plan_.scenes.size() * plan_.lightings.size());
     std::vector<SceneDescription> scenes;  // each one's file and digest, not its geometry
-    for (size_t s = 0; s < plan.scenes.size(); ++s) {
-      SceneDescription scene = loadGltf(file.sceneOptions(s, 0).scenePath());
-      (void)file.sceneOptions(s, 0).cameraOf(scene, aspect);
+    for (size_t s = 0; s < plan_.scenes.size(); ++s) {
+      SceneDescription scene = loadGltf(file_.sceneOptions(s, 0).scenePath());
+      (void)file_.sceneOptions(s, 0).cameraOf(scene, aspect());
       scenes.push_back({scene.source, scene.digest, {}, {}, {}, {}});
-      sceneDigests.push_back(scene.digest);
+      sceneDigests_.push_back(scene.digest);
     }
-    for (size_t l = 0; l < plan.lightings.size(); ++l) {
-      const Environment environment = file.sceneOptions(0, l).environment();
-      environments.push_back(environment.description());
-      for (size_t s = 0; s < plan.scenes.size(); ++s)
-        inputs[s * plan.lightings.size() + l] = file.sceneOptions(s, l).inputs(scenes[s], environment);
+    for (size_t l = 0; l < plan_.lightings.size(); ++l) {
+      const Environment environment = file_.sceneOptions(0, l).environment();
+      environments_.push_back(environment.description());
+      for (size_t s = 0; s < plan_.scenes.size(); ++s)
+        inputs_[s * plan_.lightings.size() + l] = file_.sceneOptions(s, l).inputs(scenes[s], environment);
     }
   }
-  const auto inputsOf = [&](const StudyItem& item) -> const std::string& { return inputs[item.scene * plan.lightings.size() + item.lighting]; };
+
+  double aspect() const { return double(job_.settings.width) / double(job_.settings.height); }
+  size_t pairOf(const StudyItem& item) const { return item.scene * plan_.lightings.size() + item.lighting; }
+  const std::string& inputsOf(const StudyItem& item) const { return inputs_[pairOf(item)]; }
+  SheetJob jobOf(const StudyItem& item) const {
+    SheetJob sheetJob = job_;
+    sheetJob.scene = file_.sceneOptions(item.scene, item.lighting);
+    return sheetJob;
+  }
   // The stage of the sheet at hand, built when it comes and let go when the next sheet wants another: a
   // shard's sheets come in the plan's order, so each pair's is built once per run.
-  std::unique_ptr<Stage> stage;
-  size_t stagePair = SIZE_MAX;
-  const auto stageOf = [&](const StudyItem& item) -> const Stage& {
-    if (const size_t pair = item.scene * plan.lightings.size() + item.lighting; pair != stagePair) {
-      stage.reset();
-      stage = std::make_unique<Stage>(file.sceneOptions(item.scene, item.lighting), aspect);
-      stagePair = pair;
+  const Stage& stageOf(const StudyItem& item) {
+    if (const size_t pair = pairOf(item); pair != stagePair_) {
+      stage_.reset();
+      stage_ = std::make_unique<Stage>(file_.sceneOptions(item.scene, item.lighting), aspect());
+      stagePair_ = pair;
     }
-    return *stage;
-  };
-  const auto jobOf = [&](const StudyItem& item) {
-    SheetJob sheetJob = job;
-    sheetJob.scene = file.sceneOptions(item.scene, item.lighting);
-    return sheetJob;
-  };
+    return *stage_;
+  }
 
-  // The analysis's cost, said before the sheets: a million resamples would otherwise be a silent hour at
-  // the end of the run.
-  const size_t modelPanels = size_t(std::count_if(job.settings.panels.begin(), job.settings.panels.end(), [](const SheetPanel& p) { return !p.fit.empty(); }));
-  const double analysisSeconds = study::expectedAnalysisSeconds(file.resamples, plan.materials.size(), modelPanels);
-  if (shard.source.empty() && analysisSeconds >= 60.0)
-    std::fprintf(stderr, "glossy study: the analysis will take about %s (analysis.resamples = %d over %zu materials and %zu models); fewer "
-                         "resamples make it quicker\n", durationText(analysisSeconds).c_str(), file.resamples, plan.materials.size(), modelPanels);
+  const StudyRequest& o_;
+  const StudyFile file_;
+  const study::StudyPlan& plan_;
+  const fs::path out_;
+  SheetJob job_;
+  Shard shard_;
+  std::vector<MaterialFile> materials_;
+  std::vector<StudyItem> items_;
+  std::vector<double> costs_;
+  std::vector<std::string> inputs_;                      // per (scene, lighting): SceneOptions::inputs
+  std::vector<std::string> environments_, sceneDigests_;  // for the results' provenance
+  std::unique_ptr<Stage> stage_;
+  size_t stagePair_ = SIZE_MAX;
+};
 
-  const std::vector<size_t> mine = shardItems(costs, shard, "glossy study", "sheets");
+}  // namespace
 
-  // The plan, so that the sheets read back into rows with nothing but OUT (every run writes the same bytes),
-  // and the folder's marker: from here, a run of another study is refused.
-  study::claimStudyFolder(out, plan);
-
-  std::vector<double> myCosts;
-  for (size_t k : mine) myCosts.push_back(costs[k]);
-  const size_t busy = o.analyseOnly ? 0 : renderBatch(
-      myCosts, [&](size_t n) { return items[mine[n]].tag; },
-      [&](size_t n, const std::string& tag) {
-        const StudyItem& item = items[mine[n]];
-        return renderBatchSheet(inputsOf(item), [&]() -> const Stage& { return stageOf(item); }, plan.materials[item.material].file,
-                                jobOf(item), item.exr, tag);
-      },
-      "glossy study", o.out);
-  stage.reset();
+StudyRun runStudy(const StudyRequest& o) {
+  Study study(o);
+  const double analysisSeconds = study.analysisSeconds();
+  const size_t busy = study.renderMine();
   StudyRun run;
-  run.sheets = items.size();
-  run.analysisFolder = analysisFolder;
   if (busy > 0) {
     std::fprintf(stderr, "glossy study: %zu sheets left to the other run writing them; run again to check them and analyse\n", busy);
     run.ended = StudyRun::Ended::Busy;
-    return run;
-  }
-  if (!shard.source.empty()) {
+  } else if (study.isShard()) {
     std::fprintf(stderr, "glossy study: shard done; once every shard is, analyse: glossy study %s -o %s --analyse\n", o.file.c_str(),
                  o.out.c_str());
     run.ended = StudyRun::Ended::ShardDone;
-    return run;
-  }
-
-  // The analysis stands on every sheet, each complete with this study's settings.
-  size_t missing = 0;
-  std::string first;
-  for (const StudyItem& item : items) {
-    const std::string why = whyIncomplete(item.exr, sheetSettings(materials[item.material], inputsOf(item), jobOf(item), ""), job.settings);
-    if (!why.empty() && missing++ == 0) first = item.tag + ": " + why;
-  }
-  if (missing > 0) {
+  } else if (std::string first; const size_t missing = study.incomplete(first)) {
     std::fprintf(stderr, "glossy study: %zu of %zu sheets are not complete (%s): render them first (glossy study %s -o %s)\n", missing,
-                 items.size(), first.c_str(), o.file.c_str(), o.out.c_str());
+                 study.sheets(), first.c_str(), o.file.c_str(), o.out.c_str());
     run.ended = StudyRun::Ended::Incomplete;
-    return run;
+  } else {
+    run = study.analyse(analysisSeconds);
   }
-  const std::vector<study::StudyRow> rows = study::readStudyRows(out, plan);
-  study::AnalysisOptions analysis;
-  analysis.seed = job.settings.seed;
-  analysis.resamples = file.resamples;
-  analysis.perceptualDir = plan.perceptualDir;
-  analysis.referenceModel = file.referenceModel;
-  analysis.provenance = provenanceOf(file, job, materials, environments, sceneDigests);
-  const auto analysisStart = std::chrono::steady_clock::now();
-  analysis.progress = [&](int step, int steps, const std::string& what) {
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - analysisStart).count();
-    std::fprintf(stderr, "glossy study: analysis %d/%d: %s (%.0f s elapsed, about %s in all)\n", step, steps, what.c_str(), elapsed,
-                 durationText(analysisSeconds).c_str());
-  };
-  // Written whole: into a fresh folder, then swapped in, so that OUT/analysis is always one run's — no file
-  // of an earlier run left beside this one's (a perceptual.svg from before the perceptual data was dropped),
-  // none of this run's beside an earlier one's if it fails half-way. Analyses of one folder take turns.
-  const OutputLock lock(analysisFolder, o.outName, OutputLock::Busy::Wait);
-  checkWriteInside(out, analysisFolder, o.outName);
-  FreshFolder fresh(analysisFolder);
-  const study::AnalysisResult result = study::analyseStudy(rows, analysis, fresh.path());
-  fresh.replaceTarget();
-  std::fprintf(stderr, "glossy study: %zu rows of %zu sheets analysed into %s (%zu files)\n", rows.size(), items.size(),
-               analysisFolder.c_str(), result.files.size());
-  run.summary = result.summary;
-  run.rows = rows.size();
-  run.files = result.files.size();
+  run.sheets = study.sheets();
+  run.analysisFolder = study.analysisFolder();
   return run;
 }
 
