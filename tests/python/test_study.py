@@ -98,12 +98,12 @@ def test_a_folder_that_is_not_an_analysed_study_is_one_line_naming_the_file(stud
     assert "\\x1b[31mred\\nline" in str(raised.value)
 
 
-def test_the_docs_study_example_runs_and_agrees_with_the_results(study_folder, capsys):
-    import re
-    text = (SOURCE_DIR / "docs" / "python.md").read_text()
-    blocks = re.findall(r"```python study\n(.*?)```", text, flags=re.S)
-    assert len(blocks) == 1
-    exec(compile(blocks[0].replace("out/study-merl100", str(study_folder)), "docs/python.md", "exec"), {})
+def test_the_docs_study_example_runs_and_agrees_with_the_results(study_folder, capsys, monkeypatch):
+    import runpy
+    script = SOURCE_DIR / "docs" / "examples" / "study_headline.py"
+    assert f"```python docs/examples/study_headline.py\n{script.read_text()}```" in (SOURCE_DIR / "docs" / "python.md").read_text()
+    monkeypatch.setattr("sys.argv", [str(script), str(study_folder)])
+    runpy.run_path(str(script), run_name="__main__")
     printed = capsys.readouterr().out.splitlines()
     results = json.loads((study_folder / "analysis" / "results.json").read_text())
     within = next(d for d in results["e2MinusE1"] if d["image"] == "rrmse")["withinMaterialSpearman"]
