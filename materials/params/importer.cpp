@@ -139,6 +139,14 @@ struct PaperModel {
   std::string_view metric;
   std::map<std::string, std::string> keys;
 };
+
+// Ngan et al.'s fits describe MERL tables read with 1/1500 for every channel, without the tables' own
+// factors for green and blue (1.15/1500 and 1.66/1500, as MERL's reader and glossy scale them): teflon's
+// Ward kd is [0.296, 0.255, 0.174] for a white material, and every one of their fits' head-on albedos sits
+// at (0.95–1.0, 0.81–0.87, 0.57–0.60) of the measured one where Löw's and Bagher's sit within a few per
+// cent on every channel. Their albedos, kd and ks, times these factors describe the data glossy compares
+// them with; the fit's `source` says so, and materials/published-fits keeps bbm's values as published.
+constexpr double kMerlChannelFactors[3] = {1.0, 1.15, 1.66};
 const PaperModel* paperModel(const std::string& bbmModel) {
   static const PaperModel models[] = {
       {"NganWard", "ward", FitId::kNgan05, {{"albedo", "ks"}, {"roughness", "alpha"}}},
@@ -213,7 +221,9 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
     if (paper) {
       fit.id = {paper->model, std::string(paper->metric)};
       keys = paper->keys;
-      fit.source = paper->metric == FitId::kNgan05 ? nganFitSource(fileName) : bagherFitSource(fileName);
+      fit.source = paper->metric == FitId::kNgan05 ? nganFitSource(fileName) + "; kd and ks times (1, 1.15, 1.66), MERL's channel "
+                                                                               "factors, which the fits were made without (docs/materials.md)"
+                                                   : bagherFitSource(fileName);
     } else if (bbmModel == "LowMicrofacetFit" || bbmModel == "LowSmooth") {
       fit.id.model = bbmModel == "LowSmooth" ? "smooth" : "microfacet";
       keys = {{"A", "a"}, {"B", "b"}, {"C", "c"}, {"eta", "eta"}};
@@ -246,6 +256,15 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
       else
         fit.params.set(key->second, requireNumber(value, context + ": " + arg));
     }
+    if (paper && paper->metric == FitId::kNgan05)
+      for (const char* albedo : {"kd", "ks"}) {
+        // The decimal product (the values have a few digits, the factors two): 0.255 × 1.15 is 0.29325, not
+        // the double product's 0.29324999999999996.
+        const auto times = [](double v, double factor) { return std::stod(formatted("%.12g", v * factor)); };
+        const Rgb v = fit.params.rgb(albedo);
+        fit.params.set(albedo, Rgb(times(v.r, kMerlChannelFactors[0]), times(v.g, kMerlChannelFactors[1]),
+                                   times(v.b, kMerlChannelFactors[2])));
+      }
     validateFit(fit, context);
     MaterialFile mat = measuredMaterial(name, paper ? fit.source : std::string(kFitLinesSource));
     mat.put(std::move(fit));
