@@ -118,6 +118,28 @@ TEST(ImportFitLines, LineErrorsNameFileAndLine) {
   EXPECT_NE(e.find("f_E2.fit:2: material 'a' appears twice"), std::string::npos) << e;
 }
 
+// Ngan et al.'s fits are of MERL tables read without their green and blue factors: their albedos are held
+// times (1, 1.15, 1.66) (docs/materials.md), the rest as published, and the source says so. A scalar albedo is
+// bad input (exit 2), not a failure of the conversion.
+TEST(ImportFitLines, NganFitsAlbedosTakeMerlsChannelFactors) {
+  const auto all = importFitLines(
+      "teflon = Aggregate(Lambertian(albedo = [0.296, 0.255, 0.174]), NganWard(albedo = [0.0436, 0.0382, 0.0268], roughness = 0.158))\n",
+      "ngan_ward.fit");
+  const Fit& f = all.at(0).fits.at(0);
+  EXPECT_EQ(f.id.str(), "ward:Ngan05");
+  EXPECT_EQ(f.params.rgb("kd"), Rgb(0.296, 0.29325, 0.28884));
+  EXPECT_EQ(f.params.rgb("ks"), Rgb(0.0436, 0.04393, 0.044488));
+  EXPECT_EQ(f.params.scalar("alpha"), 0.158);
+  EXPECT_NE(f.source.find("kd and ks times (1, 1.15, 1.66)"), std::string::npos) << f.source;
+  // Bagher et al.'s were fitted to the data as glossy reads it: as published.
+  const auto sgd = importFitLines(readText(sourceDir() / "materials/published-fits/bagher_sgd.fit"), "bagher_sgd.fit");
+  EXPECT_EQ(byName(sgd, "teflon").fits[0].source.find("times"), std::string::npos);
+  const std::string e = expectInputError([&] {
+    importFitLines("t = Aggregate(Lambertian(albedo = [0.1, 0.1, 0.1]), NganWard(albedo = 0.5, roughness = 0.1))\n", "ngan_ward.fit");
+  });
+  EXPECT_NE(e.find("ngan_ward.fit:1: t ward:Ngan05: key 'ks': must be an array of 3 numbers"), std::string::npos) << e;
+}
+
 TEST(Importer, SupplementBeatsFitLinesWhateverTheOrderAndOtherFitsAreKept) {
   GLOSSY_REQUIRE_SHARED("seed/supplement.txt");
   GLOSSY_REQUIRE_SHARED("fits");

@@ -256,6 +256,7 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
       else
         fit.params.set(key->second, requireNumber(value, context + ": " + arg));
     }
+    validateFit(fit, context);  // kd and ks are RGB values in range before they are converted
     if (paper && paper->metric == FitId::kNgan05)
       for (const char* albedo : {"kd", "ks"}) {
         // The decimal product (the values have a few digits, the factors two): 0.255 × 1.15 is 0.29325, not
