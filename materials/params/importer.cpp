@@ -3,9 +3,11 @@
 #include "materials/core/input_error.h"
 #include "materials/core/input_file.h"
 #include "materials/core/text.h"
+#include "materials/merl/merl_table.h"
 #include "materials/models/registry.h"
 #include "materials/params/material_name.h"
 
+#include <array>
 #include <regex>
 #include <sstream>
 
@@ -131,37 +133,42 @@ std::vector<MaterialFile> importSupplement(std::string_view text, const std::str
 
 namespace {
 
-// The models of other papers' published fits as bbm names them → glossy's model, metric and argument names.
+// Ngan et al.'s fits describe MERL tables read with 1/1500 for every channel, without the tables' own
+// factors for green and blue (MerlTable::kScale: 1.15/1500 and 1.66/1500, as MERL's reader scales them): teflon's
+// Ward kd is [0.296, 0.255, 0.174] for a white material, and every one of their fits' head-on albedos sits
+// at (0.95–1.0, 0.81–0.87, 0.57–0.60) of the measured one where Löw's and Bagher's sit within a few per
+// cent on every channel. Their albedos, kd and ks, times these factors describe the data glossy compares
+// them with; the fit's `source` says so, and materials/published-fits keeps bbm's values as published.
+constexpr std::array<double, 3> kMerlChannelFactors = {1.0, MerlTable::kScale[1] / MerlTable::kScale[0],
+                                                        MerlTable::kScale[2] / MerlTable::kScale[0]};
+constexpr std::array<double, 3> kAsPublished = {1.0, 1.0, 1.0};
+
+// The models of other papers' published fits as bbm names them → glossy's model, metric and argument names,
+// and the factors that bring the fits' albedos (kd, ks) into the units of the data glossy reads.
 // He et al.'s (NganHe) is not a glossy model (docs/models.md).
 struct PaperModel {
   const char* bbm;
   const char* model;
   std::string_view metric;
   std::map<std::string, std::string> keys;
+  std::array<double, 3> albedoFactors;
 };
-
-// Ngan et al.'s fits describe MERL tables read with 1/1500 for every channel, without the tables' own
-// factors for green and blue (1.15/1500 and 1.66/1500, as MERL's reader and glossy scale them): teflon's
-// Ward kd is [0.296, 0.255, 0.174] for a white material, and every one of their fits' head-on albedos sits
-// at (0.95–1.0, 0.81–0.87, 0.57–0.60) of the measured one where Löw's and Bagher's sit within a few per
-// cent on every channel. Their albedos, kd and ks, times these factors describe the data glossy compares
-// them with; the fit's `source` says so, and materials/published-fits keeps bbm's values as published.
-constexpr double kMerlChannelFactors[3] = {1.0, 1.15, 1.66};
 const PaperModel* paperModel(const std::string& bbmModel) {
   static const PaperModel models[] = {
-      {"NganWard", "ward", FitId::kNgan05, {{"albedo", "ks"}, {"roughness", "alpha"}}},
-      {"NganWardDuer", "ward-duer", FitId::kNgan05, {{"albedo", "ks"}, {"roughness", "alpha"}}},
+      {"NganWard", "ward", FitId::kNgan05, {{"albedo", "ks"}, {"roughness", "alpha"}}, kMerlChannelFactors},
+      {"NganWardDuer", "ward-duer", FitId::kNgan05, {{"albedo", "ks"}, {"roughness", "alpha"}}, kMerlChannelFactors},
       // bbm evaluates the mirror-vector Phong for these; glossy reads them on the half vector (blinn_phong.h).
-      {"NganBlinnPhong", "blinn-phong", FitId::kNgan05, {{"albedo", "ks"}, {"sharpness", "n"}}},
-      {"NganLafortune", "lafortune", FitId::kNgan05, {{"albedo", "ks"}, {"Cxy", "cxy"}, {"Cz", "cz"}, {"sharpness", "n"}}},
+      {"NganBlinnPhong", "blinn-phong", FitId::kNgan05, {{"albedo", "ks"}, {"sharpness", "n"}}, kMerlChannelFactors},
+      {"NganLafortune", "lafortune", FitId::kNgan05, {{"albedo", "ks"}, {"Cxy", "cxy"}, {"Cz", "cz"}, {"sharpness", "n"}}, kMerlChannelFactors},
       {"NganAshikhminShirley", "ngan-ashikhmin-shirley", FitId::kNgan05,
-       {{"albedo", "ks"}, {"fresnelReflectance", "f0"}, {"sharpness", "n"}}},
+       {{"albedo", "ks"}, {"fresnelReflectance", "f0"}, {"sharpness", "n"}}, kMerlChannelFactors},
       // bbm's `eta` here is Schlick's F0, a reflectance (ngan_cook_torrance.h).
-      {"NganCookTorrance", "ngan-cook-torrance", FitId::kNgan05, {{"albedo", "ks"}, {"eta", "f0"}, {"roughness", "m"}}},
+      {"NganCookTorrance", "ngan-cook-torrance", FitId::kNgan05, {{"albedo", "ks"}, {"eta", "f0"}, {"roughness", "m"}}, kMerlChannelFactors},
       // bbm's `eta` here is the pair [F0, F1] of Bagher's Fresnel term, each RGB (sgd.h).
       {"Bagher", "sgd", FitId::kBagher12,
        {{"albedo", "ks"}, {"alpha", "alpha"}, {"p", "p"}, {"eta", "f0,f1"}, {"K", "norm"}, {"Lambda", "lambda"},
-        {"c", "c"}, {"k", "k"}, {"theta0", "theta0"}}},
+        {"c", "c"}, {"k", "k"}, {"theta0", "theta0"}},
+       kAsPublished},
   };
   for (const PaperModel& m : models)
     if (bbmModel == m.bbm) return &m;
@@ -221,9 +228,7 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
     if (paper) {
       fit.id = {paper->model, std::string(paper->metric)};
       keys = paper->keys;
-      fit.source = paper->metric == FitId::kNgan05 ? nganFitSource(fileName) + "; kd and ks times (1, 1.15, 1.66), MERL's channel "
-                                                                               "factors, which the fits were made without (docs/materials.md)"
-                                                   : bagherFitSource(fileName);
+      fit.source = paper->metric == FitId::kNgan05 ? nganFitSource(fileName) : bagherFitSource(fileName);
     } else if (bbmModel == "LowMicrofacetFit" || bbmModel == "LowSmooth") {
       fit.id.model = bbmModel == "LowSmooth" ? "smooth" : "microfacet";
       keys = {{"A", "a"}, {"B", "b"}, {"C", "c"}, {"eta", "eta"}};
@@ -257,15 +262,18 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
         fit.params.set(key->second, requireNumber(value, context + ": " + arg));
     }
     validateFit(fit, context);  // kd and ks are RGB values in range before they are converted
-    if (paper && paper->metric == FitId::kNgan05)
+    if (paper && paper->albedoFactors != kAsPublished) {
+      const auto& k = paper->albedoFactors;
+      // The decimal product (the values have a few digits, the factors two): 0.255 × 1.15 is 0.29325, not
+      // the double product's 0.29324999999999996.
+      const auto times = [](double v, double factor) { return std::stod(formatted("%.12g", v * factor)); };
       for (const char* albedo : {"kd", "ks"}) {
-        // The decimal product (the values have a few digits, the factors two): 0.255 × 1.15 is 0.29325, not
-        // the double product's 0.29324999999999996.
-        const auto times = [](double v, double factor) { return std::stod(formatted("%.12g", v * factor)); };
         const Rgb v = fit.params.rgb(albedo);
-        fit.params.set(albedo, Rgb(times(v.r, kMerlChannelFactors[0]), times(v.g, kMerlChannelFactors[1]),
-                                   times(v.b, kMerlChannelFactors[2])));
+        fit.params.set(albedo, Rgb(times(v.r, k[0]), times(v.g, k[1]), times(v.b, k[2])));
       }
+      fit.source += formatted("; kd and ks times (%g, %g, %g), MERL's channel factors, which the fits were made without "
+                              "(docs/materials.md)", k[0], k[1], k[2]);
+    }
     validateFit(fit, context);
     MaterialFile mat = measuredMaterial(name, paper ? fit.source : std::string(kFitLinesSource));
     mat.put(std::move(fit));

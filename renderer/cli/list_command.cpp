@@ -34,12 +34,9 @@ struct ListOptions {
 // scripts read instead of restating the grid or its colours.
 int printGrid() {
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  const auto row = [&](const SheetPanel& p, bool inGrid) {
+  for (const auto& [p, inGrid] : gridTable())
     rows.push_back({{"fit", p.fit.empty() ? std::string("measured") : p.fit}, {"layer", p.layer}, {"label", p.label},
                     {"colour", p.colour}, {"default", inGrid}});
-  };
-  row(SheetPanel::measured(), true);
-  for (const GridFit& g : gridFits()) row(SheetPanel::ofFit(FitId::parse(g.fit, "the sheet grid")), g.inGrid);
   std::cout << rows.dump(1) << "\n";
   return 0;
 }

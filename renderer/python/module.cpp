@@ -71,6 +71,9 @@ PYBIND11_MODULE(_core, m) {
   warning.doc() = "What `glossy` notes on stderr while it loads input, e.g. a MERL table's unmeasured bins.";
   gWarning = warning.ptr();
 
+  m.def("_safe_line", [](const std::string& text, size_t maxCharacters) { return glossy::safeLine(text, maxCharacters); },
+        py::arg("text"), py::arg("max_characters") = 1000,
+        "A message's one safe line as the library writes it (materials/core/text.h: safeLine).");
   m.def("_set_data_dir", [](const std::string& dir) { glossy::setDataDir(dir); },
         "Where the default scene and the material library are (the wheel's glossy/data).");
   m.def("_option_specs", [] {  // the table the keywords are checked by, for the tests

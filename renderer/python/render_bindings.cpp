@@ -342,14 +342,12 @@ target_error). output: also write the EXR and PNG (or call Sheet.save later).
 
   m.def("comparison_grid", [] {
           py::list rows;
-          const auto row = [&](const SheetPanel& p, bool inGrid) {
+          for (const auto& [p, inGrid] : gridTable()) {
             py::dict d;
             d["fit"] = p.fit.empty() ? std::string("measured") : p.fit;
             d["layer"] = p.layer, d["label"] = p.label, d["colour"] = p.colour, d["default"] = inGrid;
             rows.append(d);
-          };
-          row(SheetPanel::measured(), true);
-          for (const GridFit& g : gridFits()) row(SheetPanel::ofFit(FitId::parse(g.fit, "the sheet grid")), g.inGrid);
+          }
           return rows;
         }, R"doc(
 The comparison grid's table, as sheets, plots and the report use it: a dict per panel with its fit

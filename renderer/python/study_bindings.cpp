@@ -48,11 +48,11 @@ void bindStudies(py::module_& m) {
           r.control = &control;
           const app::StudyRun run = runInterruptible(control, py::none(), [&] { return app::runStudy(r); });
           static constexpr const char* kEnded[] = {"analysed", "shard done", "busy", "incomplete"};
-          return py::make_tuple(kEnded[int(run.ended)], run.summary);
+          return std::string(kEnded[int(run.ended)]);
         });
       },
       py::arg("file"), py::arg("output"), py::arg("shard") = py::none(), py::arg("analyse") = false, py::arg("merl_dir") = py::none(),
-      py::arg("threads") = py::none(), "glossy.study's work: (how it ended, the summary); glossy.study is the function to call.");
+      py::arg("threads") = py::none(), "glossy.study's work: how it ended; glossy.study is the function to call.");
 }
 
 }  // namespace glossy::python

@@ -38,6 +38,12 @@ constexpr std::string_view kOtherColour = "#999999";
 
 std::span<const GridFit> gridFits() { return kGridFits; }
 
+std::vector<GridRow> gridTable() {
+  std::vector<GridRow> rows = {{SheetPanel::measured(), true}};
+  for (const GridFit& g : kGridFits) rows.push_back({SheetPanel::ofFit(FitId::parse(g.fit, "the sheet grid")), g.inGrid});
+  return rows;
+}
+
 std::span<const NamedGrid> namedGrids() { return kNamedGrids; }
 
 std::string gridNames() { return joined(kNamedGrids, ", ", [](const NamedGrid& g) { return std::string(g.name); }); }
@@ -57,9 +63,9 @@ SheetPanel SheetPanel::ofFit(const FitId& fit) {
 
 std::span<const SheetPanel> sheetPanels() {
   static const std::vector<SheetPanel> panels = [] {
-    std::vector<SheetPanel> grid = {SheetPanel::measured()};
-    for (const GridFit& g : kGridFits)
-      if (g.inGrid) grid.push_back(SheetPanel::ofFit(FitId::parse(g.fit, "the sheet grid")));
+    std::vector<SheetPanel> grid;
+    for (const GridRow& r : gridTable())
+      if (r.inGrid) grid.push_back(r.panel);
     return grid;
   }();
   return panels;

@@ -35,6 +35,14 @@ struct GridFit {
 };
 std::span<const GridFit> gridFits();
 
+// The table as the front ends show it (glossy list --grid, glossy.comparison_grid()): the measured panel, then
+// each row's fit as its panel, with whether the supplement's grid shows it.
+struct GridRow {
+  SheetPanel panel;
+  bool inGrid;
+};
+std::vector<GridRow> gridTable();
+
 // The supplement's grid, the default panels: Measured, then its six fits in its order.
 std::span<const SheetPanel> sheetPanels();
 

@@ -69,11 +69,6 @@ struct Study {
   std::vector<std::set<std::string>> fitsOf, sourcesOf;
 };
 
-Opt meanOf(const std::vector<double>& v) {
-  if (v.empty()) return std::nullopt;
-  return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
-}
-
 // A bootstrap's statistic: the mean of the defined values among the materials drawn.
 auto meanOfDrawn(const std::vector<Opt>& values) {
   return [&values](const std::vector<std::size_t>& drawn) {
@@ -82,12 +77,6 @@ auto meanOfDrawn(const std::vector<Opt>& values) {
       if (values[i]) v.push_back(*values[i]);
     return meanOf(v);
   };
-}
-
-Opt medianOf(std::vector<double> v) {
-  if (v.empty()) return std::nullopt;
-  std::sort(v.begin(), v.end());
-  return quantileSorted(v, 0.5);
 }
 
 Study readRows(std::span<const StudyRow> rows) {

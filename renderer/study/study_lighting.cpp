@@ -23,17 +23,6 @@ using Opt = std::optional<double>;
 
 Json num(const Opt& v) { return v ? Json(*v) : Json(nullptr); }
 
-Opt meanOf(const std::vector<double>& v) {
-  if (v.empty()) return std::nullopt;
-  return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
-}
-
-Opt medianOf(std::vector<double> v) {
-  if (v.empty()) return std::nullopt;
-  std::sort(v.begin(), v.end());
-  return quantileSorted(v, 0.5);
-}
-
 struct SheetKey {
   std::string material, scene, lighting;
   auto operator<=>(const SheetKey&) const = default;

@@ -49,12 +49,7 @@ std::map<std::string, MaterialTable> tablesOf(const std::vector<const StudyRow*>
     MaterialTable& t = tables[material];
     for (std::size_t a = 0; a < approximations.size(); ++a) {
       std::array<Opt, kFigureCount> means;
-      for (std::size_t f = 0; f < kFigureCount; ++f)
-        if (!v[a][f].empty()) {
-          double sum = 0.0;
-          for (double x : v[a][f]) sum += x;
-          means[f] = sum / double(v[a][f].size());
-        }
+      for (std::size_t f = 0; f < kFigureCount; ++f) means[f] = meanOf(v[a][f]);
       t.figure.push_back(means);
       t.distance.push_back(data.distance(approximations[a].method, material));
     }

@@ -12,6 +12,17 @@
 
 namespace glossy::study {
 
+std::optional<double> meanOf(const std::vector<double>& v) {
+  if (v.empty()) return std::nullopt;
+  return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size());
+}
+
+std::optional<double> medianOf(std::vector<double> v) {
+  if (v.empty()) return std::nullopt;
+  std::sort(v.begin(), v.end());
+  return quantileSorted(v, 0.5);
+}
+
 std::vector<double> averageRanks(const std::vector<double>& v) {
   std::vector<std::size_t> order(v.size());
   std::iota(order.begin(), order.end(), 0);

@@ -13,6 +13,10 @@
 
 namespace glossy::study {
 
+// The mean and the median of `v`; nullopt when it is empty.
+std::optional<double> meanOf(const std::vector<double>& v);
+std::optional<double> medianOf(std::vector<double> v);
+
 // Ranks 1…n of `v`, ties given the mean of the ranks they span (scipy.stats.rankdata, method "average").
 std::vector<double> averageRanks(const std::vector<double>& v);
 // Σ (t³ − t) over the groups of t equal values: the tie term of rank statistics.

@@ -47,8 +47,8 @@ double abcQuantile(double b, double c, double xMax, double q) {
 }  // namespace
 
 std::vector<LibraryFit> libraryFits() {
-  // Bagher et al.'s SGD fits are left to sgdChi2Fits: the χ² grid's adaptive integration of their tabulated,
-  // piecewise-constant density takes about 200 s a case (0.7 s for the closed-form lobes).
+  // Bagher et al.'s SGD fits are left to sgdChi2Fits: the χ² grid's adaptive integration refines along every
+  // bin edge of their tabulated, piecewise-constant density, so each case is far slower than a closed-form lobe's.
   std::vector<LibraryFit> all;
   for (const FitRecord& r : libraryRecords())
     if (r.fit.id.model != "sgd") all.push_back(toLibraryFit(r));

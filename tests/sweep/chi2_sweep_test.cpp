@@ -14,7 +14,7 @@ const std::vector<SamplingCase>& sweep() {
     std::vector<SamplingCase> all;
     for (const LibraryFit& f : libraryFits())
       for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
-    // SGD's three cases (about 200 s each: its tabulated density is slow to integrate), not its 100 fits.
+    // SGD's three cases, not its 100 fits: its tabulated density is slow to integrate (sampling_cases.cpp).
     for (const LibraryFit& f : sgdChi2Fits())
       for (const SamplingCase& c : atViewAngles(f)) all.push_back(c);
     return all;

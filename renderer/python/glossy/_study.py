@@ -18,16 +18,10 @@ import numpy as np
 
 from . import _core
 
-_MAX_ECHO = 200
-
-
 def _safe(text):
-    """`text` as one printable line, as glossy's messages quote names: control characters escaped, a long one
-    cut (materials/core/text.h's printableLine)."""
-    out = "".join(c if c.isprintable() else c.encode("unicode_escape").decode("ascii") for c in str(text))
-    if len(out) > _MAX_ECHO:
-        out = f"{out[:_MAX_ECHO]}… ({len(out):,} characters)"
-    return out
+    """`text` as one safe line, as every glossy message quotes names: control characters escaped, a long one
+    cut around its middle (the library's safeLine)."""
+    return _core._safe_line(str(text), 200)
 
 
 def _snake(key):
@@ -87,7 +81,7 @@ def study(file, output, *, shard=None, analyse=False, merl_dir=None, threads=Non
     docs/cluster.md), else every sheet. merl_dir: MERL tables (else $GLOSSY_MERL_DIR). threads: unset, the
     study file's settings.threads. Raises InputError (the command's one line) for bad input, before any work, and
     RuntimeError when sheets are still being written by another run or, with analyse, are not complete."""
-    ended, _summary = _core._study(file, output, shard=shard, analyse=analyse, merl_dir=merl_dir, threads=threads)
+    ended = _core._study(file, output, shard=shard, analyse=analyse, merl_dir=merl_dir, threads=threads)
     if ended == "analysed":
         return read_study(output)
     if ended == "shard done":
