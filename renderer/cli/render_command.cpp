@@ -55,7 +55,7 @@ Command addRenderCommand(CLI::App& parent) {
                   "lobe: each model samples its own lobe (default); cosine: the cosine lobe, to see what lobe sampling is worth")
       ->check(CLI::IsMember({"lobe", "cosine"}))->capture_default_str();
   app->add_flag("--reference", o->job.settings.reference,
-                "Trace one path at a time (the reference path tracer): the same image, more slowly");
+                "Render with the reference path tracer (plain one-path code): the same image in expectation, noisier and slower");
   app->add_option("-o,--output", o->output, "Output EXR")->capture_default_str();
   material->needs(fit);
   fit->needs(material);

@@ -1,10 +1,9 @@
 // Next-event estimation, the direct-light step of a vertex, as pbrt-v4's PathIntegrator::SampleLd: its
 // light samples (a light chosen by power, a point on it, the shadow ray), then each weighed by the
 // vertex's BRDF and by multiple importance sampling against the BRDF's own sampling (the power heuristic
-// with sample counts; weight 1 for a delta light, which no BSDF sample finds). Written once, for a set of
-// vertices (lanes.h): the reference's one vertex or a wave's (path_vertex.h), each stage one
-// batch over the set (the lights' samples, the shadow rays, the BRDF's values), the k-th light samples of
-// all its vertices at a time, so a vertex gets the same numbers either way. The samples and their shadow
+// with sample counts; weight 1 for a delta light, which no BSDF sample finds). Written for a wave's
+// vertices (lanes.h, path_vertex.h), each stage one batch over them (the lights' samples, the shadow rays,
+// the BRDF's values), the k-th light samples of all of them at a time. The samples and their shadow
 // rays do not depend on the BRDF, so a sheet's panels share them (panel_split.h); the weighing is each
 // panel's.
 #pragma once
@@ -68,13 +67,11 @@ inline void drawLightSamples(const Light* light, const Receiver* at, const Vec2*
   light->sample(at, u, group.lane, group.n, out);
 }
 
-// The step for the vertices of a set of lanes below N, with their scratch (Paths<N> keeps one).
-template <int N>
+// The step for the vertices of a wave's lanes, with its scratch (Paths keeps one).
 class DirectLight {
  public:
   // light[i] for the lanes: the light samples of draws[i] at sp[i] and their shadow rays' verdicts. A
-  // group's samples of one light are drawn by draw (drawLightSamples' signature); the shadow rays are
-  // traced as Embree packets where N is whole packets (a wave's), else one at a time.
+  // group's samples of one light are drawn by draw (drawLightSamples' signature).
   template <class Draw>
   void sample(const PathContext& context, const Lanes& lanes, const ShadingPoint* sp, const VertexDraws* draws,
               VertexLight* light, Draw&& draw) {
@@ -96,15 +93,12 @@ class DirectLight {
       }
       forEachGroup(chosen, [&](int i) { return chosen_[i].light; },
                    [&](const Light* l, const Lanes& group) { draw(l, from_, u_, group, sample_); });
-      std::fill(traced_, traced_ + N, false);
+      std::fill(traced_, traced_ + kWaveSize, false);
       for (const int i : chosen) {
         traced_[i] = toLight(sp[i], chosen_[i], sample_[i], light[i].path[k]);
         shadow_[i] = light[i].path[k].shadow;
       }
-      if constexpr (N % kPacketSize == 0)
-        for (int p = 0; p < N; p += kPacketSize) context.scene.bvh->occluded(traced_ + p, shadow_ + p, occluded_ + p);
-      else
-        for (const int i : chosen) occluded_[i] = traced_[i] && context.scene.bvh->occluded(shadow_[i]);
+      context.scene.bvh->occluded(traced_, shadow_, occluded_, kWaveSize);
       for (const int i : chosen) light[i].visible[k] = traced_[i] && !occluded_[i];
     }
   }
@@ -144,15 +138,15 @@ class DirectLight {
   }
 
  private:
-  Receiver from_[N];
-  ChosenLight chosen_[N];
-  Vec2 u_[N];
-  LightSample sample_[N];
-  Ray shadow_[N];
-  bool traced_[N], occluded_[N];
-  int first_[N];  // where each lane's own set starts among its light samples (setOffset)
-  Vec3 wi_[N], wo_[N];  // the BRDF's batch, packed
-  BrdfValue value_[N];
+  Receiver from_[kWaveSize];
+  ChosenLight chosen_[kWaveSize];
+  Vec2 u_[kWaveSize];
+  LightSample sample_[kWaveSize];
+  Ray shadow_[kWaveSize];
+  bool traced_[kWaveSize], occluded_[kWaveSize];
+  int first_[kWaveSize];  // where each lane's own set starts among its light samples (setOffset)
+  Vec3 wi_[kWaveSize], wo_[kWaveSize];  // the BRDF's batch, packed
+  BrdfValue value_[kWaveSize];
 };
 
 }  // namespace glossy

@@ -1,5 +1,5 @@
 // Sets of lanes: the paths a step takes at once, each lane indexing the per-path arrays the step reads and
-// writes. The wave's paths are up to kWaveSize lanes; the reference's one path is lane 0 of a set of one.
+// writes. The wave's paths are up to kWaveSize lanes.
 #pragma once
 
 namespace glossy {

@@ -27,8 +27,7 @@ struct ObjectVertex {
   CmjSampler sampler;      // past the vertex's draws
 };
 
-// A panel's paths, N at a time (a wave's kWaveSize, or the reference's one path), on one thread.
-template <int N>
+// A panel's paths, a wave at a time, on one thread.
 class PanelPaths {
  public:
   PanelPaths(const PathContext& panel, SharedDraws* shared) : panel_(panel), shared_(shared), paths_(panel) {}
@@ -36,8 +35,8 @@ class PanelPaths {
   // radiance[i] of the camera rays[i], i < n. With stops, a path that reaches the object stops there,
   // stops[i] its vertex (depth 0 for the others), radiance[i] what it gathered before.
   void trace(Ray* rays, CmjSampler* samplers, int n, Rgb* radiance, ObjectVertex* stops) {
-    for (int first = 0; first < n; first += N) {
-      const Lanes lanes = Lanes::first(std::min(N, n - first));
+    for (int first = 0; first < n; first += kWaveSize) {
+      const Lanes lanes = Lanes::first(std::min(kWaveSize, n - first));
       ObjectVertex* stop = stops ? stops + first : nullptr;
       for (const int i : lanes) {
         paths_.path[i] = PathState(rays[first + i].origin);
@@ -62,8 +61,8 @@ class PanelPaths {
   // context differs from the one that traced them only in the object's BRDF. The paths of the panels' waves
   // share what they draw alike (shared_draws.h).
   void resume(const ObjectVertex* vertices, int n, Rgb* radiance) {
-    for (int first = 0; first < n; first += N) {
-      const Lanes lanes = Lanes::first(std::min(N, n - first));
+    for (int first = 0; first < n; first += kWaveSize) {
+      const Lanes lanes = Lanes::first(std::min(kWaveSize, n - first));
       for (const int i : lanes) {
         const ObjectVertex& v = vertices[first + i];
         paths_.path[i] = v.path;
@@ -85,9 +84,9 @@ class PanelPaths {
  private:
   const PathContext& panel_;
   SharedDraws* shared_;
-  Paths<N> paths_;
-  Ray rays_[N];
-  CmjSampler samplers_[N];
+  Paths paths_;
+  Ray rays_[kWaveSize];
+  CmjSampler samplers_[kWaveSize];
 };
 
 // A tile's sums of its samples' radiance, per panel and pixel; a non-finite sample is dropped, and counted.
@@ -101,25 +100,22 @@ struct PanelSums {
   }
 };
 
-// A thread's tracer of the panels' camera paths, a wave at a time (or each by the reference,
-// RenderSettings::reference). With more than one panel, a path that reaches the object is parked there, by
+// A thread's tracer of the panels' camera paths, a wave at a time. With more than one panel, a path that reaches the object is parked there, by
 // depth, until its depth has a wave's worth (a wave advances its lanes one depth at a time); then every
 // panel continues them, sharing what they draw alike (shared_draws.h). One panel's paths run to their end,
 // with none of this.
 class PanelTracer {
  public:
-  PanelTracer(std::span<const PathContext> panels, bool reference)
+  explicit PanelTracer(std::span<const PathContext> panels)
       : panels_(panels), shared_(panels[0].settings.maxDepth), parked_(size_t(std::max(1, panels[0].settings.maxDepth))) {
-    for (size_t p = 0; p < panels.size(); ++p)
-      if (reference) references_.push_back(std::make_unique<PanelPaths<1>>(panels[p], nullptr));
-      else waves_.push_back(std::make_unique<PanelPaths<kWaveSize>>(panels[p], panels.size() > 1 ? &shared_ : nullptr));
+    for (const PathContext& panel : panels)
+      waves_.push_back(std::make_unique<PanelPaths>(panel, panels.size() > 1 ? &shared_ : nullptr));
   }
 
   // The camera rays of the tile's samples of pixel[i], i < n, added to sums where their paths end.
   void trace(Ray* rays, CmjSampler* samplers, const int* pixel, int n, PanelSums& sums) {
     ObjectVertex* stops = panels_.size() > 1 ? stops_ : nullptr;
-    if (!waves_.empty()) waves_[0]->trace(rays, samplers, n, radiance_, stops);
-    else references_[0]->trace(rays, samplers, n, radiance_, stops);
+    waves_[0]->trace(rays, samplers, n, radiance_, stops);
     for (int i = 0; i < n; ++i)
       if (stops && stops[i].depth > 0)
         park(stops[i], pixel[i], sums);
@@ -147,8 +143,7 @@ class PanelTracer {
     Parked& parked = parked_[depth];
     const int n = int(parked.vertices.size());
     for (size_t p = 0; p < panels_.size(); ++p) {
-      if (!waves_.empty()) waves_[p]->resume(parked.vertices.data(), n, resumed_);
-      else references_[p]->resume(parked.vertices.data(), n, resumed_);
+      waves_[p]->resume(parked.vertices.data(), n, resumed_);
       for (int i = 0; i < n; ++i) sums.add(p, parked.pixels[size_t(i)], resumed_[i]);
     }
     parked.vertices.clear();
@@ -161,8 +156,7 @@ class PanelTracer {
   };
   std::span<const PathContext> panels_;
   SharedDraws shared_;
-  std::vector<std::unique_ptr<PanelPaths<kWaveSize>>> waves_;  // per panel, or
-  std::vector<std::unique_ptr<PanelPaths<1>>> references_;    // the reference's
+  std::vector<std::unique_ptr<PanelPaths>> waves_;  // per panel
   std::vector<Parked> parked_;                      // [depth]
   ObjectVertex stops_[kWaveSize];
   Rgb radiance_[kWaveSize], resumed_[kWaveSize];    // per lane

@@ -1,10 +1,12 @@
 // The image (or a sheet's panels): tiles of pixels, each pixel's samples in order, their camera rays a wave
-// at a time traced by the panel tracer (panel_split.h), averaged per pixel.
+// at a time traced by the panel tracer (panel_split.h), averaged per pixel; or each path by the reference
+// path tracer (reference_path.h).
 #include "renderer/integrator/path_tracer.h"
 
 #include "renderer/camera/camera_rays.h"
 #include "renderer/integrator/light_count.h"
 #include "renderer/integrator/panel_split.h"
+#include "renderer/integrator/reference_path.h"
 #include "renderer/util/progress.h"
 
 #include <tbb/blocked_range2d.h>
@@ -25,13 +27,19 @@ namespace {
 
 constexpr int kTile = 16;
 
+// A pixel's mean of spp samples' sum, as float (clamped to the largest float).
+void writeMean(const Rgb& sum, int spp, float* px) {
+  const Rgb mean = sum / double(std::max(1, spp));
+  for (int c = 0; c < 3; ++c) px[c] = float(std::min(mean[c], double(std::numeric_limits<float>::max())));
+}
+
 // A thread's renderer of tiles, its lanes' state reused from tile to tile.
 class TileRenderer {
  public:
   TileRenderer(std::span<const PathContext> panels, const CameraRays& cameraRays, const CmjPattern& pattern,
                std::vector<RgbImage>& images)
       : settings_(panels[0].settings), cameraRays_(cameraRays), pattern_(pattern), images_(images),
-        tracer_(panels, settings_.reference) {}
+        tracer_(panels) {}
 
   void render(int tx, int ty) {
     start(tx, ty);
@@ -82,11 +90,8 @@ class TileRenderer {
 
   void write() {
     for (size_t p = 0; p < images_.size(); ++p)
-      for (int i = 0; i < count_; ++i) {
-        const Rgb mean = sums_.sum[p * size_t(count_) + size_t(i)] / double(std::max(1, settings_.spp));
-        float* px = images_[p].at(x0_ + i % width_, y0_ + i / width_);
-        for (int c = 0; c < 3; ++c) px[c] = float(std::min(mean[c], double(std::numeric_limits<float>::max())));
-      }
+      for (int i = 0; i < count_; ++i)
+        writeMean(sums_.sum[p * size_t(count_) + size_t(i)], settings_.spp, images_[p].at(x0_ + i % width_, y0_ + i / width_));
   }
 
   const RenderSettings& settings_;
@@ -103,6 +108,64 @@ class TileRenderer {
   Vec2 film_[kWaveSize];
   Ray rays_[kWaveSize];
 };
+
+// A thread's renderer of tiles by the reference path tracer: each panel's paths one at a time, each pixel's
+// random numbers its own (the same in every panel).
+class ReferenceTiles {
+ public:
+  ReferenceTiles(std::span<const PathContext> panels, const CameraRays& cameraRays, std::vector<RgbImage>& images)
+      : panels_(panels), cameraRays_(cameraRays), images_(images) {}
+
+  void render(int tx, int ty) {
+    const RenderSettings& s = panels_[0].settings;
+    for (int y = ty * kTile; y < std::min(s.height, (ty + 1) * kTile); ++y)
+      for (int x = tx * kTile; x < std::min(s.width, (tx + 1) * kTile); ++x) {
+        if (s.pixels && !(*s.pixels)[size_t(y) * size_t(s.width) + size_t(x)]) continue;
+        for (size_t p = 0; p < panels_.size(); ++p) {
+          ReferenceRandom random(s.seed, uint32_t(s.firstSample), uint32_t(x), uint32_t(y));
+          Rgb sum(0.0);
+          for (int k = 0; k < s.spp; ++k) {
+            const Rgb r = referenceRadiance(panels_[p], cameraRays_(Vec2(x, y) + random.next2D()), random);
+            if (std::isfinite(r.r) && std::isfinite(r.g) && std::isfinite(r.b)) sum += r;
+            else ++dropped_;
+          }
+          writeMean(sum, s.spp, images_[p].at(x, y));
+        }
+      }
+  }
+  void addStats(RenderStats& stats) const { stats.droppedSamples += dropped_; }
+
+ private:
+  std::span<const PathContext> panels_;
+  const CameraRays& cameraRays_;
+  std::vector<RgbImage>& images_;
+  uint64_t dropped_ = 0;
+};
+
+// Every tile of the image by a Tiles renderer per thread (made by make), with progress, the settings'
+// threads and cancellation; their statistics summed into stats.
+template <class Tiles, class Make>
+void renderEachTile(const RenderSettings& settings, Make&& make, RenderStats& stats) {
+  tbb::enumerable_thread_specific<std::unique_ptr<Tiles>> renderers(make);
+  const int tilesX = (settings.width + kTile - 1) / kTile, tilesY = (settings.height + kTile - 1) / kTile;
+  Progress progress("render", size_t(tilesX) * size_t(tilesY));
+  if (!settings.progress) progress.finish();
+  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1), [&](const tbb::blocked_range2d<int>& tiles) {
+      Tiles& renderer = *renderers.local();
+      for (int ty = tiles.rows().begin(); ty < tiles.rows().end(); ++ty)
+        for (int tx = tiles.cols().begin(); tx < tiles.cols().end(); ++tx) {
+          if (settings.control && settings.control->cancelRequested()) return;
+          renderer.render(tx, ty);
+          progress.advance();
+          if (settings.control) settings.control->done.fetch_add(1, std::memory_order_relaxed);
+        }
+    });
+  });
+  progress.finish();
+  for (const std::unique_ptr<Tiles>& renderer : renderers) renderer->addStats(stats);
+}
 
 // The panel's own light and BSDF samples per material at a first vertex (light_count.h), each drawn as
 // their one set.
@@ -150,33 +213,17 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
     for (PathContext& c : contexts) c.counts.drawn[m] = drawn, c.counts.bsdfDrawn[m] = bsdfDrawn;
   }
   const CameraRays cameraRays(camera, settings.width, settings.height);
-  // Split patterns for every count of light or BSDF samples the panels' first vertices take.
-  int splits = 1;
-  for (const PathContext& c : contexts)
-    for (size_t m = 0; m < c.counts.taken.size(); ++m) splits = std::max({splits, c.counts.taken[m], c.counts.bsdf[m]});
-  const CmjPattern pattern(uint32_t(std::max(1, settings.spp)), uint32_t(splits));
-  tbb::enumerable_thread_specific<std::unique_ptr<TileRenderer>> renderers(
-      [&] { return std::make_unique<TileRenderer>(contexts, cameraRays, pattern, images); });
-
-  const int tilesX = (settings.width + kTile - 1) / kTile, tilesY = (settings.height + kTile - 1) / kTile;
-  Progress progress("render", size_t(tilesX) * size_t(tilesY));
-  if (!settings.progress) progress.finish();
-  tbb::task_arena arena(settings.threads > 0 ? settings.threads : tbb::task_arena::automatic);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range2d<int>(0, tilesY, 1, 0, tilesX, 1), [&](const tbb::blocked_range2d<int>& tiles) {
-      TileRenderer& renderer = *renderers.local();
-      for (int ty = tiles.rows().begin(); ty < tiles.rows().end(); ++ty)
-        for (int tx = tiles.cols().begin(); tx < tiles.cols().end(); ++tx) {
-          if (settings.control && settings.control->cancelRequested()) return;
-          renderer.render(tx, ty);
-          progress.advance();
-          if (settings.control) settings.control->done.fetch_add(1, std::memory_order_relaxed);
-        }
-    });
-  });
-  progress.finish();
   stats = RenderStats{};
-  for (const std::unique_ptr<TileRenderer>& renderer : renderers) renderer->addStats(stats);
+  if (settings.reference) {
+    renderEachTile<ReferenceTiles>(settings, [&] { return std::make_unique<ReferenceTiles>(contexts, cameraRays, images); }, stats);
+  } else {
+    // Split patterns for every count of light or BSDF samples the panels' first vertices take.
+    int splits = 1;
+    for (const PathContext& c : contexts)
+      for (size_t m = 0; m < c.counts.taken.size(); ++m) splits = std::max({splits, c.counts.taken[m], c.counts.bsdf[m]});
+    const CmjPattern pattern(uint32_t(std::max(1, settings.spp)), uint32_t(splits));
+    renderEachTile<TileRenderer>(settings, [&] { return std::make_unique<TileRenderer>(contexts, cameraRays, pattern, images); }, stats);
+  }
   stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return images;
 }

@@ -1,5 +1,5 @@
-// Rendering an image by path tracing (path_reference.cpp says what a path does, path_vertex.h how it is
-// done for one path or many at once, the default), or the panels of a sheet together. Depth follows Mitsuba 3:
+// Rendering an image by path tracing (reference_path.cpp says what a path does in plain code; the wave,
+// path_vertex.h, does it for many paths at once, the default), or the panels of a sheet together. Depth follows Mitsuba 3:
 // maxDepth counts path segments, so 1 shows only directly visible emitters, 2 adds direct lighting, 3 one
 // indirect bounce, and so on.
 #pragma once
@@ -44,7 +44,9 @@ struct RenderSettings {
   // Sample every BRDF's cosine lobe instead of its own (exact pdf either way): only to measure what lobe
   // sampling is worth.
   bool cosineBrdfSampling = false;
-  // One path at a time (Paths<1>, path_vertex.h) instead of waves: the same image, bit for bit, more slowly.
+  // The reference path tracer (reference_path.h) instead of the wave: one light and one BSDF sample per
+  // vertex, its own random numbers, each panel of a sheet on its own. The same image in expectation, with
+  // more noise, more slowly: the oracle the wave is tested against.
   bool reference = false;
   // Optional, width × height: only the pixels marked here are traced (the others stay black), for a render
   // whose figures look at part of the image (a sheet's noise-floor row: the object's pixels).

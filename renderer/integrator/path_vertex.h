@@ -1,8 +1,7 @@
-// A path's steps from one vertex to the next, written once for a set of lanes (lanes.h) and taken for all
-// of them before the next step: the reference (RenderSettings::reference) takes them for one path, the
-// wave, the default, for kWaveSize at once, each step then one batch (Embree packets, the sampler's draws,
-// the lights' samples, the BRDFs' samples and values) whose long chains of arithmetic and cache misses
-// overlap across lanes. So a path gets the same numbers either way. The steps are in path_reference.cpp.
+// The wave: a path's steps from one vertex to the next, taken for kWaveSize paths (lanes.h) at once before
+// the next step, each step one batch (Embree packets, the sampler's draws, the lights' samples, the BRDFs'
+// samples and values) whose long chains of arithmetic and cache misses overlap across lanes. The steps are
+// in path_wave.cpp; the same algorithm for one path in plain code is the reference (reference_path.cpp).
 #pragma once
 
 #include "renderer/integrator/direct_light.h"
@@ -72,10 +71,9 @@ inline bool continuePath(int depth, const RenderSettings& settings, const Shadin
 
 class SharedDraws;
 
-// The paths of up to N lanes and their state, advanced together a vertex at a time: a wave's kWaveSize or
-// the reference's one. Made once per thread and reused, as a wave's state is too large to clear per wave.
+// The paths of a wave, up to kWaveSize lanes, and their state, advanced together a vertex at a time. Made
+// once per thread and reused, as a wave's state is too large to clear per wave.
 // The lanes index the caller's rays, samplers (past the film position) and radiance, as theirs.
-template <int N>
 class Paths {
  public:
   explicit Paths(const PathContext& context) : context_(context) {}
@@ -111,30 +109,30 @@ class Paths {
   void addDistantEmission(const Lanes& escaped, const PathState* paths, Rgb* radiance);
 
   // Each lane's path, its last hit, and its vertex there before the BRDF acts.
-  PathState path[N];
-  Hit hit[N];
-  ShadingPoint point[N];
-  VertexDraws draws[N];
-  VertexLight light[N];
+  PathState path[kWaveSize];
+  Hit hit[kWaveSize];
+  ShadingPoint point[kWaveSize];
+  VertexDraws draws[kWaveSize];
+  VertexLight light[kWaveSize];
 
  private:
   const PathContext& context_;
-  bool found_[N];
-  Vec3 direction_[N];  // of the rays that left the scene (addOtherBsdfSamples: of its samples)
-  Receiver from_[N];   // their vertices
-  Rgb arriving_[N], throughput_[N];
-  double pdf_[N];
-  DirectLight<N> direct_;
-  BrdfSample bsdf_[N];
-  int ownSet_[N];  // where each lane's own set starts among its BSDF draws (setOffset)
+  bool found_[kWaveSize];
+  Vec3 direction_[kWaveSize];  // of the rays that left the scene (addOtherBsdfSamples: of its samples)
+  Receiver from_[kWaveSize];   // their vertices
+  Rgb arriving_[kWaveSize], throughput_[kWaveSize];
+  double pdf_[kWaveSize];
+  DirectLight direct_;
+  BrdfSample bsdf_[kWaveSize];
+  int ownSet_[kWaveSize];  // where each lane's own set starts among its BSDF draws (setOffset)
   // addOtherBsdfSamples' scratch: each lane's sample, as the draws, the ray and hit and the path it makes
   // (its direction in direction_).
-  VertexDraws otherDraws_[N];
-  BrdfSample other_[N];
-  Ray otherRays_[N];
-  Hit otherHit_[N];
-  bool otherFound_[N];
-  PathState otherPath_[N];
+  VertexDraws otherDraws_[kWaveSize];
+  BrdfSample other_[kWaveSize];
+  Ray otherRays_[kWaveSize];
+  Hit otherHit_[kWaveSize];
+  bool otherFound_[kWaveSize];
+  PathState otherPath_[kWaveSize];
   // The resampling's: a candidate's emission; the seed of the candidates' uniforms, and per channel the
   // candidates' sum and the sample kept with its direction.
   struct Resampled {
@@ -145,8 +143,8 @@ class Paths {
     int chosen[3] = {-1, -1, -1};
     Vec3 direction[3];
   };
-  Rgb candidate_[N];
-  Resampled resampled_[N];
+  Rgb candidate_[kWaveSize];
+  Resampled resampled_[kWaveSize];
 };
 
 }  // namespace glossy

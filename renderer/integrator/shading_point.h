@@ -50,10 +50,8 @@ inline BrdfValue valueToward(const RenderSettings& settings, const ShadingPoint&
   return evalPdf(*sp.brdf, wiLocal, sp.woLocal);
 }
 
-// out[i]: the BSDF sample of draws u[i] at sp[i], for the lanes below N, a batch per BRDF (one lane: the
-// reference's one call).
-template <int N>
-void sampleBsdfs(const RenderSettings& settings, const Lanes& lanes, const ShadingPoint* sp, const VertexDraws* u,
+// out[i]: the BSDF sample of draws u[i] at sp[i], a batch per BRDF.
+inline void sampleBsdfs(const RenderSettings& settings, const Lanes& lanes, const ShadingPoint* sp, const VertexDraws* u,
                  BrdfSample* out) {
   if (settings.cosineBrdfSampling) {
     for (const int i : lanes) out[i] = sampleCosineLobe(sp[i].brdf->model(), sp[i].woLocal, u[i].bsdf);
@@ -61,10 +59,10 @@ void sampleBsdfs(const RenderSettings& settings, const Lanes& lanes, const Shadi
   }
   forEachGroup(lanes, [&](int i) { return sp[i].brdf; }, [&](const Brdf* brdf, const Lanes& group) {
     // Zeroed only because GCC cannot see that the batch reads the n lanes written.
-    Vec3 wo[N] = {};
-    double uLobe[N] = {};
-    Vec2 uDir[N] = {};
-    BrdfSample samples[N];
+    Vec3 wo[kWaveSize] = {};
+    double uLobe[kWaveSize] = {};
+    Vec2 uDir[kWaveSize] = {};
+    BrdfSample samples[kWaveSize];
     for (int g = 0; g < group.n; ++g) {
       wo[g] = sp[group.lane[g]].woLocal;
       uLobe[g] = u[group.lane[g]].lobe;

@@ -71,8 +71,7 @@ struct DrawsUsed {
 };
 
 // The draws of a vertex for samplers[i] into out[i], i in lanes, whose lightSets the caller has set, slot by
-// slot, each a batch draw (cmj_sampler.h), which gives one sampler (a set of one, the reference) the values
-// of its scalar draws. The light slots of a lane that draws more than one light sample take its sets of
+// slot, each a batch draw (cmj_sampler.h), which gives each sampler the values of its scalar draws. The light slots of a lane that draws more than one light sample take its sets of
 // split draws (CmjSampler::getSplits2D) instead, and the BSDF slots of one that takes more than one BSDF
 // sample its sets of them.
 inline void drawVertices(CmjSampler* samplers, const Lanes& lanes, DrawsUsed used, VertexDraws* out) {

@@ -248,7 +248,8 @@ data (a MERL table or .nbrdf), or any glossy.Brdf (brdf); none: the scene's own 
 or .glb (default: the material-preview scene). env: a lat-long .exr/.hdr; env_constant: a radiance or
 (R, G, B); neither: the built-in sky. size: N or (width, height).
 
-progress: callable(done, total), called with the tiles rendered so far. Ctrl-C stops the render and
+reference: render with the reference path tracer (plain one-path code, `glossy render --reference`): the same
+image in expectation, noisier and slower. progress: callable(done, total), called with the tiles rendered so far. Ctrl-C stops the render and
 raises KeyboardInterrupt; an exception raised by progress stops it too. output: also write the EXR.
 )doc");
 

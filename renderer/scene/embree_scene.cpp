@@ -155,7 +155,15 @@ Hit EmbreeScene::completeHit(const Ray& ray, uint32_t meshIndex, uint32_t triang
   return hit;
 }
 
-void EmbreeScene::intersect(const bool* valid, const Ray* rays, Hit* hits, bool* found) const {
+void EmbreeScene::intersect(const bool* valid, const Ray* rays, Hit* hits, bool* found, int n) const {
+  for (int p = 0; p < n; p += kPacketSize) intersectPacket(valid + p, rays + p, hits + p, found + p);
+}
+
+void EmbreeScene::occluded(const bool* valid, const Ray* rays, bool* occluded, int n) const {
+  for (int p = 0; p < n; p += kPacketSize) occludedPacket(valid + p, rays + p, occluded + p);
+}
+
+void EmbreeScene::intersectPacket(const bool* valid, const Ray* rays, Hit* hits, bool* found) const {
   if (recorder_) [[unlikely]]
     recorder_->recordPacket(rays, valid, false);
   alignas(32) int mask[kPacketSize];
@@ -176,7 +184,7 @@ void EmbreeScene::intersect(const bool* valid, const Ray* rays, Hit* hits, bool*
   }
 }
 
-void EmbreeScene::occluded(const bool* valid, const Ray* rays, bool* occluded) const {
+void EmbreeScene::occludedPacket(const bool* valid, const Ray* rays, bool* occluded) const {
   alignas(32) int mask[kPacketSize];
   alignas(32) RTCRay8 packet;
   bool traced[kPacketSize], any = false;

@@ -97,9 +97,10 @@ class EmbreeScene {
 
   bool intersect(const Ray& ray, Hit& hit) const;  // closest hit within [tnear, tfar]
   bool occluded(const Ray& ray) const;             // any hit within [tnear, tfar]
-  // The same for kPacketSize rays at once; lanes with valid[i] false are neither traced nor written.
-  void intersect(const bool* valid, const Ray* rays, Hit* hits, bool* found) const;
-  void occluded(const bool* valid, const Ray* rays, bool* occluded) const;
+  // The same for n rays at once (n a multiple of kPacketSize), traced as Embree packets of kPacketSize;
+  // rays with valid[i] false are neither traced nor written.
+  void intersect(const bool* valid, const Ray* rays, Hit* hits, bool* found, int n) const;
+  void occluded(const bool* valid, const Ray* rays, bool* occluded, int n) const;
   // A sphere around all geometry, centred on its bounding box (not the smallest one): for the environment
   // light's power and default cameras.
   Vec3 boundsCenter() const { return center_; }
@@ -114,6 +115,9 @@ class EmbreeScene {
   // the same hit whether Embree answered a one-ray or a packet query.
   Hit completeHit(const Ray& ray, uint32_t mesh, uint32_t triangle, double t, double u, double v) const;
   void release();
+  // One packet of kPacketSize rays.
+  void intersectPacket(const bool* valid, const Ray* rays, Hit* hits, bool* found) const;
+  void occludedPacket(const bool* valid, const Ray* rays, bool* occluded) const;
 
   const SceneDescription& scene_;
   std::string embreeError_;  // set by Embree's error callback, turned into an exception by throwIfEmbreeFailed

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
 
 #include <cmath>
 
@@ -92,6 +93,21 @@ Rgb directionalAlbedo(const Brdf& brdf, const Vec3& V, int nMu, int nPhi) {
     }
   }
   return sum * (2 * kPi / (double(nMu) * nPhi));
+}
+
+Camera perspective(glm::dvec3 eye, glm::dvec3 target, double yfov) {
+  Camera c;
+  c.cameraToWorld = glm::inverse(glm::lookAt(eye, target, glm::dvec3(0, 1, 0)));
+  c.yfov = yfov;
+  return c;
+}
+
+SphereOnFloor::SphereOnFloor(const Brdf& sphere, bool lamp) {
+  description.materials = {material("sphere"), material("floor"), material("lamp", Rgb(0.0), Rgb(4.0, 3.0, 2.0))};
+  description.meshes.push_back(uvSphere(1.0, 64, 32, 0));
+  description.meshes.push_back(quad({-4, -1, 4}, {8, 0, 0}, {0, 0, -8}, 1));
+  if (lamp) description.meshes.push_back(quad({-1, 2.5f, -1}, {2, 0, 0}, {0, 0, 2}, 2));
+  brdfs = {sphere, Lambertian{Rgb(0.6, 0.5, 0.4)}, Lambertian{Rgb(0.0)}};
 }
 
 }  // namespace glossy::test

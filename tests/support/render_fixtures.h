@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include <filesystem>
+#include <vector>
 
 namespace glossy::test {
 
@@ -23,6 +24,15 @@ double projectedSolidAngle(const glm::dvec3 (&corners)[4], const glm::dvec3& p);
 Mesh uvSphere(double radius, int segments, int rings, int material);
 // An orthographic camera at eye looking at target, half-extent halfExtent in both axes.
 Camera orthographicDown(double halfExtent, glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up);
+// A perspective camera at eye looking at target (+Y up), yfov its vertical field of view.
+Camera perspective(glm::dvec3 eye, glm::dvec3 target, double yfov);
+// A glossy sphere (radius 1 about the origin, the given BRDF) on a Lambertian floor, and if asked a lamp
+// (two emissive triangles 1.5 above the sphere's top, facing down onto it).
+struct SphereOnFloor {
+  SceneDescription description;
+  std::vector<Brdf> brdfs;
+  SphereOnFloor(const Brdf& sphere, bool lamp);
+};
 // A width × height lat-long map (float EXR at path) of small bright panels on a dim gradient: single
 // texels, a 2 × 2 block and one on the top row (a pole), in three colours: where the light a sample of a
 // cell finds varies most within the cell.

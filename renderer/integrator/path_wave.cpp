@@ -1,10 +1,10 @@
-// The path tracer, as pbrt-v4's PathIntegrator::Li, for a set of lanes (path_vertex.h: the reference's one
-// path, the wave's kWaveSize). Unidirectional path tracing with next-event estimation (direct_light.h: at a
+// The wave's path tracer, as pbrt-v4's PathIntegrator::Li, for kWaveSize paths at once (path_vertex.h).
+// Unidirectional path tracing with next-event estimation (direct_light.h: at a
 // camera path's first vertex as many light samples as its BRDF takes, light_count.h, one at each deeper
 // one, each of a light chosen by power) combined with BSDF sampling by multiple importance sampling (power
 // heuristic with sample counts: a first vertex takes as many BSDF samples as its BRDF takes, of which the
-// first continues the path), and Russian roulette. A test holds the reference and the wave to the same
-// image bit for bit.
+// first continues the path), and Russian roulette. Tests hold it to the reference path tracer's expectation
+// (reference_path.cpp), pixel block by pixel block.
 //
 // Depth follows Mitsuba 3: maxDepth counts path segments, so 1 shows only directly visible emitters, 2 adds
 // direct lighting, 3 one indirect bounce, and so on.
@@ -13,16 +13,12 @@
 
 namespace glossy {
 
-template <int N>
-Lanes Paths<N>::next(int depth, const Lanes& lanes, const Ray* rays, CmjSampler* samplers, Rgb* radiance, SharedDraws* shared) {
-  // The rays' hits: as Embree packets where N is whole packets (a wave's), else one at a time.
-  if constexpr (N % kPacketSize == 0) {
-    bool active[N] = {};
-    for (const int i : lanes) active[i] = true;
-    for (int p = 0; p < N; p += kPacketSize) context_.scene.bvh->intersect(active + p, rays + p, hit + p, found_ + p);
-  } else {
-    for (const int i : lanes) found_[i] = context_.scene.bvh->intersect(rays[i], hit[i]);
-  }
+static_assert(kWaveSize % kPacketSize == 0, "the scene traces a wave's rays as whole packets");
+
+Lanes Paths::next(int depth, const Lanes& lanes, const Ray* rays, CmjSampler* samplers, Rgb* radiance, SharedDraws* shared) {
+  bool active[kWaveSize] = {};
+  for (const int i : lanes) active[i] = true;
+  context_.scene.bvh->intersect(active, rays, hit, found_, kWaveSize);
   // A ray that left the scene sees the distant lights; one that hit a light sees it, and its path ends there;
   // the others find the shading point, where their paths reflect if they can.
   Lanes escaped, shading;
@@ -51,8 +47,7 @@ Lanes Paths<N>::next(int depth, const Lanes& lanes, const Ray* rays, CmjSampler*
   return shading;
 }
 
-template <int N>
-Lanes Paths<N>::reflect(int depth, const Lanes& lanes, Ray* rays, Rgb* radiance) {
+Lanes Paths::reflect(int depth, const Lanes& lanes, Ray* rays, Rgb* radiance) {
   // The direct light, weighed by the BRDFs; then the BSDF samples, which continue the paths.
   for (const int i : lanes) throughput_[i] = path[i].throughput;
   direct_.add(context_.settings, lanes, point, light, throughput_, radiance);
@@ -60,7 +55,7 @@ Lanes Paths<N>::reflect(int depth, const Lanes& lanes, Ray* rays, Rgb* radiance)
     ownSet_[i] = setOffset(draws[i].bsdfSets, point[i].bsdfSamples);
     takeBsdfDraw(draws[i], ownSet_[i], 0, draws[i]);
   }
-  sampleBsdfs<N>(context_.settings, lanes, point, draws, bsdf_);
+  sampleBsdfs(context_.settings, lanes, point, draws, bsdf_);
   Lanes more;
   for (const int i : lanes)
     if (point[i].bsdfSamples > 1) more.add(i);
@@ -71,8 +66,7 @@ Lanes Paths<N>::reflect(int depth, const Lanes& lanes, Ray* rays, Rgb* radiance)
   return alive;
 }
 
-template <int N>
-void Paths<N>::addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance) {
+void Paths::addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance) {
   // Where no ray can hit a light, what a further sample finds is the distant lights' emission if its ray
   // leaves the scene, else nothing: resample them (below) rather than trace each. Resampling hashes its
   // uniforms from the roulette draw, which a vertex that plays no roulette leaves unused (vertex_draws.h).
@@ -94,7 +88,7 @@ void Paths<N>::addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance)
         takeBsdfDraw(draws[i], ownSet_[i], j, otherDraws_[i]);
         sampled.add(i);
       }
-    sampleBsdfs<N>(context_.settings, sampled, point, otherDraws_, other_);
+    sampleBsdfs(context_.settings, sampled, point, otherDraws_, other_);
     Lanes valid;
     for (const int i : sampled) {
       const BrdfSample& s = other_[i];
@@ -111,16 +105,12 @@ void Paths<N>::addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance)
       for (const int i : valid) choose(i, j);
       continue;
     }
-    bool active[N] = {};
+    bool active[kWaveSize] = {};
     for (const int i : valid) {
       otherRays_[i] = spawnRay(point[i].position, point[i].ng, point[i].margin, direction_[i]);
       active[i] = true;
     }
-    if constexpr (N % kPacketSize == 0) {
-      for (int p = 0; p < N; p += kPacketSize) context_.scene.bvh->intersect(active + p, otherRays_ + p, otherHit_ + p, otherFound_ + p);
-    } else {
-      for (const int i : valid) otherFound_[i] = context_.scene.bvh->intersect(otherRays_[i], otherHit_[i]);
-    }
+    context_.scene.bvh->intersect(active, otherRays_, otherHit_, otherFound_, kWaveSize);
     Lanes escaped;
     for (const int i : valid) {
       if (!otherFound_[i]) {
@@ -137,10 +127,10 @@ void Paths<N>::addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance)
   // Each channel's chosen sample's ray, traced, once where channels chose the same sample: the channel's
   // emission, Σ c over its probability c_j / Σ c of being chosen times c_j, arrives if the ray leaves the
   // scene. Where nothing blocks them, exactly the samples' sum.
-  bool visible[N][3] = {};
+  bool visible[kWaveSize][3] = {};
   for (int c = 0; c < 3; ++c) {
     Lanes traced;
-    bool active[N] = {}, blocked[N] = {};
+    bool active[kWaveSize] = {}, blocked[kWaveSize] = {};
     for (const int i : lanes) {
       const Resampled& r = resampled_[i];
       if (!(r.sum[c] > 0.0)) continue;
@@ -153,11 +143,7 @@ void Paths<N>::addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance)
       active[i] = true;
       traced.add(i);
     }
-    if constexpr (N % kPacketSize == 0) {
-      for (int p = 0; p < N; p += kPacketSize) context_.scene.bvh->occluded(active + p, otherRays_ + p, blocked + p);
-    } else {
-      for (const int i : traced) blocked[i] = context_.scene.bvh->occluded(otherRays_[i]);
-    }
+    context_.scene.bvh->occluded(active, otherRays_, blocked, kWaveSize);
     for (const int i : traced) visible[i][c] = !blocked[i];
   }
   for (const int i : lanes)
@@ -165,8 +151,7 @@ void Paths<N>::addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance)
       if (visible[i][c]) radiance[i][c] += resampled_[i].sum[c];
 }
 
-template <int N>
-void Paths<N>::choose(int i, int j) {
+void Paths::choose(int i, int j) {
   // Weighted reservoir sampling in each channel: candidate j replaces the one kept with probability
   // c / (the channel's sum so far), so that in the end each is kept with c_j / Σ c. The candidate's
   // uniform, hashed from the vertex's draw and j, is the same in every channel, so where their candidates
@@ -184,15 +169,11 @@ void Paths<N>::choose(int i, int j) {
   }
 }
 
-template <int N>
-void Paths<N>::addDistantEmission(const Lanes& escaped, const PathState* paths, Rgb* radiance) {
+void Paths::addDistantEmission(const Lanes& escaped, const PathState* paths, Rgb* radiance) {
   for (const ChosenLight& distant : context_.lights.distant()) {
     distant.light->arriving(direction_, from_, escaped.lane, escaped.n, arriving_, pdf_);
     for (const int i : escaped) addEmission(paths[i], arriving_[i], distant.probability * pdf_[i], radiance[i]);
   }
 }
-
-template class Paths<1>;
-template class Paths<kWaveSize>;
 
 }  // namespace glossy
