@@ -71,6 +71,27 @@ TEST(ExrPreflight, APreviewImageMustBeTheSizeItSays) {
   EXPECT_EQ(refusal(Header().attribute("preview", "preview", Header::int32(2) + Header::int32(2) + pixels).write(tmp)), "");
 }
 
+// A header of a few bytes that declares a data window 2^28 pixels wide: OpenEXR would allocate its 16-line
+// chunks' buffers (48 GiB of float RGB) on opening it. A window 4096 wide is what images are.
+TEST(ExrPreflight, ChunksLargerThanAnyImageAreRefusedBeforeOpenExrAllocatesThem) {
+  TempDir tmp;
+  std::string channels;
+  for (const char* c : {"B", "G", "R"}) channels += std::string(c) + '\0' + Header::int32(2) + std::string(4, '\0') + Header::int32(1) + Header::int32(1);
+  channels += '\0';
+  const auto header = [&](int32_t width, char compression) {
+    return Header()
+        .attribute("channels", "chlist", channels)
+        .attribute("compression", "compression", std::string(1, compression))
+        .attribute("dataWindow", "box2i", Header::int32(0) + Header::int32(0) + Header::int32(width - 1) + Header::int32(0));
+  };
+  const std::string message = refusal(header(1 << 28, 3).write(tmp));
+  EXPECT_NE(message.find("declares chunks of 51539607552 bytes (a data window 268435456 pixels wide)"), std::string::npos) << message;
+  EXPECT_EQ(refusal(header(4096, 3).write(tmp)), "");
+  // DWAB decodes 256 lines at once: 2^20 columns of float RGB is 3 GiB a chunk.
+  EXPECT_NE(refusal(header(1 << 20, 9).write(tmp)), "");
+  EXPECT_EQ(refusal(header(1 << 20, 0).write(tmp)), "");  // one line at a time: 12 MiB
+}
+
 TEST(ExrPreflight, AFileOpenImageIoWroteIsAccepted) {
   TempDir tmp;
   RgbImage image(4, 3);

@@ -4,6 +4,8 @@
 #include "materials/core/text.h"
 
 #include <cstdint>
+#include <iterator>
+#include <limits>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -96,7 +98,53 @@ std::string contentProblem(const std::string& type, const std::string& value) {
 }
 
 // Attributes whose contents are checked, read whole (their claimed size is within the file's).
-bool checksContents(const std::string& type) { return type == "chlist" || type == "stringvector" || type == "preview"; }
+bool checksContents(const std::string& type) {
+  return type == "chlist" || type == "stringvector" || type == "preview" || type == "box2i" || type == "compression" ||
+         type == "tiledesc";
+}
+
+// What OpenEXR decodes at once, a chunk (a block of scanlines, or a tile), whose buffers it allocates when it
+// opens the file, before any pixel is read: a header of a few bytes that claims a data window of 2^30
+// columns would make it take gigabytes there. Above this, no image glossy writes or reads: a sheet of 7
+// panels 8192 pixels wide, in float with its error maps, takes 132 MiB per 16-line chunk.
+constexpr uint64_t kMaxChunkBytes = uint64_t(512) << 20;
+
+// Scanlines per chunk of each OpenEXR compression (by its code: none, RLE, ZIPS, ZIP, PIZ, PXR24, B44, B44A,
+// DWAA, DWAB); 0 for a code OpenEXR does not know, which it refuses itself.
+int linesPerChunk(int compression) {
+  constexpr int kLines[] = {1, 1, 1, 16, 32, 16, 32, 32, 32, 256};
+  return compression >= 0 && compression < int(std::size(kLines)) ? kLines[compression] : 0;
+}
+
+// Bytes per pixel of a channel list that channelListProblem accepted: HALF 2, UINT and FLOAT 4.
+uint64_t pixelBytes(const std::string& list) {
+  uint64_t bytes = 0;
+  for (size_t at = 0; at < list.size();) {
+    const size_t end = list.find('\0', at);
+    if (end == at) break;
+    bytes += littleEndianInt(list, end + 1) == 1 ? 2 : 4;
+    at = end + 1 + 16;
+  }
+  return bytes;
+}
+
+// What one header says of its chunks, as far as the preflight read it.
+struct ChunkShape {
+  int64_t width = 0;            // of the data window
+  int compression = 0;
+  uint64_t pixelBytes = 0;      // all channels
+  int64_t tileWidth = 0, tileHeight = 0;  // a tiled file's
+};
+
+// The bytes of one chunk of the header's image, in 64-bit arithmetic, saturating; 0 where the header lacks
+// what it takes (OpenEXR refuses such a header itself).
+uint64_t chunkBytes(const ChunkShape& c) {
+  if (c.width <= 0 && c.tileWidth <= 0) return 0;
+  const uint64_t pixels = c.tileWidth > 0 ? uint64_t(c.tileWidth) * uint64_t(c.tileHeight)  // below 2^64
+                                          : uint64_t(c.width) * uint64_t(linesPerChunk(c.compression));
+  if (c.pixelBytes > 0 && pixels > std::numeric_limits<uint64_t>::max() / c.pixelBytes) return std::numeric_limits<uint64_t>::max();
+  return pixels * c.pixelBytes;
+}
 
 }  // namespace
 
@@ -117,6 +165,7 @@ void preflightExr(const std::filesystem::path& path) {
   for (;;) {
     std::string name, type;
     bool empty = true;
+    ChunkShape chunk;
     for (;;) {
       if (!readName(in, name)) throw fail("is truncated or has an attribute name over 255 characters");
       if (name.empty()) break;
@@ -140,10 +189,21 @@ void preflightExr(const std::filesystem::path& path) {
         // OpenEXR passes on any pixel type, and OpenImageIO aborts the program on one it does not know.
         const std::string problem = type == "chlist" ? channelListProblem(value) : contentProblem(type, value);
         if (!problem.empty()) throw fail("attribute '" + name + "': " + problem);
+        if (name == "channels" && type == "chlist") chunk.pixelBytes = pixelBytes(value);
+        if (name == "dataWindow" && type == "box2i")
+          chunk.width = int64_t(littleEndianInt(value, 8)) - int64_t(littleEndianInt(value, 0)) + 1;
+        if (name == "compression" && type == "compression") chunk.compression = static_cast<unsigned char>(value[0]);
+        if (name == "tiles" && type == "tiledesc")
+          chunk.tileWidth = uint32_t(littleEndianInt(value, 0)), chunk.tileHeight = uint32_t(littleEndianInt(value, 4));
       } else {
         in.seekg(bytes, std::ios::cur);
       }
     }
+    if (const uint64_t bytes = chunkBytes(chunk); bytes > kMaxChunkBytes)
+      throw fail(formatted("declares chunks of %llu bytes (a data window %lld pixels wide), more than the %llu of any image "
+                           "glossy reads: OpenEXR would allocate them before reading a pixel",
+                           static_cast<unsigned long long>(bytes), static_cast<long long>(chunk.width),
+                           static_cast<unsigned long long>(kMaxChunkBytes)));
     // A single-part file has one header; a multipart file's list ends with an empty header.
     if (!(version & kMultipart) || empty) return;
   }
