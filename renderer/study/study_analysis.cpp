@@ -714,35 +714,29 @@ std::vector<ModelStyle> modelStyles(const Study& s) {
   return out;
 }
 
-}  // namespace
+// The sheets' verdicts: how many name one model, a tie, or none (the intervals do not part the models, or
+// the sheet warns that they may be too narrow); and the r* that are 0 by clamping.
+struct VerdictCounts {
+  int decided = 0, tied = 0, none = 0, clamped = 0;
+};
 
-double expectedAnalysisSeconds(int resamples, std::size_t materials, std::size_t models) {
-  constexpr double kSecondsPerUnit = 25.0 / (2000.0 * 100.0 * 36.0);
-  return kSecondsPerUnit * double(resamples) * double(materials) * double(models) * double(models);
+VerdictCounts verdictCounts(const Study& s) {
+  VerdictCounts v;
+  for (const auto& [key, sheet] : s.sheets) {
+    bool one = false, tie = false;
+    for (const auto& [model, row] : sheet) {
+      one = one || row->closest;
+      tie = tie || row->tied;
+      v.clamped += row->rrmseClamped ? 1 : 0;
+    }
+    v.decided += one ? 1 : 0;
+    v.tied += !one && tie ? 1 : 0;
+  }
+  v.none = int(s.sheets.size()) - v.decided - v.tied;
+  return v;
 }
 
-AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOptions& options, const std::filesystem::path& folder) {
-  if (options.resamples < 0 || options.resamples > 1000000)
-    throw InputError("study: bootstrap resamples " + std::to_string(options.resamples) + " outside 0 … 1000000");
-  constexpr int kSteps = 6;
-  const auto step = [&](int k, const std::string& what) {
-    if (options.progress) options.progress(k, kSteps, what);
-  };
-  step(1, "rows, verdicts and rank tests");
-  // The perceptual data are read first: a malformed table stops the analysis before anything is written.
-  if (!options.perceptualDir.empty()) (void)PerceptualData::read(options.perceptualDir);
-  const Study s = readRows(rows);
-  const RankTests t = rankTests(s);
-
-  Json results;
-  results["generator"] = "glossy study";
-  results["glossy"] = glossyJson();
-  if (options.provenance) results["provenance"] = provenanceJson(*options.provenance);
-  else results["provenance"] = Json{{"reason", "the rows were analysed without their study file"}};
-  results["fits"] = fitsJson(s.all);
-  results["seed"] = options.seed;
-  results["resamples"] = options.resamples;
-  results["interval"] = "95 % percentile bootstrap, materials resampled with their sheets";
+Json countsJson(const Study& s, const VerdictCounts& v) {
   Json counts;
   counts["rows"] = int(s.all.size());
   counts["rowsUsed"] = int(s.used.size());
@@ -750,30 +744,15 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   counts["materials"] = int(s.materials.size());
   counts["sheets"] = int(s.sheets.size());
   counts["models"] = int(s.models.size());
-  // How many sheets decided: a verdict that names one model, a tie, or none (the intervals do not part the
-  // models, or the sheet warns that they may be too narrow); and the r* that are 0 by clamping.
-  int decided = 0, tiedSheets = 0, clamped = 0;
-  for (const auto& [key, sheet] : s.sheets) {
-    bool one = false, tie = false;
-    for (const auto& [model, row] : sheet) {
-      one = one || row->closest;
-      tie = tie || row->tied;
-      clamped += row->rrmseClamped ? 1 : 0;
-    }
-    decided += one ? 1 : 0;
-    tiedSheets += !one && tie ? 1 : 0;
-  }
-  counts["sheetsDecided"] = decided;
-  counts["sheetsTied"] = tiedSheets;
-  counts["sheetsWithoutVerdict"] = int(s.sheets.size()) - decided - tiedSheets;
-  counts["rowsRrmseClamped"] = clamped;
-  results["counts"] = counts;
-  results["materials"] = perMaterial(s);
+  counts["sheetsDecided"] = v.decided;
+  counts["sheetsTied"] = v.tied;
+  counts["sheetsWithoutVerdict"] = v.none;
+  counts["rowsRrmseClamped"] = v.clamped;
+  return counts;
+}
 
-  step(2, "per-model and per-lighting intervals");
-  std::vector<Interval> meanIv;
-  const Json models = perModel(s, t, options, meanIv);
-  results["models"] = models;
+// The Friedman test and the Holm–Wilcoxon pairs with the cliques they leave, as results.json has them.
+void addRankTests(const Study& s, const RankTests& t, Json& results) {
   Json jf;
   jf["materials"] = int(t.complete.size());
   jf["materialsLeftOut"] = int(s.materials.size() - t.complete.size());
@@ -793,12 +772,10 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   }
   jw["cliques"] = cliques;
   results["wilcoxon"] = jw;
-  std::vector<std::string> rankOrder;
-  for (std::size_t k : t.rankOrder) rankOrder.push_back(s.models[k]);
-  const LightingAnalysis lighting = analyseLighting(s.used, rankOrder, options.resamples, options.seed);
-  results["lighting"] = lighting.json;
+}
 
-  step(3, "pairwise shares of materials");
+// Which model is closer than which, on what share of materials: over all, per database, per material class.
+Json closerThan(const Study& s, const AnalysisOptions& options) {
   std::vector<std::size_t> all(s.materials.size());
   std::iota(all.begin(), all.end(), 0);
   Json pairwise;
@@ -813,34 +790,23 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   for (const auto& [c, mats] : classes) byClass[c] = pairwiseTable(s, mats, options, "class/" + c);
   pairwise["byDatabase"] = byDb.is_null() ? Json::object() : byDb;
   pairwise["byClass"] = byClass.is_null() ? Json::object() : byClass;
-  results["closerThan"] = pairwise;
+  return pairwise;
+}
 
-  std::string claimHeadline, peopleHeadline;
-  Json differences = Json::array();
-  step(4, "BRDF-space against image error");
-  results["brdfVsImage"] = brdfVsImage(s, options, differences, claimHeadline);
-  results["e2MinusE1"] = differences;
-  std::vector<PerceptualSeries> series;
-  step(5, "against people");
-  results["againstPeople"] = againstPeople(s, options, peopleHeadline, series);
-  if (!options.perceptualDir.empty()) {
-    const PeopleAnalysis within = closestToPeople(s.used, PerceptualData::read(options.perceptualDir), options.resamples, options.seed);
-    results["againstPeople"]["withinMaterial"] = within.json;
-    peopleHeadline += (peopleHeadline.empty() ? "" : "\n") + within.headline;
-    if (!peopleHeadline.empty() && peopleHeadline.back() == '\n') peopleHeadline.pop_back();
-  }
-
-  // The headline.
+// The summary's text: counts, verdicts, each model's line, the rank tests, lighting, the claims about
+// BRDF-space and image error, a small sample's caveat, and the comparison with people.
+std::string summaryText(const Study& s, const RankTests& t, const VerdictCounts& v, const Json& results,
+                        const std::string& lightingHeadline, const std::string& claimHeadline, const std::string& peopleHeadline) {
   std::string summary = "Study: " + std::to_string(s.materials.size()) + " materials, " + std::to_string(s.sheets.size()) +
                         " sheets, " + std::to_string(s.models.size()) + " models; " + std::to_string(s.used.size()) + " rows used";
   if (s.skipped) summary += ", " + std::to_string(s.skipped) + " without rRMSE skipped";
   summary += ".\n";
-  summary += "Verdicts: " + std::to_string(decided) + " of " + std::to_string(s.sheets.size()) + " sheets name one closest model, " +
-             std::to_string(tiedSheets) + " a tie, " + std::to_string(int(s.sheets.size()) - decided - tiedSheets) +
+  summary += "Verdicts: " + std::to_string(v.decided) + " of " + std::to_string(s.sheets.size()) + " sheets name one closest model, " +
+             std::to_string(v.tied) + " a tie, " + std::to_string(v.none) +
              " none (intervals that do not part the models, or a warning that they may be too narrow)";
-  if (clamped > 0) summary += "; " + std::to_string(clamped) + " r* clamped to 0 (the model within the render noise), ranked as 0";
+  if (v.clamped > 0) summary += "; " + std::to_string(v.clamped) + " r* clamped to 0 (the model within the render noise), ranked as 0";
   summary += ".\n";
-  for (const Json& m : models)
+  for (const Json& m : results["models"])
     summary += "  " + m["label"].get<std::string>() + ": closest on " + std::to_string(m["closest"].get<int>()) + " of " +
                std::to_string(m["sheets"].get<int>()) + " sheets, tied on " + std::to_string(m["tied"].get<int>()) +
                "; mean rank " + (m["meanRank"].is_null() ? std::string("—") : formatted("%.2f", m["meanRank"].get<double>())) +
@@ -850,44 +816,134 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
     summary += formatted("Friedman χ² = %.3f (df %d), p = %.3g", t.friedman->chiSquare, t.friedman->treatments - 1, t.friedman->pChiSquare);
     if (t.friedman->pF) summary += formatted("; Iman–Davenport F p = %.3g", *t.friedman->pF);
     summary += " over " + std::to_string(t.complete.size()) + " materials.\n";
-    const std::string groups = joined(cliques, "; ", [](const Json& c) { return c.dump(); });
+    const std::string groups = joined(results["wilcoxon"]["cliques"], "; ", [](const Json& c) { return c.dump(); });
     summary += "Not significantly different (Holm–Wilcoxon, α = 0.05): " + (groups.empty() ? std::string("none") : groups) + ".\n";
   } else {
     summary += "Friedman test: none (" + t.friedmanReason + ").\n";
   }
-  summary += lighting.headline;
+  summary += lightingHeadline;
   summary += claimHeadline + "\n";
   if (s.materials.size() < kIntervalMinMaterials)
     summary += "A small sample: no interval (" + tooFewForInterval(s.materials.size()) + ")" +
                (s.materials.size() < kTestMinMaterials ? "; no test (" + tooFewForTest(s.materials.size()) + ")" : std::string()) +
                " — docs/study.md, \"Small samples\", says why.\n";
   if (!peopleHeadline.empty()) summary += peopleHeadline + "\n";
+  return summary;
+}
+
+// A figure of the analysis: its name, SVG and caption (for results.json, summary.md and the report page).
+struct StudyFigure {
+  std::string name, svg, caption;
+};
+
+std::vector<StudyFigure> studyFigures(const Study& s, const RankTests& t, const AnalysisOptions& options,
+                                      const std::vector<PerceptualSeries>& series) {
+  MaterialTable table{s.materials, modelStyles(s), s.rrmse, s.flip, s.e1, s.e2};
+  std::vector<StudyFigure> figures = {
+      {"error_curves", errorCurvesSvg(table, options.referenceModel), errorCurvesCaption(table, options.referenceModel)},
+      {"heat_map", heatMapSvg(table), heatMapCaption()},
+  };
+  std::vector<CdModel> cd;
+  if (t.friedman)
+    for (std::size_t k : t.rankOrder) cd.push_back({s.models[k], t.friedman->meanRanks[k]});
+  std::string test = t.methods.empty() ? std::string("no Wilcoxon test") : *t.methods.begin();
+  if (t.methods.size() > 1) test = "exact or normal approximation";
+  figures.push_back({"critical_difference", criticalDifferenceSvg(cd, t.cliques, int(t.complete.size()), test),
+                     criticalDifferenceCaption(int(t.complete.size()), test)});
+  figures.push_back({"brdf_vs_image", brdfVsImageSvg(table), brdfVsImageCaption()});
+  if (!options.perceptualDir.empty())
+    figures.push_back({"perceptual", perceptualSvg(series, {"rRMSE r*", "ꟻLIP", "E1", "E2"}), perceptualCaption()});
+  return figures;
+}
+
+// summary.md: the summary, the lighting table, where every other output is, the figures' captions and the
+// methods.
+std::string summaryMarkdown(const std::string& summary, const std::string& lightingMarkdown, const std::vector<StudyFigure>& figures,
+                            const Json& results, const AnalysisOptions& options) {
+  const bool studyFile = options.provenance && !options.provenance->studyText.empty();
+  std::string md = "# Study summary\n\n```\n" + summary + "```\n\n" + lightingMarkdown +
+                   "\nEvery statistic with its interval: `results.json`; "
+                   "the rows: `rows.csv`, `rows.json`; per-model tables: `models.tex`; per-lighting table: `lighting.tex`; "
+                   "methods: `methods.tex`" +
+                   std::string(studyFile ? "; the study file: `study.toml`" : "") + "; figures: ";
+  for (std::size_t i = 0; i < figures.size(); ++i) md += (i ? ", " : "") + std::string("`") + figures[i].name + ".svg`";
+  md += ".\n\n## Figures\n\n";
+  for (const StudyFigure& f : figures) {
+    std::string text;  // "r*" is not Markdown's emphasis
+    for (char c : f.caption) text += c == '*' ? std::string("\\*") : std::string(1, c);
+    md += "- `" + f.name + ".svg`: " + text + "\n";
+  }
+  if (!options.perceptualDir.empty())
+    md += "\nPerceived distances: Lavoué, Bonneel, Farrugia, Soler, \"Perceptual quality of BRDF approximations: dataset and "
+          "metrics\", Computer Graphics Forum 40(2), 2021.\n";
+  md += "\n## Methods\n\n" + methodsMarkdown(results);
+  return md;
+}
+
+}  // namespace
+
+double expectedAnalysisSeconds(int resamples, std::size_t materials, std::size_t models) {
+  constexpr double kSecondsPerUnit = 25.0 / (2000.0 * 100.0 * 36.0);
+  return kSecondsPerUnit * double(resamples) * double(materials) * double(models) * double(models);
+}
+
+AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOptions& options, const std::filesystem::path& folder) {
+  if (options.resamples < 0 || options.resamples > 1000000)
+    throw InputError("study: bootstrap resamples " + std::to_string(options.resamples) + " outside 0 … 1000000");
+  constexpr int kSteps = 6;
+  const auto step = [&](int k, const std::string& what) {
+    if (options.progress) options.progress(k, kSteps, what);
+  };
+  step(1, "rows, verdicts and rank tests");
+  // The perceptual data are read first: a malformed table stops the analysis before anything is written.
+  if (!options.perceptualDir.empty()) (void)PerceptualData::read(options.perceptualDir);
+  const Study s = readRows(rows);
+  const RankTests t = rankTests(s);
+  const VerdictCounts verdicts = verdictCounts(s);
+  Json results;
+  results["generator"] = "glossy study";
+  results["glossy"] = glossyJson();
+  if (options.provenance) results["provenance"] = provenanceJson(*options.provenance);
+  else results["provenance"] = Json{{"reason", "the rows were analysed without their study file"}};
+  results["fits"] = fitsJson(s.all);
+  results["seed"] = options.seed;
+  results["resamples"] = options.resamples;
+  results["interval"] = "95 % percentile bootstrap, materials resampled with their sheets";
+  results["counts"] = countsJson(s, verdicts);
+  results["materials"] = perMaterial(s);
+
+  step(2, "per-model and per-lighting intervals");
+  std::vector<Interval> meanIv;
+  results["models"] = perModel(s, t, options, meanIv);
+  addRankTests(s, t, results);
+  std::vector<std::string> rankOrder;
+  for (std::size_t k : t.rankOrder) rankOrder.push_back(s.models[k]);
+  const LightingAnalysis lighting = analyseLighting(s.used, rankOrder, options.resamples, options.seed);
+  results["lighting"] = lighting.json;
+
+  step(3, "pairwise shares of materials");
+  results["closerThan"] = closerThan(s, options);
+
+  step(4, "BRDF-space against image error");
+  std::string claimHeadline, peopleHeadline;
+  Json differences = Json::array();
+  results["brdfVsImage"] = brdfVsImage(s, options, differences, claimHeadline);
+  results["e2MinusE1"] = differences;
+
+  step(5, "against people");
+  std::vector<PerceptualSeries> series;
+  results["againstPeople"] = againstPeople(s, options, peopleHeadline, series);
+  if (!options.perceptualDir.empty()) {
+    const PeopleAnalysis within = closestToPeople(s.used, PerceptualData::read(options.perceptualDir), options.resamples, options.seed);
+    results["againstPeople"]["withinMaterial"] = within.json;
+    peopleHeadline += (peopleHeadline.empty() ? "" : "\n") + within.headline;
+    if (!peopleHeadline.empty() && peopleHeadline.back() == '\n') peopleHeadline.pop_back();
+  }
+  const std::string summary = summaryText(s, t, verdicts, results, lighting.headline, claimHeadline, peopleHeadline);
   results["summary"] = summary;
 
   step(6, "figures and files");
-  MaterialTable table{s.materials, modelStyles(s), s.rrmse, s.flip, s.e1, s.e2};
-  std::vector<std::pair<std::string, std::string>> svgs = {
-      {"error_curves", errorCurvesSvg(table, options.referenceModel)},
-      {"heat_map", heatMapSvg(table)},
-  };
-  // Each figure's caption by its name, for results.json, summary.md and the report page.
-  std::map<std::string, std::string> captions = {{"error_curves", errorCurvesCaption(table, options.referenceModel)},
-                                                 {"heat_map", heatMapCaption()},
-                                                 {"brdf_vs_image", brdfVsImageCaption()},
-                                                 {"perceptual", perceptualCaption()}};
-  {
-    std::vector<CdModel> cd;
-    if (t.friedman)
-      for (std::size_t k : t.rankOrder) cd.push_back({s.models[k], t.friedman->meanRanks[k]});
-    std::string test = t.methods.empty() ? std::string("no Wilcoxon test") : *t.methods.begin();
-    if (t.methods.size() > 1) test = "exact or normal approximation";
-    svgs.emplace_back("critical_difference", criticalDifferenceSvg(cd, t.cliques, int(t.complete.size()), test));
-    captions["critical_difference"] = criticalDifferenceCaption(int(t.complete.size()), test);
-  }
-  svgs.emplace_back("brdf_vs_image", brdfVsImageSvg(table));
-  if (!options.perceptualDir.empty())
-    svgs.emplace_back("perceptual", perceptualSvg(series, {"rRMSE r*", "ꟻLIP", "E1", "E2"}));
-
+  const std::vector<StudyFigure> figures = studyFigures(s, t, options, series);
   AnalysisResult result;
   result.summary = summary;
   auto write = [&](const std::string& name, const std::string& contents) {
@@ -897,45 +953,24 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   const auto dump = [](const Json& j) { return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; };
   write("rows.csv", rowsCsv(s.all));
   write("rows.json", dump(rowsJson(s.all)));
-  Json figures = Json::array();
+  Json figureList = Json::array();
   const auto rsvg = plot::findRsvgConvert();
-  for (const auto& [name, svg] : svgs) {
-    write(name + ".svg", svg);
+  for (const StudyFigure& f : figures) {
+    write(f.name + ".svg", f.svg);
     if (rsvg) {
-      plot::svgToPng(*rsvg, folder / (name + ".svg"), folder / (name + ".png"), 1.5);
-      result.files.emplace_back(name + ".png");
+      plot::svgToPng(*rsvg, folder / (f.name + ".svg"), folder / (f.name + ".png"), 1.5);
+      result.files.emplace_back(f.name + ".png");
     }
-    figures.push_back({{"name", name},
-                       {"svg", name + ".svg"},
-                       {"png", rsvg ? Json(name + ".png") : Json(nullptr)},
-                       {"caption", captions.count(name) ? Json(captions.at(name)) : Json(nullptr)}});
+    figureList.push_back({{"name", f.name}, {"svg", f.name + ".svg"}, {"png", rsvg ? Json(f.name + ".png") : Json(nullptr)}, {"caption", f.caption}});
   }
-  results["figures"] = figures;
+  results["figures"] = figureList;
   write("results.json", dump(results));
   write("models.tex", modelsTex(results));
   write("lighting.tex", lighting.tex);
   write("methods.tex", methodsTex(results));
   // The study file as it was read: the settings of these results, beside them.
   if (options.provenance && !options.provenance->studyText.empty()) write(kStudyFileCopy, options.provenance->studyText);
-  std::string md = "# Study summary\n\n```\n" + summary + "```\n\n" + lighting.markdown +
-                   "\nEvery statistic with its interval: `results.json`; "
-                   "the rows: `rows.csv`, `rows.json`; per-model tables: `models.tex`; per-lighting table: `lighting.tex`; "
-                   "methods: `methods.tex`" +
-                   std::string(options.provenance && !options.provenance->studyText.empty() ? "; the study file: `study.toml`" : "") +
-                   "; figures: ";
-  for (std::size_t i = 0; i < svgs.size(); ++i) md += (i ? ", " : "") + std::string("`") + svgs[i].first + ".svg`";
-  md += ".\n\n## Figures\n\n";
-  for (const auto& [name, svg] : svgs)
-    if (captions.count(name)) {
-      std::string text;  // "r*" is not Markdown's emphasis
-      for (char c : captions.at(name)) text += c == '*' ? std::string("\\*") : std::string(1, c);
-      md += "- `" + name + ".svg`: " + text + "\n";
-    }
-  if (!options.perceptualDir.empty())
-    md += "\nPerceived distances: Lavoué, Bonneel, Farrugia, Soler, \"Perceptual quality of BRDF approximations: dataset and "
-          "metrics\", Computer Graphics Forum 40(2), 2021.\n";
-  md += "\n## Methods\n\n" + methodsMarkdown(results);
-  write("summary.md", md);
+  write("summary.md", summaryMarkdown(summary, lighting.markdown, figures, results, options));
   return result;
 }
 
