@@ -131,7 +131,7 @@ TEST(MergeCli, SheetsFiguresInOneTable) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = readCsv(tmp / "out/errors.csv");
   ASSERT_EQ(rows.size(), 16u) << "2 sheets × (7 panels + the noise floor)";
-  const report::SheetRecord chrome = report::readSheetRecord(tmp / "sheets/chrome.exr");
+  const SheetRecord chrome = readSheetRecord(tmp / "sheets/chrome.exr");
   size_t checked = 0;
   std::string warning;
   for (const std::string& w : chrome.warnings) warning.append(warning.empty() ? "" : "; ").append(w);
@@ -145,7 +145,7 @@ TEST(MergeCli, SheetsFiguresInOneTable) {
       EXPECT_EQ(std::stod(row.at("flip")), *chrome.noiseFloor->flip.value);
     }
     if (row.at("panel") == "measured" || row.at("panel") == "noise_floor") continue;
-    const report::PanelRecord* p = chrome.panel(row.at("panel"));
+    const PanelRecord* p = chrome.panel(row.at("panel"));
     ASSERT_TRUE(p);
     ASSERT_TRUE(p->relativeRmse.value);
     EXPECT_EQ(std::stod(row.at("relative_rmse")), *p->relativeRmse.value);

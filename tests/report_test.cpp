@@ -97,9 +97,9 @@ TEST(ReportCli, EveryImageAndLinkOfEveryPageIsInTheSite) {
 TEST(ReportCli, PanelImagesAreTheSheetPngsPanels) {
   TempDir tmp;
   ASSERT_EQ(report(sheetsDir(), tmp / "site").status, 0);
-  const report::SheetRecord sheet = report::readSheetRecord(sheetsDir() / "chrome.exr");
+  const SheetRecord sheet = readSheetRecord(sheetsDir() / "chrome.exr");
   const RgbImage png = readRgbImage(sheetsDir() / "chrome.png");
-  for (const report::PanelRecord& p : sheet.panels) {
+  for (const PanelRecord& p : sheet.panels) {
     const RgbImage panel = readRgbImage(tmp / "site/materials/chrome" / ("panel-" + p.layer + ".png"));
     ASSERT_EQ(panel.width, p.width);
     double worst = 0.0;
@@ -114,8 +114,8 @@ TEST(ReportCli, TheIndexShowsTheSheetsFigures) {
   TempDir tmp;
   ASSERT_EQ(report(sheetsDir(), tmp / "site").status, 0);
   const std::string index = readText(tmp / "site/index.html");
-  const report::SheetRecord sheet = report::readSheetRecord(sheetsDir() / "alum-bronze.exr");
-  const report::PanelRecord* ct = sheet.panel("cook_torrance_E2");
+  const SheetRecord sheet = readSheetRecord(sheetsDir() / "alum-bronze.exr");
+  const PanelRecord* ct = sheet.panel("cook_torrance_E2");
   ASSERT_TRUE(ct && ct->relativeRmse.value && ct->e2);
   const std::string value = readImageAttribute(sheetsDir() / "alum-bronze.exr", "glossy:error.cook_torrance_E2.relativeRmse");
   EXPECT_NEAR(*ct->relativeRmse.value, std::stod(value), 1e-5 * std::abs(std::stod(value)));  // the text has 6 digits
@@ -231,11 +231,11 @@ TEST(ReportCli, ImagesAreNotDuplicatedAndPlotPicturesAreScaled) {
   EXPECT_EQ(picture.width, 960);
   EXPECT_EQ(picture.height, 600);
   // The panels and the part below them are the sheet's PNG, each pixel once.
-  const report::SheetRecord sheet = report::readSheetRecord(sheetsDir() / "chrome.exr");
+  const SheetRecord sheet = readSheetRecord(sheetsDir() / "chrome.exr");
   const RgbImage png = readRgbImage(sheetsDir() / "chrome.png");
   const RgbImage lower = readRgbImage(chrome / "sheet-lower.png");
   int64_t pixels = int64_t(lower.width) * lower.height;
-  for (const report::PanelRecord& p : sheet.panels) pixels += int64_t(p.width) * p.height;
+  for (const PanelRecord& p : sheet.panels) pixels += int64_t(p.width) * p.height;
   EXPECT_EQ(pixels, int64_t(png.width) * png.height);
   EXPECT_EQ(lower.width, png.width);
   for (int y = 0; y < lower.height; ++y)
@@ -472,21 +472,21 @@ TEST(ReportInput, LinksOutOfTheInputFoldersAndSpecialFilesAreRefused) {
 
 TEST(ReportSummary, CountsClosestAndTiesApartAndTakesMedians) {
   auto sheet = [](const std::string& name, const std::string& verdict, double a, std::optional<double> b) {
-    report::SheetRecord s;
+    SheetRecord s;
     s.name = name;
     s.verdict = verdict;
-    report::PanelRecord m;
+    PanelRecord m;
     m.layer = "measured", m.label = "Measured", m.fit = "measured";
-    report::PanelRecord pa;
+    PanelRecord pa;
     pa.layer = "smooth_E2", pa.label = "Smooth E2", pa.fit = "smooth:E2";
     pa.relativeRmse.value = a;
-    report::PanelRecord pb;
+    PanelRecord pb;
     pb.layer = "cook_torrance_E2", pb.label = "CT E2", pb.fit = "cook-torrance:E2";
     pb.relativeRmse.value = b;
     s.panels = {m, pa, pb};
     return s;
   };
-  const std::vector<report::SheetRecord> sheets = {sheet("a", "closest: Smooth E2", 0.1, 0.3), sheet("b", "tie: Smooth E2, CT E2", 0.2, 0.2),
+  const std::vector<SheetRecord> sheets = {sheet("a", "closest: Smooth E2", 0.1, 0.3), sheet("b", "tie: Smooth E2, CT E2", 0.2, 0.2),
                                                    sheet("c", "closest: CT E2", 0.4, std::nullopt), sheet("d", "no measured panel", 0.3, 0.5)};
   EXPECT_EQ(sheets[1].closestLayers(), (std::vector<std::string>{"smooth_E2", "cook_torrance_E2"}));
   EXPECT_TRUE(sheets[1].isTie());

@@ -43,7 +43,7 @@ TEST(SheetWarnings, TheWarningAndTheNoiseFloorReachTheExrTheTableAndTheReport) {
                                  (sharedDir() / "merl").string(), "--width", "32", "--height", "32", "--spp", "8", "--seed", "5",
                                  "--threads", "2", "-o", (tmp / "alum-bronze.exr").string()});
   ASSERT_EQ(r.status, 0) << r.err;
-  const report::SheetRecord s = report::readSheetRecord(tmp / "alum-bronze.exr");
+  const SheetRecord s = readSheetRecord(tmp / "alum-bronze.exr");
   ASSERT_FALSE(s.warnings.empty()) << r.out;
   EXPECT_NE(r.out.find("  warning: " + s.warnings.front()), std::string::npos) << r.out;
   EXPECT_FALSE(s.verdict.starts_with("closest: ")) << s.verdict;
@@ -53,7 +53,7 @@ TEST(SheetWarnings, TheWarningAndTheNoiseFloorReachTheExrTheTableAndTheReport) {
   // measured one) and a luminance ratio whose interval holds 1.
   EXPECT_NE(r.out.find("  noise floor "), std::string::npos) << r.out;
   ASSERT_TRUE(s.noiseFloor);
-  const report::ImageFigures& f = *s.noiseFloor;
+  const ImageFigures& f = *s.noiseFloor;
   ASSERT_TRUE(f.relativeRmse.value && f.relativeRmse.lo && f.relativeRmse.hi && f.luminanceRatio.lo && f.flip.value);
   EXPECT_EQ(*f.relativeRmse.lo, 0.0);
   EXPECT_GT(*f.relativeRmse.hi, 0.0);

@@ -159,7 +159,7 @@ TEST(StudyRows, TheClassComesFromThePerceptualData) {
 
 // A row carries the sheet's stored warnings (glossy:warnings) and, without a verdict, why there is none.
 TEST(StudyRows, TheWarningIsTheSheetsStoredWarnings) {
-  report::SheetRecord sheet;
+  SheetRecord sheet;
   sheet.verdict = "tie: Microfacet E2, Smooth E2";
   EXPECT_EQ(study::sheetWarning(sheet), "");
   sheet.warnings = {"noise is up to 93 % of a plain figure's square: the intervals may be too narrow", "second"};

@@ -109,15 +109,15 @@ nlohmann::json jsonNumber(const std::optional<double>& v) { return v ? nlohmann:
 
 // An image's figures, a panel's or the noise floor's: as CSV cells (relative_rmse … relative_rmse_noisy) and
 // as JSON members.
-std::string figureCells(const report::ImageFigures& f) {
+std::string figureCells(const ImageFigures& f) {
   std::string cells;
-  for (const report::Figure* g : {&f.relativeRmse, &f.luminanceRatio, &f.flip})
+  for (const Figure* g : {&f.relativeRmse, &f.luminanceRatio, &f.flip})
     cells += number(g->value) + "," + number(g->lo) + "," + number(g->hi) + ",";
   return cells + number(f.relativeRmseNoisy);
 }
 
-nlohmann::json figureJson(const report::ImageFigures& f) {
-  const auto ci = [](const report::Figure& g) { return g.lo ? nlohmann::json{*g.lo, *g.hi} : nlohmann::json(nullptr); };
+nlohmann::json figureJson(const ImageFigures& f) {
+  const auto ci = [](const Figure& g) { return g.lo ? nlohmann::json{*g.lo, *g.hi} : nlohmann::json(nullptr); };
   return {{"relative_rmse", jsonNumber(f.relativeRmse.value)}, {"relative_rmse_ci", ci(f.relativeRmse)},
           {"luminance_ratio", jsonNumber(f.luminanceRatio.value)}, {"luminance_ratio_ci", ci(f.luminanceRatio)},
           {"flip", jsonNumber(f.flip.value)}, {"flip_ci", ci(f.flip)}, {"relative_rmse_noisy", jsonNumber(f.relativeRmseNoisy)}};
@@ -130,17 +130,17 @@ int runMergeSheets(const MergeOptions& o) {
   std::optional<OutputLock> csvLock, jsonLock;
   if (!o.csv.empty()) csvLock.emplace(o.csv, "--csv");
   if (!o.json.empty()) jsonLock.emplace(o.json, "--json");
-  const std::vector<report::SheetRecord> sheets = report::readSheetFolder(o.sheetsDir);
+  const std::vector<SheetRecord> sheets = readSheetFolder(o.sheetsDir);
 
   std::string csv =
       "material,panel,label,fit,empty,spp,relative_rmse,relative_rmse_lo,relative_rmse_hi,luminance_ratio,luminance_ratio_lo,"
       "luminance_ratio_hi,flip,flip_lo,flip_hi,relative_rmse_noisy,E1,E2,closest,verdict,warning\n";
   nlohmann::json doc = {{"sheets", nlohmann::json::array()}};
-  for (const report::SheetRecord& s : sheets) {
+  for (const SheetRecord& s : sheets) {
     const std::vector<std::string> closest = s.closestLayers();
     const std::string warning = joined(s.warnings, "; ");  // the sheet's warnings on one line
     nlohmann::json panels = nlohmann::json::array();
-    for (const report::PanelRecord& p : s.panels) {
+    for (const PanelRecord& p : s.panels) {
       const bool isClosest = std::find(closest.begin(), closest.end(), p.layer) != closest.end();
       csv += csvField(s.name) + "," + p.layer + "," + csvField(p.label) + "," + csvField(p.fit) + "," + (p.empty ? "1" : "0") + "," +
              csvField(s.spp) + "," + figureCells(p) + "," + number(p.e1) + "," + number(p.e2) + "," + (isClosest ? "1" : "0") + "," +

@@ -23,7 +23,7 @@ inline double maxComponent(const Rgb& c) { return std::max({c.r, c.g, c.b}); }
 
 // A light sample as the shading point sees it: the shadow ray to trace and what the light brings along it,
 // before the BRDF's value there.
-struct LightPath {
+struct SeenLightSample {
   Vec3 wiLocal{0.0};
   Rgb radiance{0.0};
   double pdf = 0.0;  // solid angle, the light's choice included
@@ -32,7 +32,7 @@ struct LightPath {
 };
 
 // False when the sample brings nothing.
-inline bool toLight(const ShadingPoint& sp, const ChosenLight& chosen, const LightSample& s, LightPath& out) {
+inline bool toLight(const ShadingPoint& sp, const ChosenLight& chosen, const LightSample& s, SeenLightSample& out) {
   if (!(s.pdf > 0.0) || glm::dot(s.wi, sp.ng) <= 0.0) return false;
   out.wiLocal = sp.frame.toLocal(s.wi);
   if (out.wiLocal.z <= 0.0) return false;
@@ -40,7 +40,7 @@ inline bool toLight(const ShadingPoint& sp, const ChosenLight& chosen, const Lig
   out.pdf = chosen.probability * s.pdf;
   out.delta = s.delta;
   out.shadow = spawnRay(sp.position, sp.ng, sp.margin, s.wi);
-  if (!s.distant) {
+  if (!s.atInfinity) {
     // To the light's point, itself moved off the light by its margin. Where the two margins overlap
     // there is no room for an occluder: the light is seen.
     const Vec3 d = s.target - out.shadow.origin;
@@ -57,7 +57,7 @@ inline bool toLight(const ShadingPoint& sp, const ChosenLight& chosen, const Lig
 struct VertexLight {
   uint32_t sets = 1;
   int count = 0;  // setDraws(sets)
-  LightPath path[kMaxLightDraws];
+  SeenLightSample sample[kMaxLightDraws];
   bool visible[kMaxLightDraws] = {};  // the sample arrived from above the surface and nothing blocks it
 };
 
@@ -95,8 +95,8 @@ class DirectLight {
                    [&](const Light* l, const Lanes& group) { draw(l, from_, u_, group, sample_); });
       std::fill(traced_, traced_ + kWaveSize, false);
       for (const int i : chosen) {
-        traced_[i] = toLight(sp[i], chosen_[i], sample_[i], light[i].path[k]);
-        shadow_[i] = light[i].path[k].shadow;
+        traced_[i] = toLight(sp[i], chosen_[i], sample_[i], light[i].sample[k]);
+        shadow_[i] = light[i].sample[k].shadow;
       }
       context.scene.bvh->occluded(traced_, shadow_, occluded_, kWaveSize);
       for (const int i : chosen) light[i].visible[k] = traced_[i] && !occluded_[i];
@@ -118,7 +118,7 @@ class DirectLight {
         if (k < sp[i].lightSamples && light[i].visible[first_[i] + k]) lit.add(i);
       forEachGroup(lit, [&](int i) { return sp[i].brdf; }, [&](const Brdf* brdf, const Lanes& group) {
         for (int g = 0; g < group.n; ++g) {
-          wi_[g] = light[group.lane[g]].path[first_[group.lane[g]] + k].wiLocal;
+          wi_[g] = light[group.lane[g]].sample[first_[group.lane[g]] + k].wiLocal;
           wo_[g] = sp[group.lane[g]].woLocal;
         }
         if (settings.cosineBrdfSampling)
@@ -127,7 +127,7 @@ class DirectLight {
           evalPdfBatch(*brdf, wi_, wo_, value_, group.n);
         for (int g = 0; g < group.n; ++g) {
           const int i = group.lane[g];
-          const LightPath& l = light[i].path[first_[i] + k];
+          const SeenLightSample& l = light[i].sample[first_[i] + k];
           if (maxComponent(value_[g].f) <= 0.0) continue;
           const double pdf = sp[i].lightSamples * l.pdf;
           const double w = l.delta ? 1.0 : powerHeuristic(pdf, sp[i].bsdfSamples * value_[g].pdf);

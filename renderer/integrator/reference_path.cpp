@@ -78,7 +78,7 @@ Rgb directLight(const PathContext& context, const Vertex& v, ReferenceRandom& ra
   if (wi.z <= 0.0) return Rgb(0.0);
 
   Ray shadow = spawnRay(v.position, v.ng, v.margin, s.wi);
-  if (!s.distant) {
+  if (!s.atInfinity) {
     // Toward the light's point, which the light has moved off its own surface by its margin. Where the two
     // margins overlap there is no room for an occluder between: the light is seen.
     const Vec3 d = s.target - shadow.origin;

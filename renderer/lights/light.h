@@ -32,7 +32,9 @@ struct LightSample {
   Vec3 wi{0.0};        // unit, from the point toward the light
   Rgb radiance{0.0};   // arriving at the point along −wi if nothing blocks it
   double pdf = 0.0;    // solid angle at the point; 0: no sample. A delta light's: its choice alone, 1
-  bool distant = true;  // the shadow ray runs to infinity
+  // The light lies at infinity, and so does the shadow ray's end (the environment's, a directional light's);
+  // not Light::distant(), which says whether rays that leave the scene find the light.
+  bool atInfinity = true;
   Vec3 target{0.0};    // a surface light's point, moved off its surface toward the point by its margin
   bool delta = false;  // from a light no BSDF sample can hit: radiance is what arrives, not a density
 };

@@ -10,7 +10,7 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 
-namespace glossy::report {
+namespace glossy {
 
 namespace fs = std::filesystem;
 
@@ -50,4 +50,4 @@ std::string readInputFile(const fs::path& folder, const fs::path& file, std::uin
   return readOpenFile(d.fd, std::uintmax_t(st.st_size), where);
 }
 
-}  // namespace glossy::report
+}  // namespace glossy

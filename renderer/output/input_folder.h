@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace glossy::report {
+namespace glossy {
 
 // Throws InputError "FILE: ..." unless `file` is a regular file whose real path lies inside `folder`'s.
 // `what` names what it should be ("sheet").
@@ -21,4 +21,4 @@ void checkInputFile(const std::filesystem::path& folder, const std::filesystem::
 std::string readInputFile(const std::filesystem::path& folder, const std::filesystem::path& file, std::uintmax_t maxBytes,
                           std::string_view what);
 
-}  // namespace glossy::report
+}  // namespace glossy

@@ -9,9 +9,11 @@
 #include <filesystem>
 #include <vector>
 
-namespace glossy::report {
-
+namespace glossy {
 struct SheetRecord;
+}
+
+namespace glossy::report {
 
 struct SheetPixels {
   int width = 0, height = 0;

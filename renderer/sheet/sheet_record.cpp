@@ -19,7 +19,7 @@
 #include <map>
 #include <sstream>
 
-namespace glossy::report {
+namespace glossy {
 
 namespace {
 
@@ -346,4 +346,4 @@ void checkSameSettings(const std::vector<SheetRecord>& sheets) {
     }
 }
 
-}  // namespace glossy::report
+}  // namespace glossy

@@ -1,5 +1,5 @@
 // One material sheet as `glossy report`, `glossy merge sheets` and the study read it back, from the header of
-// the layered EXR that `glossy sheet` writes (sheet.cpp, writeSheetExr): the panels in grid order with their
+// the layered EXR that `glossy sheet` writes (sheet_exr.cpp, writeSheetExr): the panels in grid order with their
 // boxes, labels, notes and fit parameters, each analytic panel's error figures against the measured panel, and
 // the verdict, and the settings it was made with. Figures a sheet does not carry (an older sheet, an empty
 // panel) are absent, never zero, so the report can show "–" for them and sort them last. Every size and offset
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace glossy::report {
+namespace glossy {
 
 // A figure with its optional 95 % interval.
 struct Figure {
@@ -91,4 +91,4 @@ std::vector<SheetRecord> readSheetFolder(const std::filesystem::path& folder);
 // one index's summary and medians are over sheets made alike.
 void checkSameSettings(const std::vector<SheetRecord>& sheets);
 
-}  // namespace glossy::report
+}  // namespace glossy

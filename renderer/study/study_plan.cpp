@@ -60,7 +60,7 @@ StudyPlan readPlan(const std::filesystem::path& out) {
   const std::string where = file.string();
   nlohmann::json doc;
   try {
-    doc = nlohmann::json::parse(report::readInputFile(out, file, kMaxPlanBytes, "study plan"));
+    doc = nlohmann::json::parse(readInputFile(out, file, kMaxPlanBytes, "study plan"));
   } catch (const nlohmann::json::exception& e) {
     throw InputError(where + ": not JSON (" + shortened(e.what()) + ")");
   }

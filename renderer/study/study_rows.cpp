@@ -15,8 +15,8 @@ namespace glossy::study {
 
 namespace {
 
-std::string setting(const report::SheetRecord& sheet, const std::string& key) {
-  for (const report::SheetSetting& s : sheet.settings)
+std::string setting(const SheetRecord& sheet, const std::string& key) {
+  for (const SheetSetting& s : sheet.settings)
     if (s.key == key) return s.value;
   return "";
 }
@@ -39,7 +39,7 @@ std::string fitSource(const FitId& id, const std::optional<MaterialFile>& file) 
 
 }  // namespace
 
-std::string sheetWarning(const report::SheetRecord& sheet) {
+std::string sheetWarning(const SheetRecord& sheet) {
   // The sheet's warnings (glossy:warnings), then, for a sheet without a verdict, why it has none ("no
   // verdict: the measured panel is below its noise").
   std::string out = joined(sheet.warnings, "; ");
@@ -48,7 +48,7 @@ std::string sheetWarning(const report::SheetRecord& sheet) {
   return out;
 }
 
-std::vector<StudyRow> sheetRows(const report::SheetRecord& sheet, const PlannedMaterial& material, const std::string& lighting,
+std::vector<StudyRow> sheetRows(const SheetRecord& sheet, const PlannedMaterial& material, const std::string& lighting,
                                 const std::string& scene, const std::string& materialClass, const std::filesystem::path& relativeExr) {
   std::optional<MaterialFile> file;
   try {
@@ -62,7 +62,7 @@ std::vector<StudyRow> sheetRows(const report::SheetRecord& sheet, const PlannedM
   const std::string size = setting(sheet, "size");
   const size_t x = size.find('x');
   std::vector<StudyRow> rows;
-  for (const report::PanelRecord& p : sheet.panels) {
+  for (const PanelRecord& p : sheet.panels) {
     if (p.isMeasured() || p.empty) continue;
     const FitId id = FitId::parse(p.fit, sheet.exr.string());
     StudyRow r;
@@ -115,7 +115,7 @@ std::vector<StudyRow> readStudyRows(const std::filesystem::path& out, const Stud
     for (const std::string& lighting : plan.lightings)
       for (const std::string& scene : plan.scenes) {
         const std::filesystem::path relative = sheetPath(scene, lighting, m.name);
-        const report::SheetRecord sheet = report::readSheetRecord(out / kSheetsFolder, out / relative);
+        const SheetRecord sheet = readSheetRecord(out / kSheetsFolder, out / relative);
         if (sheet.name != m.name)
           throw InputError((out / relative).string() + ": is the sheet of '" + sheet.name + "', not of '" + m.name + "'");
         for (StudyRow& r : sheetRows(sheet, m, lighting, scene, materialClass, relative)) rows.push_back(std::move(r));

@@ -15,11 +15,11 @@ namespace glossy::study {
 
 // The warning a sheet stands under, as its rows carry it (StudyRow::warning): its stored warnings and,
 // without a verdict, why there is none, joined by "; "; "" when none.
-std::string sheetWarning(const report::SheetRecord& sheet);
+std::string sheetWarning(const SheetRecord& sheet);
 
 // The rows of one sheet: its non-empty analytic panels in grid order. `material`, `lighting` and `scene`
 // say what the sheet is; `materialClass` is the class to give its rows ("" when unknown).
-std::vector<StudyRow> sheetRows(const report::SheetRecord& sheet, const PlannedMaterial& material, const std::string& lighting,
+std::vector<StudyRow> sheetRows(const SheetRecord& sheet, const PlannedMaterial& material, const std::string& lighting,
                                 const std::string& scene, const std::string& materialClass, const std::filesystem::path& relativeExr);
 
 // Every row of the sheets `plan` names in `out`, sorted by material, lighting, scene and grid order.

@@ -33,7 +33,7 @@ void plotsEntry(Bytes data) {
   const std::filesystem::path folder = figureFiles().front()->path().parent_path();
   const TempFile index("plots.json", data);
   const report::PlotIndex plots = report::readPlotIndex(folder.parent_path(), folder);
-  report::SheetRecord sheet;
+  SheetRecord sheet;
   sheet.name = "alum-bronze";
   (void)report::materialPage(sheet, &plots, nullptr, nullptr);
 }

@@ -24,7 +24,7 @@ constexpr std::array<uint8_t, 69> kPng = {
 
 void sheetEntry(Bytes data) {
   const TempFile png("alum-bronze.png", kPng), exr("alum-bronze.exr", data);
-  const report::SheetRecord record = report::readSheetRecord(exr.path());
+  const SheetRecord record = readSheetRecord(exr.path());
   (void)record.closestLayers();
   (void)record.isTie();
   // The images to a folder of their own, emptied each time: the cut, not the files, is what is fuzzed.
