@@ -15,7 +15,6 @@
 #include <glm/matrix.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <vector>
 
@@ -98,7 +97,7 @@ void expectUnbiased(const RgbImage& a, const RgbImage& b, const std::function<bo
 
 // The wave against the reference path tracer, which shares none of its sampling, in every configuration
 // the wave treats differently (tracerCases): the two means of each 8 × 8 block and channel within 4.5
-// standard errors. At these samples a block's test catches a bias of 8–16 % with 99 % probability (the
+// standard errors. At these samples a block's test catches a bias of 1–18 % with 99 % probability (the
 // figures are printed); tests/sweep/tracer_sweep_test.cpp runs the same cases with the samples to catch
 // 1 % per 16 × 16 block.
 TEST(Integrator, TheWaveMatchesTheReferencePathTracerBlockByBlock) {
