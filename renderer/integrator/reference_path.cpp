@@ -38,9 +38,8 @@ struct Vertex {
 // False where the path cannot reflect: the viewer is below the shading frame's horizon.
 bool vertexAt(const RenderScene& scene, const Ray& ray, const Hit& hit, Vertex& v) {
   const Vec3 wo = -ray.dir;
-  Vec3 ng = hit.geometricNormal, ns = hit.shadingNormal;
-  if (glm::dot(wo, ng) < 0.0) ng = -ng, ns = -ns;
-  if (glm::dot(wo, ns) <= 0.0) ns = ng;  // a shading normal still facing away would let light through
+  Vec3 ng, ns;
+  normalsFacing(hit, wo, ng, ns);
   v.position = hit.position;
   v.ng = ng;
   v.margin = hit.margin;

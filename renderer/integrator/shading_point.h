@@ -22,14 +22,8 @@ struct ShadingPoint {
 // The shading point of a hit that is not a light; false where the path cannot reflect there.
 inline bool shade(const RenderScene& scene, const Ray& ray, const Hit& hit, ShadingPoint& sp) {
   const Vec3 wo = -ray.dir;
-  // Two-sided shading: face the normals toward the viewer. A shading normal that still faces away
-  // would let light through the surface, so fall back to the geometric one there.
-  Vec3 ng = hit.geometricNormal, ns = hit.shadingNormal;
-  if (glm::dot(wo, ng) < 0.0) {
-    ng = -ng;
-    ns = -ns;
-  }
-  if (glm::dot(wo, ns) <= 0.0) ns = ng;
+  Vec3 ng, ns;
+  normalsFacing(hit, wo, ng, ns);
   sp.position = hit.position;
   sp.ng = ng;
   sp.margin = hit.margin;

@@ -31,6 +31,15 @@ struct Hit {
   double margin = 0.0;
 };
 
+// Two-sided shading: a hit's geometric and shading normals turned toward the viewer (wo, unit, from the hit
+// toward where the ray came from). A shading normal that still faces away would let light through the
+// surface, so the geometric one stands in for it there.
+inline void normalsFacing(const Hit& hit, const Vec3& wo, Vec3& ng, Vec3& ns) {
+  ng = hit.geometricNormal, ns = hit.shadingNormal;
+  if (glm::dot(wo, ng) < 0.0) ng = -ng, ns = -ns;
+  if (glm::dot(wo, ns) <= 0.0) ns = ng;
+}
+
 // The margin of a surface whose coordinates reach maxAbs: 2⁻¹⁹ of it, 16 to 32 float ulps of it. The origin's rounding to
 // float (½ ulp a coordinate) and Embree's float plane test (a few ulps of the vertices' magnitude) stay
 // below it, and it scales with the scene, so a scene and its copy scaled by 1e3 render alike.

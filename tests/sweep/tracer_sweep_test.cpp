@@ -1,7 +1,7 @@
 // The wave against the reference path tracer in every configuration the wave treats differently
 // (tracer_comparison.h), with the samples for each 16 × 16 block's test to catch a 1 % bias with 99 %
 // probability (TracerCase::sppForOnePercent): 2 to 112 times the default suite's samples
-// (Integrator.TheWaveMatchesTheReferencePathTracerBlockByBlock); about 7 minutes on 2 cores.
+// (Integrator.TheWaveMatchesTheReferencePathTracerBlockByBlock).
 #include "tests/support/tracer_comparison.h"
 
 #include <gtest/gtest.h>
