@@ -1,0 +1,58 @@
+# Script mode (add_test_batches.cmake): list EXE's cases and write OUT, the add_test calls of one CTest test per
+# suite, or per shard of at most MAX_TESTS cases, or per case for the suites named in SEPARATE.
+cmake_minimum_required(VERSION 3.20)
+execute_process(COMMAND ${EXE} --gtest_list_tests OUTPUT_VARIABLE listing RESULT_VARIABLE status TIMEOUT 60)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "${EXE} --gtest_list_tests failed (${status}):\n${listing}")
+endif()
+
+# The listing: a suite per unindented line ("Suite." and perhaps "  # TypeParam = …"), its cases indented.
+# Disabled suites and cases (DISABLED_…), which GoogleTest lists but does not run, are left out.
+string(REPLACE ";" "\\;" listing "${listing}")
+string(REPLACE "\n" ";" lines "${listing}")
+set(suites "")
+foreach(line IN LISTS lines)
+  if(line MATCHES "^([^ #][^ ]*)\\.")
+    set(suite "${CMAKE_MATCH_1}")
+    list(APPEND suites "${suite}")
+    set("count_${suite}" 0)
+    set("cases_${suite}" "")
+  elseif(line MATCHES "^  ([^ #]+)")
+    set(case "${CMAKE_MATCH_1}")
+    if(NOT case MATCHES "^DISABLED_")
+      math(EXPR "count_${suite}" "${count_${suite}} + 1")
+      list(APPEND "cases_${suite}" "${case}")
+    endif()
+  endif()
+endforeach()
+
+set(text "# Written by tests/batches/write_test_batches.cmake from ${EXE} --gtest_list_tests.\n")
+foreach(suite IN LISTS suites)
+  set(cases ${count_${suite}})
+  if(cases EQUAL 0 OR suite MATCHES "^DISABLED_")
+    continue()
+  endif()
+  math(EXPR shards "(${cases} + ${MAX_TESTS} - 1) / ${MAX_TESTS}")
+  set(run "[==[${EXE}]==] [==[--gtest_filter=${suite}.*]==]")
+  set(properties "SKIP_RETURN_CODE 77 WORKING_DIRECTORY [==[${WORKING_DIRECTORY}]==]")
+  if(suite IN_LIST SEPARATE)
+    foreach(case IN LISTS "cases_${suite}")
+      string(APPEND text "add_test([==[${suite}.${case}]==] [==[${EXE}]==] [==[--gtest_filter=${suite}.${case}]==])\n"
+                         "set_tests_properties([==[${suite}.${case}]==] PROPERTIES ${properties})\n")
+    endforeach()
+  elseif(shards EQUAL 1)
+    string(APPEND text "add_test([==[${suite}]==] ${run})\n"
+                       "set_tests_properties([==[${suite}]==] PROPERTIES ${properties})\n")
+  else()
+    math(EXPR last "${shards} - 1")
+    foreach(index RANGE ${last})
+      math(EXPR number "${index} + 1")
+      set(name "${suite}#${number}/${shards}")
+      string(APPEND text "add_test([==[${name}]==] ${run})\n"
+                         "set_tests_properties([==[${name}]==] PROPERTIES ${properties} "
+                         "ENVIRONMENT [==[GTEST_TOTAL_SHARDS=${shards};GTEST_SHARD_INDEX=${index}]==])\n")
+    endforeach()
+  endif()
+endforeach()
+file(WRITE "${OUT}.new" "${text}")
+file(RENAME "${OUT}.new" "${OUT}")
