@@ -1,15 +1,12 @@
 // A sheet's panels rendered together (renderPanels) are each the image a solo render of the panel makes:
 // the same paths with the same draws, summed per pixel in another order only where paths stop at the object.
 // Where no path meets the object, every panel holds the same bits.
-#include "materials/nbrdf/neural_brdf.h"
 #include "renderer/camera/camera_rays.h"
-#include "renderer/integrator/light_count.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/sheet/sheet.h"
 #include "tests/support/test_support.h"
 
 #include <cmath>
-#include <set>
 
 namespace glossy::test {
 
@@ -56,18 +53,14 @@ RenderSettings smallSettings() {
 
 }  // namespace
 
+// At a sheet's counts (several light and BSDF samples at the object, the same in every panel), each panel
+// is the render of its scene alone.
 TEST(CoherentPanels, EachPanelIsItsSoloRender) {
   const std::vector<RenderScene> scenes = panelScenes();
-  const RenderSettings settings = smallSettings();
-  // The panels take different light-sample and BSDF-sample counts at the object (light_count.h), so the
-  // object vertex draws a set of each for each and each panel must find its own.
-  std::set<int> counts, bsdfCounts;
-  for (const RenderScene& scene : scenes) {  // withObject: defaultBrdf is the object's
-    counts.insert(lightSamplesFor(scene.defaultBrdf, settings.lightSamples));
-    bsdfCounts.insert(bsdfSamplesFor(scene.defaultBrdf, true));
-  }
-  EXPECT_GE(counts.size(), 2u);
-  EXPECT_GE(bsdfCounts.size(), 2u);
+  RenderSettings settings = smallSettings();
+  settings.lightSamplesPerBrdf = false;
+  settings.lightSamples = 4;
+  settings.bsdfSamples = 3;
   RenderStats stats;
   const std::vector<RgbImage> together = renderPanels(scenes, stage().description.cameras.front(), settings, stats);
   ASSERT_EQ(together.size(), scenes.size());
@@ -162,35 +155,6 @@ TEST(CoherentPanels, ASheetRendersWithItsRenderSettings) {
   EXPECT_TRUE(referenceDiffers);
   EXPECT_TRUE(cosineDiffers);
   EXPECT_TRUE(rouletteDiffers);
-}
-
-}  // namespace glossy::test
-
-namespace glossy::test {
-
-// A sheet's panels all take --light-samples at the object, not each BRDF's own count (light_count.h): they
-// share every light sample, so the noise cancels in each panel's difference from the measured panel. With
-// the counts of `glossy render` alum-bronze's fits take fewer than its table, and the intervals widen.
-TEST(CoherentPanels, ASheetsPanelsShareTheirLightSamples) {
-  const MaterialFile m = loadMaterialFile(materialsDir() / "alum-bronze.toml");
-  const auto table = std::make_shared<const MerlTable>(NeuralBrdf::load(materialsDir() / "alum-bronze.nbrdf").tabulate());
-  const auto widths = [&](bool perBrdf) {
-    SheetSettings s;
-    EXPECT_FALSE(s.lightSamplesPerBrdf) << "a sheet's default";
-    s.lightSamplesPerBrdf = perBrdf;
-    s.width = s.height = 48;
-    s.spp = 16;
-    s.threads = 2;
-    s.progress = false;
-    const Sheet sheet = renderSheet(stage().sheet, m, table, "network", s);
-    double sum = 0.0;
-    for (const PanelRender& p : sheet.panels)
-      if (p.figures.hasCi) sum += p.figures.relativeRmseCi.hi - p.figures.relativeRmseCi.lo;
-    return sum;
-  };
-  const double shared = widths(false), own = widths(true);
-  ASSERT_GT(shared, 0.0);
-  EXPECT_LT(shared, 0.6 * own) << "the summed widths of the r* intervals";
 }
 
 }  // namespace glossy::test

@@ -52,13 +52,11 @@ inline bool toLight(const ShadingPoint& sp, const ChosenLight& chosen, const Lig
   return true;
 }
 
-// The light samples a vertex drew (VertexDraws::lightSets, a set per count its panels take) with their
-// shadow rays' verdicts.
+// The light samples a vertex drew (VertexDraws::lightCount) with their shadow rays' verdicts.
 struct VertexLight {
-  uint32_t sets = 1;
-  int count = 0;  // setDraws(sets)
-  SeenLightSample sample[kMaxLightDraws];
-  bool visible[kMaxLightDraws] = {};  // the sample arrived from above the surface and nothing blocks it
+  int count = 0;
+  SeenLightSample sample[kMaxLightSamples];
+  bool visible[kMaxLightSamples] = {};  // the sample arrived from above the surface and nothing blocks it
 };
 
 // The samples of one light for a group of lanes, from their points and draws: Light::sample, unless a
@@ -77,8 +75,7 @@ class DirectLight {
               VertexLight* light, Draw&& draw) {
     int most = 0;
     for (const int i : lanes) {
-      light[i].sets = draws[i].lightSets;
-      light[i].count = setDraws(draws[i].lightSets);
+      light[i].count = int(draws[i].lightCount);
       most = std::max(most, light[i].count);
       from_[i] = receiver(sp[i]);
     }
@@ -103,22 +100,19 @@ class DirectLight {
     }
   }
 
-  // Each lane's own set of its light samples (sp[i].lightSamples of them, light_count.h) weighed by its
-  // BRDF, a batch per BRDF, and added to radiance[i] with the path's throughput.
+  // Each lane's light samples (sp[i].lightSamples of them, light_count.h) weighed by its BRDF, a batch per
+  // BRDF, and added to radiance[i] with the path's throughput.
   void add(const RenderSettings& settings, const Lanes& lanes, const ShadingPoint* sp, const VertexLight* light,
            const Rgb* throughput, Rgb* radiance) {
     int most = 0;
-    for (const int i : lanes) {
-      most = std::max(most, sp[i].lightSamples);
-      first_[i] = setOffset(light[i].sets, sp[i].lightSamples);
-    }
+    for (const int i : lanes) most = std::max(most, sp[i].lightSamples);
     for (int k = 0; k < most; ++k) {
       Lanes lit;
       for (const int i : lanes)
-        if (k < sp[i].lightSamples && light[i].visible[first_[i] + k]) lit.add(i);
+        if (k < sp[i].lightSamples && light[i].visible[k]) lit.add(i);
       forEachGroup(lit, [&](int i) { return sp[i].brdf; }, [&](const Brdf* brdf, const Lanes& group) {
         for (int g = 0; g < group.n; ++g) {
-          wi_[g] = light[group.lane[g]].sample[first_[group.lane[g]] + k].wiLocal;
+          wi_[g] = light[group.lane[g]].sample[k].wiLocal;
           wo_[g] = sp[group.lane[g]].woLocal;
         }
         if (settings.cosineBrdfSampling)
@@ -127,7 +121,7 @@ class DirectLight {
           evalPdfBatch(*brdf, wi_, wo_, value_, group.n);
         for (int g = 0; g < group.n; ++g) {
           const int i = group.lane[g];
-          const SeenLightSample& l = light[i].sample[first_[i] + k];
+          const SeenLightSample& l = light[i].sample[k];
           if (maxComponent(value_[g].f) <= 0.0) continue;
           const double pdf = sp[i].lightSamples * l.pdf;
           const double w = l.delta ? 1.0 : powerHeuristic(pdf, sp[i].bsdfSamples * value_[g].pdf);
@@ -144,7 +138,6 @@ class DirectLight {
   LightSample sample_[kWaveSize];
   Ray shadow_[kWaveSize];
   bool traced_[kWaveSize], occluded_[kWaveSize];
-  int first_[kWaveSize];  // where each lane's own set starts among its light samples (setOffset)
   Vec3 wi_[kWaveSize], wo_[kWaveSize];  // the BRDF's batch, packed
   BrdfValue value_[kWaveSize];
 };

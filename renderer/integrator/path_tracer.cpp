@@ -167,8 +167,7 @@ void renderEachTile(const RenderSettings& settings, Make&& make, RenderStats& st
   for (const std::unique_ptr<Tiles>& renderer : renderers) renderer->addStats(stats);
 }
 
-// The panel's own light and BSDF samples per material at a first vertex (light_count.h), each drawn as
-// their one set.
+// The panel's own light and BSDF samples per material at a first vertex (light_count.h).
 LightCounts lightCounts(const RenderScene& scene, const RenderSettings& settings, const LightSet& lights) {
   const int most = std::clamp(settings.lightSamples, 1, kMaxLightSamples);
   // Fixed counts give settings.bsdfSamples to a sheet's object (its materials), or everywhere outside sheets.
@@ -179,11 +178,25 @@ LightCounts lightCounts(const RenderScene& scene, const RenderSettings& settings
   for (size_t m = 0; m <= scene.brdfs.size(); ++m) {
     const Brdf& brdf = m == 0 ? scene.defaultBrdf : scene.brdfs[m - 1];
     counts.taken.push_back(settings.lightSamplesPerBrdf ? lightSamplesFor(brdf, most) : most);
-    counts.drawn.push_back(1u << (counts.taken.back() - 1));
     counts.bsdf.push_back(settings.lightSamplesPerBrdf ? bsdfSamplesFor(brdf, !lights.onSurfaces())
                           : object[m]                  ? std::clamp(settings.bsdfSamples, 1, kMaxBsdfSamples)
                                                        : 1);
-    counts.bsdfDrawn.push_back(1u << (counts.bsdf.back() - 1));
+  }
+  return counts;
+}
+
+// The counts every panel of a sheet takes: per material, the most any panel's own counts give, so that the
+// panels share every draw and shadow ray up to where their BRDFs part (any count is unbiased: the MIS
+// weights are the vertex's counts). A sheet's fixed counts (lightSamplesPerBrdf off) are the same in
+// every panel anyway.
+LightCounts panelCounts(std::span<const RenderScene> panels, const RenderSettings& settings, const LightSet& lights) {
+  LightCounts counts = lightCounts(panels.front(), settings, lights);
+  for (const RenderScene& panel : panels.subspan(1)) {
+    const LightCounts own = lightCounts(panel, settings, lights);
+    for (size_t m = 0; m < counts.taken.size(); ++m) {
+      counts.taken[m] = std::max(counts.taken[m], own.taken[m]);
+      counts.bsdf[m] = std::max(counts.bsdf[m], own.bsdf[m]);
+    }
   }
   return counts;
 }
@@ -205,22 +218,17 @@ std::vector<RgbImage> renderPanels(std::span<const RenderScene> panels, const Ca
     throw std::invalid_argument("renderPanels: the pixel mask is not width × height");
   std::vector<RgbImage> images(panels.size(), RgbImage(settings.width, settings.height));
   const LightSet lights(LightSources{*panels.front().description, panels.front().environment, panels.front().bvh->boundsRadius()});
+  const LightCounts counts = panelCounts(panels, settings, lights);
   std::vector<PathContext> contexts;
-  for (const RenderScene& panel : panels) contexts.push_back({panel, settings, lights, lightCounts(panel, settings, lights)});
-  for (size_t m = 0; m < contexts[0].counts.drawn.size(); ++m) {  // every panel draws the sets all of them take
-    uint32_t drawn = 0, bsdfDrawn = 0;
-    for (const PathContext& c : contexts) drawn |= c.counts.drawn[m], bsdfDrawn |= c.counts.bsdfDrawn[m];
-    for (PathContext& c : contexts) c.counts.drawn[m] = drawn, c.counts.bsdfDrawn[m] = bsdfDrawn;
-  }
+  for (const RenderScene& panel : panels) contexts.push_back({panel, settings, lights, counts});
   const CameraRays cameraRays(camera, settings.width, settings.height);
   stats = RenderStats{};
   if (settings.reference) {
     renderEachTile<ReferenceTiles>(settings, [&] { return std::make_unique<ReferenceTiles>(contexts, cameraRays, images); }, stats);
   } else {
-    // Split patterns for every count of light or BSDF samples the panels' first vertices take.
+    // Split patterns for every count of light or BSDF samples the first vertices take.
     int splits = 1;
-    for (const PathContext& c : contexts)
-      for (size_t m = 0; m < c.counts.taken.size(); ++m) splits = std::max({splits, c.counts.taken[m], c.counts.bsdf[m]});
+    for (size_t m = 0; m < counts.taken.size(); ++m) splits = std::max({splits, counts.taken[m], counts.bsdf[m]});
     const CmjPattern pattern(uint32_t(std::max(1, settings.spp)), uint32_t(splits));
     renderEachTile<TileRenderer>(settings, [&] { return std::make_unique<TileRenderer>(contexts, cameraRays, pattern, images); }, stats);
   }

@@ -17,13 +17,10 @@
 
 namespace glossy {
 
-// The most light samples a vertex takes (RenderSettings::lightSamples), and the most it draws: a sheet's
-// object vertex draws the sets of 1, 2, 4 and 8 that its panels take (light_count.h). The most BSDF
-// samples a first vertex takes (light_count.h: a sharp lobe's).
+// The most light samples a vertex takes (RenderSettings::lightSamples), and the most BSDF samples a first
+// vertex takes (light_count.h: a sharp lobe's).
 constexpr int kMaxLightSamples = 8;
-constexpr int kMaxLightDraws = 1 + 2 + 4 + 8;
 constexpr int kMaxBsdfSamples = 24;
-constexpr int kMaxBsdfDraws = 1 + kMaxBsdfSamples;  // the sets a sheet's panels may take: 1 and one more
 
 struct RenderSettings {
   int width = 512, height = 512;
@@ -33,8 +30,9 @@ struct RenderSettings {
   int rouletteDepth = 4;  // Russian roulette from this depth on
   // Light samples at a camera path's first vertex (path_vertex.h), at most, 1 … kMaxLightSamples; one at
   // the others. With lightSamplesPerBrdf each BRDF takes its own count up to this, and its own count of
-  // BSDF samples there (light_count.h), else every first vertex takes this many, and bsdfSamples BSDF
-  // samples (1 … kMaxBsdfSamples) where it is on a sheet's object (everywhere outside sheets), else one.
+  // BSDF samples there (light_count.h; a sheet's panels the most of theirs), else every first vertex takes
+  // this many, and bsdfSamples BSDF samples (1 … kMaxBsdfSamples) where it is on a sheet's object
+  // (everywhere outside sheets), else one.
   int lightSamples = 4;
   bool lightSamplesPerBrdf = true;
   int bsdfSamples = 1;
@@ -78,15 +76,12 @@ struct RenderScene {
   bool isObject(uint32_t mesh) const { return mesh < objectMeshes.size() && objectMeshes[mesh]; }
 };
 
-// The light samples of a camera path's first vertex per scene material (index + 1; 0 the default BRDF):
-// those this panel takes, and the sets drawn there (bit k − 1: k samples), the union over a sheet's panels
-// (the same in each), so that they share the draws and the shadow rays; and the BSDF samples it takes there,
-// drawn likewise.
+// The light and BSDF samples a camera path's first vertex takes, per scene material (index + 1; 0 the default
+// BRDF): the same in every panel of a sheet (renderPanels), so that the panels share the draws and the
+// shadow rays.
 struct LightCounts {
   std::vector<int> taken;
-  std::vector<uint32_t> drawn;
   std::vector<int> bsdf;
-  std::vector<uint32_t> bsdfDrawn;
 };
 
 // What a path tracer works from.
@@ -96,19 +91,12 @@ struct PathContext {
   const LightSet& lights;
   LightCounts counts = {};
 
-  // The light samples a vertex on the mesh at this depth takes in this panel, its BSDF samples, and the
-  // sets of light samples it draws.
+  // The light samples a vertex on the mesh at this depth takes, and its BSDF samples.
   int lightSamplesAt(uint32_t mesh, int depth) const {
     return depth == 1 ? counts.taken[size_t(scene.description->meshes[mesh].material + 1)] : 1;
   }
   int bsdfSamplesAt(uint32_t mesh, int depth) const {
     return depth == 1 ? counts.bsdf[size_t(scene.description->meshes[mesh].material + 1)] : 1;
-  }
-  uint32_t bsdfSetsAt(uint32_t mesh, int depth) const {
-    return depth == 1 ? counts.bsdfDrawn[size_t(scene.description->meshes[mesh].material + 1)] : 1u;
-  }
-  uint32_t lightSetsAt(uint32_t mesh, int depth) const {
-    return depth == 1 ? counts.drawn[size_t(scene.description->meshes[mesh].material + 1)] : 1u;
   }
 };
 

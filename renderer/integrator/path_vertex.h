@@ -124,7 +124,6 @@ class Paths {
   double pdf_[kWaveSize];
   DirectLight direct_;
   BrdfSample bsdf_[kWaveSize];
-  int ownSet_[kWaveSize];  // where each lane's own set starts among its BSDF draws (setOffset)
   // addOtherBsdfSamples' scratch: each lane's sample, as the draws, the ray and hit and the path it makes
   // (its direction in direction_).
   VertexDraws otherDraws_[kWaveSize];

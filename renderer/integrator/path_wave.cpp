@@ -33,8 +33,8 @@ Lanes Paths::next(int depth, const Lanes& lanes, const Ray* rays, CmjSampler* sa
   }
   addDistantEmission(escaped, path, radiance);
   // The vertices' draws, then their light samples with their shadow rays' verdicts.
-  for (const int i : shading) draws[i].lightSets = context_.lightSetsAt(hit[i].mesh, depth);
-  for (const int i : shading) draws[i].bsdfSets = context_.bsdfSetsAt(hit[i].mesh, depth);
+  for (const int i : shading) draws[i].lightCount = uint32_t(context_.lightSamplesAt(hit[i].mesh, depth));
+  for (const int i : shading) draws[i].bsdfCount = uint32_t(context_.bsdfSamplesAt(hit[i].mesh, depth));
   if (shared)
     shared->draw(depth, samplers, shading, DrawsUsed(context_, depth), draws);
   else
@@ -51,10 +51,7 @@ Lanes Paths::reflect(int depth, const Lanes& lanes, Ray* rays, Rgb* radiance) {
   // The direct light, weighed by the BRDFs; then the BSDF samples, which continue the paths.
   for (const int i : lanes) throughput_[i] = path[i].throughput;
   direct_.add(context_.settings, lanes, point, light, throughput_, radiance);
-  for (const int i : lanes) {
-    ownSet_[i] = setOffset(draws[i].bsdfSets, point[i].bsdfSamples);
-    takeBsdfDraw(draws[i], ownSet_[i], 0, draws[i]);
-  }
+  for (const int i : lanes) takeBsdfDraw(draws[i], 0, draws[i]);
   sampleBsdfs(context_.settings, lanes, point, draws, bsdf_);
   Lanes more;
   for (const int i : lanes)
@@ -85,7 +82,7 @@ void Paths::addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance) {
     Lanes sampled;
     for (const int i : lanes)
       if (j < point[i].bsdfSamples) {
-        takeBsdfDraw(draws[i], ownSet_[i], j, otherDraws_[i]);
+        takeBsdfDraw(draws[i], j, otherDraws_[i]);
         sampled.add(i);
       }
     sampleBsdfs(context_.settings, sampled, point, otherDraws_, other_);

@@ -1,6 +1,6 @@
 // The reference path tracer: one camera path at a time, in plain scalar code, with its own random numbers
 // (reference_path.cpp). It is the oracle the wave (path_vertex.h) is tested against, so it shares none of
-// the wave's machinery: no lanes, no sheets, no sample sets, no stratified sampler, no resampling; only the
+// the wave's machinery: no lanes, no sheets, no split draws, no stratified sampler, no resampling; only the
 // scene, its lights and the BRDFs, which it asks one question at a time. `glossy render --reference`
 // renders with it (RenderSettings::reference).
 #pragma once

@@ -8,18 +8,16 @@
 // The first vertex of a camera path takes K light samples, K set by its BRDF (light_count.h), drawn from
 // the pixel's pattern of spp × K points (CmjSampler::getSplits2D), and deeper vertices one: what the first
 // vertex's light brings is most of the image, and its extra samples share the camera ray and the BSDF
-// sample, while a whole extra path would trace both again. A sheet's object vertex draws one such set per
-// count its panels take, all from the same dimensions, so each panel gets the draws it would get alone.
-// A first vertex that takes M > 1 BSDF samples (light_count.h) draws them likewise, a split set of M from
-// the lobe's and the direction's dimensions (a sheet's object vertex a set per count its panels take), and
-// the first of its own set continues the path.
+// sample, while a whole extra path would trace both again. A first vertex that takes M > 1 BSDF samples
+// (light_count.h) draws them likewise, M split draws of the lobe's and the direction's dimensions, and the
+// first of them continues the path. A sheet's panels take the same counts (renderPanels), so that they
+// share every draw.
 #pragma once
 
 #include "renderer/integrator/lanes.h"
 #include "renderer/integrator/path_tracer.h"
 #include "renderer/sampling/cmj_sampler.h"
 
-#include <algorithm>
 #include <cstdint>
 
 namespace glossy {
@@ -28,38 +26,27 @@ struct VertexDraws {
   // The draws in the sampler's order, declared once: drawVertices takes them in this order, and their
   // count is the dimensions a vertex owns.
   enum Slot { kLightChoice, kLight, kLobe, kBsdf, kRoulette, kDimensions };
-  uint32_t lightSets = 1;  // the sets of light samples drawn (bit k − 1: k of them), set before drawing
-  double lightChoice[kMaxLightDraws] = {};  // which light (LightSet::choose), per light sample, set after set
-  Vec2 light[kMaxLightDraws] = {};          // where on it (Light::sample)
+  uint32_t lightCount = 1;  // the light samples drawn, set before drawing
+  double lightChoice[kMaxLightSamples] = {};  // which light (LightSet::choose), per light sample
+  Vec2 light[kMaxLightSamples] = {};          // where on it (Light::sample)
   double lobe = 0.0;         // which of the BRDF's lobes
   Vec2 bsdf{0.0};            // the direction in that lobe
-  // The sets of BSDF samples drawn (bit k − 1: k of them), set before drawing. Of one sample: lobe and bsdf;
-  // else lobes and bsdfs hold the sets, set after set, and the vertex's own set (ShadingPoint::bsdfSamples)
-  // goes into lobe and bsdf before its BRDF samples them (takeBsdfDraw).
-  uint32_t bsdfSets = 1;
-  double lobes[kMaxBsdfDraws] = {};
-  Vec2 bsdfs[kMaxBsdfDraws] = {};
+  // The BSDF samples drawn, set before drawing. Of one sample: lobe and bsdf; else lobes and bsdfs hold them,
+  // and each goes into lobe and bsdf before the BRDF samples it (takeBsdfDraw).
+  uint32_t bsdfCount = 1;
+  double lobes[kMaxBsdfSamples] = {};
+  Vec2 bsdfs[kMaxBsdfSamples] = {};
   // Whether the path survives Russian roulette; at a vertex that takes several BSDF samples, which plays no
   // roulette (a first vertex, before RenderSettings::rouletteDepth), which of them is traced (resampling).
   double roulette = 0.0;
 };
 
-// Where the set of `count` samples (light or BSDF) starts among a vertex's draws of `sets`: after the
-// smaller sets; and how many draws the sets make in all.
-inline int setOffset(uint32_t sets, int count) {
-  int offset = 0;
-  for (int k = 1; k < count; ++k) offset += (sets >> (k - 1) & 1u) ? k : 0;
-  return offset;
-}
-inline int setDraws(uint32_t sets) { return setOffset(sets, std::max(kMaxLightSamples, kMaxBsdfSamples) + 1); }
-
-// The j-th of a vertex's own BSDF samples in d, as out's lobe and bsdf (out may be d); its own set starts
-// at `first` among the sets drawn (setOffset of its count), unless it drew a set of one.
-inline void takeBsdfDraw(const VertexDraws& d, int first, int j, VertexDraws& out) {
-  if (d.bsdfSets == 1u) {
+// The j-th of a vertex's BSDF samples in d, as out's lobe and bsdf (out may be d).
+inline void takeBsdfDraw(const VertexDraws& d, int j, VertexDraws& out) {
+  if (d.bsdfCount == 1u) {
     out.lobe = d.lobe, out.bsdf = d.bsdf;
   } else {
-    out.lobe = d.lobes[first + j], out.bsdf = d.bsdfs[first + j];
+    out.lobe = d.lobes[j], out.bsdf = d.bsdfs[j];
   }
 }
 
@@ -70,19 +57,20 @@ struct DrawsUsed {
       : lightChoice(context.lights.hasChoice()), roulette(depth >= context.settings.rouletteDepth) {}
 };
 
-// The draws of a vertex for samplers[i] into out[i], i in lanes, whose lightSets the caller has set, slot by
-// slot, each a batch draw (cmj_sampler.h), which gives each sampler the values of its scalar draws. The light slots of a lane that draws more than one light sample take its sets of
-// split draws (CmjSampler::getSplits2D) instead, and the BSDF slots of one that takes more than one BSDF
-// sample its sets of them.
+// The draws of a vertex for samplers[i] into out[i], i in lanes, whose counts the caller has set, slot by
+// slot, each a batch draw (cmj_sampler.h), which gives each sampler the values of its scalar draws. The
+// light slots of a lane that draws more than one light sample take its split draws
+// (CmjSampler::getSplits2D) instead, and the BSDF slots of one that takes more than one BSDF sample its
+// split draws of them.
 inline void drawVertices(CmjSampler* samplers, const Lanes& lanes, DrawsUsed used, VertexDraws* out) {
   double x[kWaveSize];
   Vec2 xy[kWaveSize];
-  uint32_t sets[kWaveSize];
+  uint32_t counts[kWaveSize];
   Vec2* to2D[kWaveSize];
   double* to1D[kWaveSize];
   Lanes single, split, singleBsdf, splitBsdf;
-  for (const int i : lanes) (out[i].lightSets == 1u ? single : split).add(i);
-  for (const int i : lanes) (out[i].bsdfSets == 1u ? singleBsdf : splitBsdf).add(i);
+  for (const int i : lanes) (out[i].lightCount == 1u ? single : split).add(i);
+  for (const int i : lanes) (out[i].bsdfCount == 1u ? singleBsdf : splitBsdf).add(i);
   for (int slot = 0; slot < VertexDraws::kDimensions; ++slot) {
     if (slot == VertexDraws::kRoulette && !used.roulette) {
       // Roulette is not played: the draw is the resampling's choice where the vertex takes several BSDF
@@ -100,12 +88,12 @@ inline void drawVertices(CmjSampler* samplers, const Lanes& lanes, DrawsUsed use
       if (bsdf || light) {
         const Lanes& splits = bsdf ? splitBsdf : split;
         for (const int i : splits) {
-          sets[i] = bsdf ? out[i].bsdfSets : out[i].lightSets;
+          counts[i] = bsdf ? out[i].bsdfCount : out[i].lightCount;
           to2D[i] = bsdf ? out[i].bsdfs : out[i].light;
           to1D[i] = bsdf ? out[i].lobes : out[i].lightChoice;
         }
-        if (slot == VertexDraws::kBsdf || slot == VertexDraws::kLight) CmjSampler::getSplits2D(samplers, splits.lane, splits.n, sets, to2D);
-        else CmjSampler::getSplits1D(samplers, splits.lane, splits.n, sets, to1D);
+        if (slot == VertexDraws::kBsdf || slot == VertexDraws::kLight) CmjSampler::getSplits2D(samplers, splits.lane, splits.n, counts, to2D);
+        else CmjSampler::getSplits1D(samplers, splits.lane, splits.n, counts, to1D);
       }
       const bool is2D = slot == VertexDraws::kLight || slot == VertexDraws::kBsdf;
       if (is2D) CmjSampler::get2D(samplers, batch.lane, batch.n, xy); else CmjSampler::get1D(samplers, batch.lane, batch.n, x);

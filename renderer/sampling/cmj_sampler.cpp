@@ -125,22 +125,19 @@ void CmjSampler::draw(CmjSampler* samplers, const int* lanes, int n, T* out, Poi
 }
 
 template <class T, class Points>
-void CmjSampler::drawSplits(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, T* const* out, Points points) {
+void CmjSampler::drawSplits(CmjSampler* samplers, const int* lanes, int n, const uint32_t* counts, T* const* out, Points points) {
   for (int first = 0; first < n; first += kChunk) {
-    const int count = std::min(kChunk, n - first);
+    const int chunk = std::min(kChunk, n - first);
     const int* lane = lanes + first;
     CmjPixel::Seeds seeds[kChunk];
-    uint32_t all = 0;
-    int filled[kChunk] = {};  // the draws of each lane's smaller sets, written before
-    for (int k = 0; k < count; ++k) {
+    uint32_t most = 0;
+    for (int k = 0; k < chunk; ++k) {
       CmjSampler& s = samplers[lane[k]];
       seeds[k] = s.pixel_->seeds(s.dimension_++);
-      all |= sets[lane[k]];
+      most = std::max(most, counts[lane[k]]);
     }
-    // Set by set, in increasing size as getSplits2D writes them: the draws of every lane that takes it,
-    // kChunk at a time.
-    for (uint32_t size = 1; all >> (size - 1) != 0; ++size) {
-      if (!(all >> (size - 1) & 1u)) continue;
+    // Count by count (each its own pattern): the draws of every lane that takes it, kChunk at a time.
+    for (uint32_t size = 1; size <= most; ++size) {
       const CmjPattern& g = samplers[lane[0]].pattern_->split(size);
       CmjPixel::Seeds drawSeeds[kChunk];
       uint32_t index[kChunk];
@@ -151,15 +148,14 @@ void CmjSampler::drawSplits(CmjSampler* samplers, const int* lanes, int n, const
         for (int e = 0; e < m; ++e) *target[e] = values[e];
         m = 0;
       };
-      for (int k = 0; k < count; ++k) {
-        if (!(sets[lane[k]] >> (size - 1) & 1u)) continue;
+      for (int k = 0; k < chunk; ++k) {
+        if (counts[lane[k]] != size) continue;
         for (uint32_t j = 0; j < size; ++j) {
           drawSeeds[m] = seeds[k];
           index[m] = samplers[lane[k]].index_ * size + j;
-          target[m] = out[lane[k]] + filled[k] + j;
+          target[m] = out[lane[k]] + j;
           if (++m == kChunk) flush();
         }
-        filled[k] += int(size);
       }
       if (m > 0) flush();
     }
@@ -168,11 +164,11 @@ void CmjSampler::drawSplits(CmjSampler* samplers, const int* lanes, int n, const
 
 void CmjSampler::get2D(CmjSampler* samplers, const int* lanes, int n, Vec2* out) { draw(samplers, lanes, n, out, points2D); }
 void CmjSampler::get1D(CmjSampler* samplers, const int* lanes, int n, double* out) { draw(samplers, lanes, n, out, points1D); }
-void CmjSampler::getSplits2D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, Vec2* const* out) {
-  drawSplits(samplers, lanes, n, sets, out, points2D);
+void CmjSampler::getSplits2D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* counts, Vec2* const* out) {
+  drawSplits(samplers, lanes, n, counts, out, points2D);
 }
-void CmjSampler::getSplits1D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, double* const* out) {
-  drawSplits(samplers, lanes, n, sets, out, points1D);
+void CmjSampler::getSplits1D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* counts, double* const* out) {
+  drawSplits(samplers, lanes, n, counts, out, points1D);
 }
 
 }  // namespace glossy

@@ -197,21 +197,17 @@ class CmjSampler {
   // a permutation of i and its thin row one of c, the same permutations in every column of a height (the
   // "correlated" offsets, which put one point in each thin column and row), plus jitter.
   Vec2 get2D() { return point2D(*pattern_, pixel_->seeds(dimension_++), index_); }
-  // Sets of split draws of the next dimension for this sample: for each k whose bit k − 1 is set in `sets`
-  // (k ≤ the pattern's splits()), in increasing k, k draws, points index·k + j of the pixel's pattern of
-  // N·k points, so that the N samples' N·k draws are stratified together, as a pattern of N·k samples
-  // would stratify them; each set is stratified on its own. A set of one is get2D()'s (get1D()'s) value.
-  void getSplits2D(uint32_t sets, Vec2* out) {
+  // `count` split draws of the next dimension for this sample (count ≤ the pattern's splits()): points
+  // index·count + j of the pixel's pattern of N·count points, so that the N samples' N·count draws are
+  // stratified together, as a pattern of N·count samples would stratify them. A count of one is get2D()'s
+  // (get1D()'s) value.
+  void getSplits2D(uint32_t count, Vec2* out) {
     const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
-    for (uint32_t k = 1; sets != 0; ++k, sets >>= 1)
-      if (sets & 1u)
-        for (uint32_t j = 0; j < k; ++j) *out++ = point2D(pattern_->split(k), p, index_ * k + j);
+    for (uint32_t j = 0; j < count; ++j) out[j] = point2D(pattern_->split(count), p, index_ * count + j);
   }
-  void getSplits1D(uint32_t sets, double* out) {
+  void getSplits1D(uint32_t count, double* out) {
     const CmjPixel::Seeds p = pixel_->seeds(dimension_++);
-    for (uint32_t k = 1; sets != 0; ++k, sets >>= 1)
-      if (sets & 1u)
-        for (uint32_t j = 0; j < k; ++j) *out++ = point1D(pattern_->split(k), p, index_ * k + j);
+    for (uint32_t j = 0; j < count; ++j) out[j] = point1D(pattern_->split(count), p, index_ * count + j);
   }
 
   // The same draws for many samplers at once: out[lanes[k]] = samplers[lanes[k]].get2D() (get1D), for
@@ -220,10 +216,10 @@ class CmjSampler {
   // step. The samplers must share one pattern.
   static void get2D(CmjSampler* samplers, const int* lanes, int n, Vec2* out);
   static void get1D(CmjSampler* samplers, const int* lanes, int n, double* out);
-  // Likewise samplers[lanes[k]].getSplits2D(sets[lanes[k]], out[lanes[k]]) (getSplits1D): a vertex's
+  // Likewise samplers[lanes[k]].getSplits2D(counts[lanes[k]], out[lanes[k]]) (getSplits1D): a vertex's
   // several light or BSDF samples, all of them one batch.
-  static void getSplits2D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, Vec2* const* out);
-  static void getSplits1D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, double* const* out);
+  static void getSplits2D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* counts, Vec2* const* out);
+  static void getSplits1D(CmjSampler* samplers, const int* lanes, int n, const uint32_t* counts, double* const* out);
 
   // Passes over dimensions without computing them: a value depends on its dimension's index alone, so the
   // dimensions after them get what they would have had.
@@ -261,14 +257,14 @@ class CmjSampler {
   }
 
   // The batch forms' stages (cmj_sampler.cpp): points index[k] of g in the dimensions of seeds[k], k < count
-  // ≤ 128, into out[k], as point2D (point1D) gives them; the draws of one dimension for many samplers; the
-  // sets of split draws for many.
+  // ≤ 128, into out[k], as point2D (point1D) gives them; the draws of one dimension for many samplers; their
+  // split draws.
   static void points2D(const CmjPattern& g, const CmjPixel::Seeds* seeds, const uint32_t* index, int count, Vec2* out);
   static void points1D(const CmjPattern& g, const CmjPixel::Seeds* seeds, const uint32_t* index, int count, double* out);
   template <class T, class Points>
   static void draw(CmjSampler* samplers, const int* lanes, int n, T* out, Points points);
   template <class T, class Points>
-  static void drawSplits(CmjSampler* samplers, const int* lanes, int n, const uint32_t* sets, T* const* out, Points points);
+  static void drawSplits(CmjSampler* samplers, const int* lanes, int n, const uint32_t* counts, T* const* out, Points points);
 
   const CmjPattern* pattern_ = nullptr;
   CmjPixel* pixel_ = nullptr;
