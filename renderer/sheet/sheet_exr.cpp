@@ -11,6 +11,69 @@
 
 namespace glossy {
 
+namespace {
+
+// Panel k's box, label, colour, fit, note, spp and parameters (glossy:panel.LAYER.*), and its figures
+// against the measured panel (glossy:error.LAYER.*).
+void addPanelAttributes(const Sheet& sheet, size_t k, std::vector<ImageAttribute>& metadata) {
+  const PanelRender& p = sheet.panels[k];
+  const int w = sheet.panels.front().image.width, h = sheet.panels.front().image.height;
+  const std::string key = "glossy:panel." + p.panel.layer;
+  metadata.push_back({key + ".box", std::to_string(int(k) * w) + " 0 " + std::to_string(w) + " " + std::to_string(h)});
+  metadata.push_back({key + ".label", p.panel.label});
+  metadata.push_back({key + ".colour", p.panel.colour});
+  metadata.push_back({key + ".fit", p.panel.fit.empty() ? std::string("measured") : p.panel.fit});
+  metadata.push_back({key + ".empty", int(p.empty)});
+  if (!p.note.empty()) metadata.push_back({key + ".note", p.note});
+  if (!p.empty) metadata.push_back({key + ".spp", sheet.spp});
+  const PanelFigures& f = p.figures;
+  const std::string error = "glossy:error." + p.panel.layer;
+  if (f.compared) {
+    metadata.push_back({error + ".relativeRmseNoisy", float(f.noisyRelativeRmse)});
+    metadata.push_back({error + ".luminanceRatio", float(f.luminanceRatio)});
+  }
+  if (f.available) {
+    metadata.push_back({error + ".relativeRmse", float(f.relativeRmse)});
+    metadata.push_back({error + ".noiseFree", f.clamped ? std::string("clamped at 0: the estimate of the squared error was negative")
+                                                        : std::string("yes")});
+  }
+  if (f.hasCi) {
+    metadata.push_back({error + ".relativeRmseCi", formatted("%.6g %.6g", f.relativeRmseCi.lo, f.relativeRmseCi.hi)});
+    metadata.push_back({error + ".luminanceRatioCi", formatted("%.6g %.6g", f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)});
+  }
+  if (p.brdfE1 >= 0.0) {
+    metadata.push_back({error + ".E1", float(p.brdfE1)});
+    metadata.push_back({error + ".E2", float(p.brdfE2)});
+  }
+  if (p.maps.available) {
+    metadata.push_back({error + ".flip", float(p.maps.flip)});
+    if (p.maps.hasFlipCi) metadata.push_back({error + ".flipCi", formatted("%.6g %.6g", p.maps.flipCi.lo, p.maps.flipCi.hi)});
+  }
+  if (!p.params.empty()) metadata.push_back({key + ".params", p.params});
+}
+
+// The noise-floor row's figures, keyed like a panel's.
+void addNoiseFloorAttributes(const Sheet& sheet, std::vector<ImageAttribute>& metadata) {
+  const PanelRender& floor = sheet.noiseFloor;
+  if (floor.empty || !floor.figures.compared) return;
+  const PanelFigures& f = floor.figures;
+  metadata.push_back({"glossy:noiseFloor.seed", formatted("%u", noiseFloorSeed(sheet.seed))});
+  metadata.push_back({"glossy:noiseFloor.relativeRmseNoisy", float(f.noisyRelativeRmse)});
+  metadata.push_back({"glossy:noiseFloor.luminanceRatio", float(f.luminanceRatio)});
+  if (f.available) metadata.push_back({"glossy:noiseFloor.relativeRmse", float(f.relativeRmse)});
+  if (f.hasCi) {
+    metadata.push_back({"glossy:noiseFloor.relativeRmseCi", formatted("%.6g %.6g", f.relativeRmseCi.lo, f.relativeRmseCi.hi)});
+    metadata.push_back({"glossy:noiseFloor.luminanceRatioCi", formatted("%.6g %.6g", f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)});
+  }
+  if (floor.maps.available) {
+    metadata.push_back({"glossy:noiseFloor.flip", float(floor.maps.flip)});
+    if (floor.maps.hasFlipCi)
+      metadata.push_back({"glossy:noiseFloor.flipCi", formatted("%.6g %.6g", floor.maps.flipCi.lo, floor.maps.flipCi.hi)});
+  }
+}
+
+}  // namespace
+
 void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::vector<ImageAttribute> metadata, PixelType type) {
   const int w = sheet.panels.front().image.width, h = sheet.panels.front().image.height;
   std::vector<ExrLayer> layers = {{"", &sheet.grid}};
@@ -27,38 +90,7 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
         for (size_t i = 0; i < values->size(); ++i) map.pixels[3 * i] = (*values)[i];
         layers.push_back({p.panel.layer + suffix, &map, int(k) * w, true});
       }
-    const std::string key = "glossy:panel." + p.panel.layer;
-    metadata.push_back({key + ".box", std::to_string(int(k) * w) + " 0 " + std::to_string(w) + " " + std::to_string(h)});
-    metadata.push_back({key + ".label", p.panel.label});
-    metadata.push_back({key + ".colour", p.panel.colour});
-    metadata.push_back({key + ".fit", p.panel.fit.empty() ? std::string("measured") : p.panel.fit});
-    metadata.push_back({key + ".empty", int(p.empty)});
-    if (!p.note.empty()) metadata.push_back({key + ".note", p.note});
-    if (!p.empty) metadata.push_back({key + ".spp", sheet.spp});
-    const PanelFigures& f = p.figures;
-    const std::string error = "glossy:error." + p.panel.layer;
-    if (f.compared) {
-      metadata.push_back({error + ".relativeRmseNoisy", float(f.noisyRelativeRmse)});
-      metadata.push_back({error + ".luminanceRatio", float(f.luminanceRatio)});
-    }
-    if (f.available) {
-      metadata.push_back({error + ".relativeRmse", float(f.relativeRmse)});
-      metadata.push_back({error + ".noiseFree", f.clamped ? std::string("clamped at 0: the estimate of the squared error was negative")
-                                                          : std::string("yes")});
-    }
-    if (f.hasCi) {
-      metadata.push_back({error + ".relativeRmseCi", formatted("%.6g %.6g", f.relativeRmseCi.lo, f.relativeRmseCi.hi)});
-      metadata.push_back({error + ".luminanceRatioCi", formatted("%.6g %.6g", f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)});
-    }
-    if (p.brdfE1 >= 0.0) {
-      metadata.push_back({error + ".E1", float(p.brdfE1)});
-      metadata.push_back({error + ".E2", float(p.brdfE2)});
-    }
-    if (p.maps.available) {
-      metadata.push_back({error + ".flip", float(p.maps.flip)});
-      if (p.maps.hasFlipCi) metadata.push_back({error + ".flipCi", formatted("%.6g %.6g", p.maps.flipCi.lo, p.maps.flipCi.hi)});
-    }
-    if (!p.params.empty()) metadata.push_back({key + ".params", p.params});
+    addPanelAttributes(sheet, k, metadata);
   }
   metadata.push_back({"glossy:panels", names});
   metadata.push_back({"glossy:panelSize", std::to_string(w) + "x" + std::to_string(h)});
@@ -78,23 +110,7 @@ void writeSheetExr(const Sheet& sheet, const std::filesystem::path& path, std::v
                                  "panel's samples, what noise alone shows",
                                  kRelativeDifferenceRange, FlipSettings{}.pixelsPerDegree)});
   if (sheet.flipNoiseFloor >= 0.0) metadata.push_back({"glossy:flipNoiseFloor", float(sheet.flipNoiseFloor)});
-  // The noise-floor row, keyed like a panel's figures.
-  if (const PanelRender& floor = sheet.noiseFloor; !floor.empty && floor.figures.compared) {
-    const PanelFigures& f = floor.figures;
-    metadata.push_back({"glossy:noiseFloor.seed", formatted("%u", noiseFloorSeed(sheet.seed))});
-    metadata.push_back({"glossy:noiseFloor.relativeRmseNoisy", float(f.noisyRelativeRmse)});
-    metadata.push_back({"glossy:noiseFloor.luminanceRatio", float(f.luminanceRatio)});
-    if (f.available) metadata.push_back({"glossy:noiseFloor.relativeRmse", float(f.relativeRmse)});
-    if (f.hasCi) {
-      metadata.push_back({"glossy:noiseFloor.relativeRmseCi", formatted("%.6g %.6g", f.relativeRmseCi.lo, f.relativeRmseCi.hi)});
-      metadata.push_back({"glossy:noiseFloor.luminanceRatioCi", formatted("%.6g %.6g", f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)});
-    }
-    if (floor.maps.available) {
-      metadata.push_back({"glossy:noiseFloor.flip", float(floor.maps.flip)});
-      if (floor.maps.hasFlipCi)
-        metadata.push_back({"glossy:noiseFloor.flipCi", formatted("%.6g %.6g", floor.maps.flipCi.lo, floor.maps.flipCi.hi)});
-    }
-  }
+  addNoiseFloorAttributes(sheet, metadata);
   if (!sheet.warnings.empty()) {
     std::string text;
     for (const std::string& w : sheet.warnings) text.append(text.empty() ? "" : "\n").append(w);
