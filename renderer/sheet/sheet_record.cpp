@@ -222,6 +222,68 @@ std::vector<SheetSetting> sheetSettings(const OIIO::ImageSpec& spec) {
   return settings;
 }
 
+// The material's name from the sheet, not its file name (which a user may have chosen): it names the
+// material's page, so it must be a usable material name.
+std::string materialName(const Header& h, const std::filesystem::path& exr) {
+  if (const std::string name = h.text("glossy:materialName"); !name.empty()) {
+    checkMaterialName(name, exr.string() + ": glossy:materialName");
+    return name;
+  } else if (const std::string file = h.text("glossy:material"); !file.empty()) {
+    const std::string stem = std::filesystem::path(file).stem().string();
+    checkMaterialName(stem, exr.string() + ": glossy:material");
+    return stem;
+  }
+  h.fail("not a glossy sheet (no glossy:materialName or glossy:material)");
+}
+
+// Panel `layer`'s record from the header: its box inside the image (with its R, G, B channels), label, fit,
+// note, parameters, colour and figures.
+PanelRecord readPanel(const Header& h, const OIIO::ImageSpec& spec, const std::string& layer) {
+  const std::string key = "glossy:panel." + layer, error = "glossy:error." + layer;
+  PanelRecord p;
+  static_cast<ImageFigures&>(p) = h.figures(error);
+  p.layer = layer;
+  const auto box = panelBox(h.text(key + ".box"), spec.width, spec.height);
+  if (!box) h.fail("panel '" + layer + "' has no box inside the image");
+  p.x = int((*box)[0]);
+  p.y = int((*box)[1]);
+  p.width = int((*box)[2]);
+  p.height = int((*box)[3]);
+  if (spec.channelindex(layer + ".R") < 0 || spec.channelindex(layer + ".G") < 0 || spec.channelindex(layer + ".B") < 0)
+    h.fail("panel '" + layer + "' has no layer " + layer + ".R/G/B");
+  p.label = h.text(key + ".label");
+  if (p.label.empty()) p.label = layer;
+  p.fit = h.text(key + ".fit");
+  p.note = h.text(key + ".note");
+  p.params = h.text(key + ".params");
+  p.colour = h.text(key + ".colour");
+  if (!(p.colour.size() == 7 && p.colour[0] == '#' &&
+        std::all_of(p.colour.begin() + 1, p.colour.end(), [](char c) { return std::isxdigit((unsigned char)c); })))
+    p.colour.clear();
+  if (p.colour.empty())  // a sheet that does not say: the grid's own colour for the panel, as plots use it
+    for (const SheetPanel& known : sheetPanels())
+      if (known.layer == layer && !known.fit.empty()) p.colour = known.colour;
+  p.empty = h.number(key + ".empty").value_or(0.0) != 0.0;
+  p.e1 = h.bounded(error + ".E1", 0.0, std::numeric_limits<double>::infinity());
+  p.e2 = h.bounded(error + ".E2", 0.0, std::numeric_limits<double>::infinity());
+  p.noiseFree = h.text(error + ".noiseFree");
+  return p;
+}
+
+// The PNG beside the sheet, drawn with it: the site's images are cut from it, so it must be the EXR's width
+// (the panels' boxes are the same in both) and reach below the panels.
+void readPng(const std::filesystem::path& folder, SheetRecord& r, int exrWidth) {
+  const std::filesystem::path& exr = r.exr;
+  r.png = std::filesystem::path(exr).replace_extension(".png");
+  checkInputFile(folder, r.png, "sheet's PNG beside " + exr.filename().string());
+  auto png = openImageFile(r.png, "PNG");
+  const OIIO::ImageSpec& ps = png->spec();
+  if (ps.width != exrWidth || ps.height < r.panelsBottom || int64_t(ps.width) * int64_t(ps.height) > kMaxPngPixels)
+    throw InputError(r.png.string() + formatted(": %d x %d pixels, not the PNG of %s (%d wide, its panels %d high)", ps.width, ps.height,
+                                                exr.filename().string().c_str(), exrWidth, r.panelsBottom));
+  r.pngHeight = ps.height;
+}
+
 }  // namespace
 
 SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::filesystem::path& exr) {
@@ -239,17 +301,7 @@ SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::file
   r.imageWidth = spec.width;
   r.imageHeight = spec.height;
 
-  // The material's name from the sheet, not its file name (which a user may have chosen): it names the
-  // material's page, so it must be a usable material name.
-  if (const std::string name = h.text("glossy:materialName"); !name.empty()) {
-    checkMaterialName(name, exr.string() + ": glossy:materialName");
-    r.name = name;
-  } else if (const std::string file = h.text("glossy:material"); !file.empty()) {
-    r.name = std::filesystem::path(file).stem().string();
-    checkMaterialName(r.name, exr.string() + ": glossy:material");
-  } else {
-    h.fail("not a glossy sheet (no glossy:materialName or glossy:material)");
-  }
+  r.name = materialName(h, exr);
   r.materialFile = h.text("glossy:material");
   r.measured = h.text("glossy:measured");
   r.verdict = h.text("glossy:verdict");
@@ -268,48 +320,12 @@ SheetRecord readSheetRecord(const std::filesystem::path& folder, const std::file
   for (const std::string& layer : layers) {
     if (!isMaterialName(layer)) h.fail("panel '" + shortened(layer) + "' in glossy:panels is not a plain name");
     if (r.panel(layer)) h.fail("panel '" + layer + "' is listed twice");
-    const std::string key = "glossy:panel." + layer, error = "glossy:error." + layer;
-    PanelRecord p;
-    static_cast<ImageFigures&>(p) = h.figures(error);
-    p.layer = layer;
-    const auto box = panelBox(h.text(key + ".box"), spec.width, spec.height);
-    if (!box) h.fail("panel '" + layer + "' has no box inside the image");
-    p.x = int((*box)[0]);
-    p.y = int((*box)[1]);
-    p.width = int((*box)[2]);
-    p.height = int((*box)[3]);
+    PanelRecord p = readPanel(h, spec, layer);
     r.panelsBottom = std::max(r.panelsBottom, p.y + p.height);  // <= spec.height: no overflow
-    if (spec.channelindex(layer + ".R") < 0 || spec.channelindex(layer + ".G") < 0 || spec.channelindex(layer + ".B") < 0)
-      h.fail("panel '" + layer + "' has no layer " + layer + ".R/G/B");
-    p.label = h.text(key + ".label");
-    if (p.label.empty()) p.label = layer;
-    p.fit = h.text(key + ".fit");
-    p.note = h.text(key + ".note");
-    p.params = h.text(key + ".params");
-    p.colour = h.text(key + ".colour");
-    if (!(p.colour.size() == 7 && p.colour[0] == '#' &&
-          std::all_of(p.colour.begin() + 1, p.colour.end(), [](char c) { return std::isxdigit((unsigned char)c); })))
-      p.colour.clear();
-    if (p.colour.empty())  // a sheet that does not say: the grid's own colour for the panel, as plots use it
-      for (const SheetPanel& known : sheetPanels())
-        if (known.layer == layer && !known.fit.empty()) p.colour = known.colour;
-    p.empty = h.number(key + ".empty").value_or(0.0) != 0.0;
-    p.e1 = h.bounded(error + ".E1", 0.0, std::numeric_limits<double>::infinity());
-    p.e2 = h.bounded(error + ".E2", 0.0, std::numeric_limits<double>::infinity());
-    p.noiseFree = h.text(error + ".noiseFree");
     r.panels.push_back(std::move(p));
   }
 
-  // The PNG beside it, drawn with it: the site's images are cut from it, so it must be the EXR's width
-  // (the panels' boxes are the same in both) and reach below the panels.
-  r.png = std::filesystem::path(exr).replace_extension(".png");
-  checkInputFile(folder, r.png, "sheet's PNG beside " + exr.filename().string());
-  auto png = openImageFile(r.png, "PNG");
-  const OIIO::ImageSpec& ps = png->spec();
-  if (ps.width != spec.width || ps.height < r.panelsBottom || int64_t(ps.width) * int64_t(ps.height) > kMaxPngPixels)
-    throw InputError(r.png.string() + formatted(": %d x %d pixels, not the PNG of %s (%d wide, its panels %d high)", ps.width, ps.height,
-                                                exr.filename().string().c_str(), spec.width, r.panelsBottom));
-  r.pngHeight = ps.height;
+  readPng(folder, r, spec.width);
   return r;
 }
 
