@@ -187,93 +187,118 @@ std::string bagherFitSource(const std::string& fileName) {
          ", commit 9807fb38d7ab51802f3a0fe0f65cf763cb01a0f4)";
 }
 
-std::vector<MaterialFile> importFitLines(std::string_view text, const std::string& source) {
+namespace {
+
+// The metric of a file of Löw et al.'s fits: from its name (*_E1.fit, *_E2.fit), else from a comment line
+// ("# … E2 fits …"); empty if neither says.
+std::string fitLinesMetric(const std::string& fileName, const std::vector<std::string>& lines) {
   static const std::regex fileMetric(R"(_(E[12])\.fit$)");
   static const std::regex commentMetric(R"(\b(E[12]) fits\b)");
-  static const std::regex line(
-      R"(^\s*([^=\s]+)\s*=\s*Aggregate\(\s*Lambertian\(\s*albedo\s*=\s*\[([^\]]*)\]\s*\)\s*,\s*(\w+)\((.*)\)\s*\)\s*$)");
+  std::smatch m;
+  if (std::regex_search(fileName, m, fileMetric)) return m[1];
+  for (const auto& l : lines)
+    if (!l.empty() && l[0] == '#' && std::regex_search(l, m, commentMetric)) return m[1];
+  return {};
+}
+
+Rgb parseRgb(const std::string& list, const std::string& where) {
+  const auto v = parseNumberList(list);
+  if (!v || v->size() != 3) throw InputError(where + ": expected 3 values, got '" + list + "'");
+  return Rgb((*v)[0], (*v)[1], (*v)[2]);
+}
+
+// bbm's model `bbmModel` as ours: fit's model, metric and source, and the map from bbm's argument names to
+// our parameter keys.
+std::map<std::string, std::string> bbmModelKeys(const std::string& bbmModel, const std::string& fileName, const std::string& where,
+                                                Fit& fit) {
+  if (const PaperModel* paper = paperModel(bbmModel)) {
+    fit.id = {paper->model, std::string(paper->metric)};
+    fit.source = paper->metric == FitId::kNgan05 ? nganFitSource(fileName) : bagherFitSource(fileName);
+    return paper->keys;
+  }
+  if (bbmModel == "LowMicrofacetFit" || bbmModel == "LowSmooth") {
+    fit.id.model = bbmModel == "LowSmooth" ? "smooth" : "microfacet";
+    return {{"A", "a"}, {"B", "b"}, {"C", "c"}, {"eta", "eta"}};
+  }
+  if (bbmModel == "LowCookTorrance") {
+    fit.id.model = "cook-torrance";
+    return {{"albedo", "ks"}, {"roughness", "m"}, {"eta", "eta"}};
+  }
+  if (bbmModel == "LowAshikhminShirley") {
+    fit.id.model = "ashikhmin-shirley";
+    return {{"albedo", "ks"}, {"sharpness", "n"}, {"fresnelReflectance", "eta"}};  // it holds η, despite its name
+  }
+  throw InputError(where + ": unknown model '" + bbmModel + "'");
+}
+
+// The model's arguments `args` ("name = value, …") into fit's parameters, through keys.
+void setArguments(const std::string& args, const std::map<std::string, std::string>& keys, const std::string& bbmModel,
+                  const std::string& context, Fit& fit) {
   // A value: a number, [R, G, B], or a pair of them, [[R, G, B], [R, G, B]] (Bagher's `eta`).
   static const std::regex argument(R"((\w+)\s*=\s*(\[\s*\[[^\]]*\]\s*,\s*\[[^\]]*\]\s*\]|\[[^\]]*\]|[^,\s)]+))");
+  for (auto a = std::sregex_iterator(args.begin(), args.end(), argument); a != std::sregex_iterator(); ++a) {
+    const std::string arg = (*a)[1], value = (*a)[2];
+    auto key = keys.find(arg);
+    if (key == keys.end()) throw InputError(context + ": unknown argument '" + arg + "' of " + bbmModel);
+    if (fit.params.has(key->second.substr(0, key->second.find(','))))
+      throw InputError(context + ": argument '" + arg + "' given twice");
+    if (const size_t comma = key->second.find(','); comma != std::string::npos) {
+      // A pair of RGB values for two keys ("f0,f1"): [[...], [...]].
+      static const std::regex pair(R"(^\[\s*\[([^\]]*)\]\s*,\s*\[([^\]]*)\]\s*\]$)");
+      std::smatch two;
+      if (!std::regex_match(value, two, pair)) throw InputError(context + ": " + arg + " must be [[R, G, B], [R, G, B]]");
+      fit.params.set(key->second.substr(0, comma), parseRgb(two[1], context + ": " + arg));
+      fit.params.set(key->second.substr(comma + 1), parseRgb(two[2], context + ": " + arg));
+    } else if (value.front() == '[')
+      fit.params.set(key->second, parseRgb(value.substr(1, value.size() - 2), context + ": " + arg));
+    else
+      fit.params.set(key->second, requireNumber(value, context + ": " + arg));
+  }
+}
 
+// A published fit whose albedos were fitted without MERL's channel factors gets them (docs/materials.md).
+void applyAlbedoFactors(const PaperModel& paper, Fit& fit) {
+  const auto& k = paper.albedoFactors;
+  // The decimal product (the values have a few digits, the factors two): 0.255 × 1.15 is 0.29325, not
+  // the double product's 0.29324999999999996.
+  const auto times = [](double v, double factor) { return std::stod(formatted("%.12g", v * factor)); };
+  for (const char* albedo : {"kd", "ks"}) {
+    const Rgb v = fit.params.rgb(albedo);
+    fit.params.set(albedo, Rgb(times(v.r, k[0]), times(v.g, k[1]), times(v.b, k[2])));
+  }
+  fit.source += formatted("; kd and ks times (%g, %g, %g), MERL's channel factors, which the fits were made without "
+                          "(docs/materials.md)", k[0], k[1], k[2]);
+}
+
+}  // namespace
+
+std::vector<MaterialFile> importFitLines(std::string_view text, const std::string& source) {
+  static const std::regex line(
+      R"(^\s*([^=\s]+)\s*=\s*Aggregate\(\s*Lambertian\(\s*albedo\s*=\s*\[([^\]]*)\]\s*\)\s*,\s*(\w+)\((.*)\)\s*\)\s*$)");
   const auto lines = splitLines(text);
-  std::string metric;
-  std::smatch m;
   const std::string fileName = std::filesystem::path(source).filename().string();
-  if (std::regex_search(fileName, m, fileMetric)) metric = m[1];
-  for (const auto& l : lines)
-    if (metric.empty() && !l.empty() && l[0] == '#' && std::regex_search(l, m, commentMetric)) metric = m[1];
-
-  auto parseRgb = [](const std::string& list, const std::string& where) {
-    const auto v = parseNumberList(list);
-    if (!v || v->size() != 3) throw InputError(where + ": expected 3 values, got '" + list + "'");
-    return Rgb((*v)[0], (*v)[1], (*v)[2]);
-  };
-
+  const std::string metric = fitLinesMetric(fileName, lines);
   std::vector<MaterialFile> out;
   for (size_t ln = 0; ln < lines.size(); ++ln) {
     const std::string& l = lines[ln];
     if (l.find_first_not_of(" \t") == std::string::npos || l[l.find_first_not_of(" \t")] == '#') continue;
     const std::string where = source + ":" + std::to_string(ln + 1);
+    std::smatch m;
     if (!std::regex_match(l, m, line))
       throw InputError(where + ": not a fit line (NAME = Aggregate(Lambertian(albedo = [...]), Model(...)))");
     const std::string name = m[1], bbmModel = m[3], args = m[4];
     checkMaterialName(name, where);
-    Fit fit;
-    fit.id.metric = metric;
-    // bbm's model and argument names → ours.
-    std::map<std::string, std::string> keys;
     const PaperModel* paper = paperModel(bbmModel);
     if (!paper && metric.empty())
       throw InputError(source + ": cannot tell the metric (name the file *_E1.fit or *_E2.fit)");
-    if (paper) {
-      fit.id = {paper->model, std::string(paper->metric)};
-      keys = paper->keys;
-      fit.source = paper->metric == FitId::kNgan05 ? nganFitSource(fileName) : bagherFitSource(fileName);
-    } else if (bbmModel == "LowMicrofacetFit" || bbmModel == "LowSmooth") {
-      fit.id.model = bbmModel == "LowSmooth" ? "smooth" : "microfacet";
-      keys = {{"A", "a"}, {"B", "b"}, {"C", "c"}, {"eta", "eta"}};
-    } else if (bbmModel == "LowCookTorrance") {
-      fit.id.model = "cook-torrance";
-      keys = {{"albedo", "ks"}, {"roughness", "m"}, {"eta", "eta"}};
-    } else if (bbmModel == "LowAshikhminShirley") {
-      fit.id.model = "ashikhmin-shirley";
-      keys = {{"albedo", "ks"}, {"sharpness", "n"}, {"fresnelReflectance", "eta"}};  // it holds η, despite its name
-    } else {
-      throw InputError(where + ": unknown model '" + bbmModel + "'");
-    }
+    Fit fit;
+    fit.id.metric = metric;
+    const std::map<std::string, std::string> keys = bbmModelKeys(bbmModel, fileName, where, fit);
     const std::string context = where + ": " + name + " " + fit.id.str();
     fit.params.set("kd", parseRgb(m[2], context + ": Lambertian albedo"));
-    for (auto a = std::sregex_iterator(args.begin(), args.end(), argument); a != std::sregex_iterator(); ++a) {
-      const std::string arg = (*a)[1], value = (*a)[2];
-      auto key = keys.find(arg);
-      if (key == keys.end()) throw InputError(context + ": unknown argument '" + arg + "' of " + bbmModel);
-      if (fit.params.has(key->second.substr(0, key->second.find(','))))
-        throw InputError(context + ": argument '" + arg + "' given twice");
-      if (const size_t comma = key->second.find(','); comma != std::string::npos) {
-        // A pair of RGB values for two keys ("f0,f1"): [[...], [...]].
-        static const std::regex pair(R"(^\[\s*\[([^\]]*)\]\s*,\s*\[([^\]]*)\]\s*\]$)");
-        std::smatch two;
-        if (!std::regex_match(value, two, pair)) throw InputError(context + ": " + arg + " must be [[R, G, B], [R, G, B]]");
-        fit.params.set(key->second.substr(0, comma), parseRgb(two[1], context + ": " + arg));
-        fit.params.set(key->second.substr(comma + 1), parseRgb(two[2], context + ": " + arg));
-      } else if (value.front() == '[')
-        fit.params.set(key->second, parseRgb(value.substr(1, value.size() - 2), context + ": " + arg));
-      else
-        fit.params.set(key->second, requireNumber(value, context + ": " + arg));
-    }
+    setArguments(args, keys, bbmModel, context, fit);
     validateFit(fit, context);  // kd and ks are RGB values in range before they are converted
-    if (paper && paper->albedoFactors != kAsPublished) {
-      const auto& k = paper->albedoFactors;
-      // The decimal product (the values have a few digits, the factors two): 0.255 × 1.15 is 0.29325, not
-      // the double product's 0.29324999999999996.
-      const auto times = [](double v, double factor) { return std::stod(formatted("%.12g", v * factor)); };
-      for (const char* albedo : {"kd", "ks"}) {
-        const Rgb v = fit.params.rgb(albedo);
-        fit.params.set(albedo, Rgb(times(v.r, k[0]), times(v.g, k[1]), times(v.b, k[2])));
-      }
-      fit.source += formatted("; kd and ks times (%g, %g, %g), MERL's channel factors, which the fits were made without "
-                              "(docs/materials.md)", k[0], k[1], k[2]);
-    }
+    if (paper && paper->albedoFactors != kAsPublished) applyAlbedoFactors(*paper, fit);
     validateFit(fit, context);
     MaterialFile mat = measuredMaterial(name, paper ? fit.source : std::string(kFitLinesSource));
     mat.put(std::move(fit));
@@ -284,7 +309,6 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
   if (out.empty()) throw InputError(source + ": no fit lines found");
   return out;
 }
-
 void Importer::addFile(const std::filesystem::path& path) {
   // The supplement's text for all 100 materials is well under a megabyte.
   const std::string s = readInputFile(path, 64 << 20, "supplement or .fit file");
