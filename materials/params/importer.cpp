@@ -309,6 +309,7 @@ std::vector<MaterialFile> importFitLines(std::string_view text, const std::strin
   if (out.empty()) throw InputError(source + ": no fit lines found");
   return out;
 }
+
 void Importer::addFile(const std::filesystem::path& path) {
   // The supplement's text for all 100 materials is well under a megabyte.
   const std::string s = readInputFile(path, 64 << 20, "supplement or .fit file");

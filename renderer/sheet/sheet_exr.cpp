@@ -13,6 +13,25 @@ namespace glossy {
 
 namespace {
 
+// The figures against the measured panel that a panel and the noise-floor row both carry, keyed
+// PREFIX.relativeRmse and so on (what readSheetRecord reads back with Header::figures).
+void addFigureAttributes(const std::string& prefix, const PanelFigures& f, const ErrorMaps& maps,
+                         std::vector<ImageAttribute>& metadata) {
+  if (f.compared) {
+    metadata.push_back({prefix + ".relativeRmseNoisy", float(f.noisyRelativeRmse)});
+    metadata.push_back({prefix + ".luminanceRatio", float(f.luminanceRatio)});
+  }
+  if (f.available) metadata.push_back({prefix + ".relativeRmse", float(f.relativeRmse)});
+  if (f.hasCi) {
+    metadata.push_back({prefix + ".relativeRmseCi", formatted("%.6g %.6g", f.relativeRmseCi.lo, f.relativeRmseCi.hi)});
+    metadata.push_back({prefix + ".luminanceRatioCi", formatted("%.6g %.6g", f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)});
+  }
+  if (maps.available) {
+    metadata.push_back({prefix + ".flip", float(maps.flip)});
+    if (maps.hasFlipCi) metadata.push_back({prefix + ".flipCi", formatted("%.6g %.6g", maps.flipCi.lo, maps.flipCi.hi)});
+  }
+}
+
 // Panel k's box, label, colour, fit, note, spp and parameters (glossy:panel.LAYER.*), and its figures
 // against the measured panel (glossy:error.LAYER.*).
 void addPanelAttributes(const Sheet& sheet, size_t k, std::vector<ImageAttribute>& metadata) {
@@ -26,28 +45,14 @@ void addPanelAttributes(const Sheet& sheet, size_t k, std::vector<ImageAttribute
   metadata.push_back({key + ".empty", int(p.empty)});
   if (!p.note.empty()) metadata.push_back({key + ".note", p.note});
   if (!p.empty) metadata.push_back({key + ".spp", sheet.spp});
-  const PanelFigures& f = p.figures;
   const std::string error = "glossy:error." + p.panel.layer;
-  if (f.compared) {
-    metadata.push_back({error + ".relativeRmseNoisy", float(f.noisyRelativeRmse)});
-    metadata.push_back({error + ".luminanceRatio", float(f.luminanceRatio)});
-  }
-  if (f.available) {
-    metadata.push_back({error + ".relativeRmse", float(f.relativeRmse)});
-    metadata.push_back({error + ".noiseFree", f.clamped ? std::string("clamped at 0: the estimate of the squared error was negative")
-                                                        : std::string("yes")});
-  }
-  if (f.hasCi) {
-    metadata.push_back({error + ".relativeRmseCi", formatted("%.6g %.6g", f.relativeRmseCi.lo, f.relativeRmseCi.hi)});
-    metadata.push_back({error + ".luminanceRatioCi", formatted("%.6g %.6g", f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)});
-  }
+  addFigureAttributes(error, p.figures, p.maps, metadata);
+  if (p.figures.available)
+    metadata.push_back({error + ".noiseFree", p.figures.clamped ? std::string("clamped at 0: the estimate of the squared error was negative")
+                                                                : std::string("yes")});
   if (p.brdfE1 >= 0.0) {
     metadata.push_back({error + ".E1", float(p.brdfE1)});
     metadata.push_back({error + ".E2", float(p.brdfE2)});
-  }
-  if (p.maps.available) {
-    metadata.push_back({error + ".flip", float(p.maps.flip)});
-    if (p.maps.hasFlipCi) metadata.push_back({error + ".flipCi", formatted("%.6g %.6g", p.maps.flipCi.lo, p.maps.flipCi.hi)});
   }
   if (!p.params.empty()) metadata.push_back({key + ".params", p.params});
 }
@@ -56,20 +61,8 @@ void addPanelAttributes(const Sheet& sheet, size_t k, std::vector<ImageAttribute
 void addNoiseFloorAttributes(const Sheet& sheet, std::vector<ImageAttribute>& metadata) {
   const PanelRender& floor = sheet.noiseFloor;
   if (floor.empty || !floor.figures.compared) return;
-  const PanelFigures& f = floor.figures;
   metadata.push_back({"glossy:noiseFloor.seed", formatted("%u", noiseFloorSeed(sheet.seed))});
-  metadata.push_back({"glossy:noiseFloor.relativeRmseNoisy", float(f.noisyRelativeRmse)});
-  metadata.push_back({"glossy:noiseFloor.luminanceRatio", float(f.luminanceRatio)});
-  if (f.available) metadata.push_back({"glossy:noiseFloor.relativeRmse", float(f.relativeRmse)});
-  if (f.hasCi) {
-    metadata.push_back({"glossy:noiseFloor.relativeRmseCi", formatted("%.6g %.6g", f.relativeRmseCi.lo, f.relativeRmseCi.hi)});
-    metadata.push_back({"glossy:noiseFloor.luminanceRatioCi", formatted("%.6g %.6g", f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)});
-  }
-  if (floor.maps.available) {
-    metadata.push_back({"glossy:noiseFloor.flip", float(floor.maps.flip)});
-    if (floor.maps.hasFlipCi)
-      metadata.push_back({"glossy:noiseFloor.flipCi", formatted("%.6g %.6g", floor.maps.flipCi.lo, floor.maps.flipCi.hi)});
-  }
+  addFigureAttributes("glossy:noiseFloor", floor.figures, floor.maps, metadata);
 }
 
 }  // namespace

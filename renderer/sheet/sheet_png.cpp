@@ -179,7 +179,8 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
   OIIO::ImageBuf buf(OIIO::ImageSpec(size.width, height, 3, OIIO::TypeDesc::FLOAT));
   OIIO::ImageBufAlgo::fill(buf, kStrip);
   Picture pic{buf, w, h, labelFontSize(w), smallFontSize(w), labelStrip(w), fontPath};
-  for (int k = 0; k < n; ++k) drawPanel(pic, k, sheet.panels[size_t(k)], std::exp2(exposure));
+  const double scale = std::exp2(exposure);
+  for (int k = 0; k < n; ++k) drawPanel(pic, k, sheet.panels[size_t(k)], scale);
   for (int k = 0; k < n; ++k) drawLabels(pic, k, sheet.panels[size_t(k)]);
   if (mapRow) {
     const int top = h + pic.strip;
