@@ -263,6 +263,9 @@ py::dict paramsDict(const ParamSet& params) {
   return d;
 }
 
+// Brdf, MeasuredBrdf, Material, load_material, load_merl, make_brdf, models and uniforms, each defined once
+// with its docstring: over 80 lines because it is one table of Python names read top to bottom, which a
+// split would scatter.
 void bindBrdfs(py::module_& m) {
   py::class_<PyBrdf, std::shared_ptr<PyBrdf>>(m, "Brdf", R"doc(
 A BRDF: an analytic model with its parameters, or measured data.

@@ -233,6 +233,8 @@ std::shared_ptr<PySheet> renderSheetOf(const py::kwargs& a) {
 
 }  // namespace
 
+// render, Sheet, sheet, comparison_grid and read_exr, each defined once with its docstring: over 80 lines
+// because it is one table of Python names read top to bottom, which a split would scatter.
 void bindRendering(py::module_& m) {
   m.def("render", [](const py::kwargs& a) { return guarded([&] { return renderArray(a); }); }, R"doc(
 render(*, scene=None, material=None, fit=None, measured=None, brdf=None, merl_dir=None, camera=None,
