@@ -104,6 +104,8 @@ class Paths {
   void addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance);
   // Offers lane i's resampling its j-th sample's candidate_, found along direction_[i].
   void choose(int i, int j);
+  // The resampled lanes' chosen samples, each channel's ray traced: their emission where it is unblocked.
+  void addChosenSamples(const Lanes& lanes, Rgb* radiance);
   // The distant lights' emission for the escaped lanes, whose rays' directions and vertices are in
   // direction_ and from_, weighted as paths[i]'s (addEmission), added to radiance[i].
   void addDistantEmission(const Lanes& escaped, const PathState* paths, Rgb* radiance);

@@ -120,7 +120,10 @@ void Paths::addOtherBsdfSamples(int depth, const Lanes& lanes, Rgb* radiance) {
     }
     addDistantEmission(escaped, otherPath_, radiance);
   }
-  if (!resample) return;
+  if (resample) addChosenSamples(lanes, radiance);
+}
+
+void Paths::addChosenSamples(const Lanes& lanes, Rgb* radiance) {
   // Each channel's chosen sample's ray, traced, once where channels chose the same sample: the channel's
   // emission, Σ c over its probability c_j / Σ c of being chosen times c_j, arrives if the ray leaves the
   // scene. Where nothing blocks them, exactly the samples' sum.
