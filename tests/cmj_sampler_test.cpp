@@ -1,7 +1,7 @@
 // The correlated multi-jittered sampler: its permutations are permutations, every pixel's N samples are
 // stratified as the header promises for any N (cells, thin columns and rows, 1D intervals), each sample is
 // uniform (unbiased), and values are deterministic and decorrelated.
-#include "renderer/sampling/cmj_sampler.h"
+#include "renderer/samplers/cmj_sampler.h"
 #include "tests/support/chi2.h"
 #include "tests/support/test_support.h"
 

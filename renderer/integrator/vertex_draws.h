@@ -16,7 +16,7 @@
 
 #include "renderer/integrator/lanes.h"
 #include "renderer/integrator/path_tracer.h"
-#include "renderer/sampling/cmj_sampler.h"
+#include "renderer/samplers/cmj_sampler.h"
 
 #include <cstdint>
 

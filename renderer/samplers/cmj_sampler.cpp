@@ -1,6 +1,6 @@
 // CmjSampler's batch draws: get2D, get1D and their split forms for many lanes, stage by stage over arrays of lanes, with the
 // same arithmetic as the one-lane forms in cmj_sampler.h (so the same values, bit for bit).
-#include "renderer/sampling/cmj_sampler.h"
+#include "renderer/samplers/cmj_sampler.h"
 
 #include <algorithm>
 
