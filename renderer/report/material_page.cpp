@@ -39,11 +39,9 @@ void fileRow(std::ostringstream& h, const char* name, const std::string& path) {
   h << "<dt>" << name << "</dt><dd>" << escapeHtml(file.empty() ? path : file) << "</dd>\n";
 }
 
-}  // namespace
-
-std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const SheetRecord* previous, const SheetRecord* next) {
-  std::ostringstream h;
-  h << pageStart(s.name + " · glossy report", kRoot);
+// The page's header: links to the index and the neighbouring materials, the name, verdict, warnings and
+// what the sheet was made from.
+void pageHeader(std::ostringstream& h, const SheetRecord& s, const SheetRecord* previous, const SheetRecord* next) {
   h << "<header class=\"site\">\n<nav class=\"crumbs\" aria-label=\"pages\"><a href=\"" << kRoot << layout::kIndex << "\">All materials</a>";
   if (previous)
     h << "<a href=\"" << kRoot << layout::materialPage(previous->name) << "\" rel=\"prev\">← " << escapeHtml(previous->name) << "</a>";
@@ -58,9 +56,11 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
   metaRow(h, "lighting", s.env);
   metaRow(h, "samples per pixel", s.spp);
   metaRow(h, "PNG exposure", formatted("%+g stops", s.pngExposure));
-  h << "</dl>\n</header>\n<main>\n";
+  h << "</dl>\n</header>\n";
+}
 
-  // The sheet as drawn: its panels, each in its box (the compare view's images), over the rest of it.
+// The sheet as drawn: its panels, each in its box (the compare view's images), over the rest of it.
+void sheetSection(std::ostringstream& h, const SheetRecord& s) {
   h << "<section aria-labelledby=\"sheet-heading\">\n<h2 id=\"sheet-heading\">Sheet</h2>\n<figure class=\"sheet\" style=\"max-width: " << s.imageWidth << "px\">"
     << "<div class=\"sheet-panels\" style=\"aspect-ratio: " << s.imageWidth << " / " << s.panelsBottom << "\">";
   const double w = s.imageWidth, b = s.panelsBottom;
@@ -78,8 +78,10 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
   for (size_t k = 0; k < s.panels.size(); ++k) h << (k ? " | " : "") << escapeHtml(s.panels[k].label);
   h << ". Under the panels: each one's label and figures, and a row of error maps against the measured panel with its legend."
        "</figcaption></figure>\n</section>\n";
+}
 
-  // Compare view.
+// The compare view: a model's panel, with the measured panel in its place on demand.
+void compareSection(std::ostringstream& h, const SheetRecord& s) {
   const PanelRecord* measured = s.measuredPanel();
   const bool hasMeasured = measured && !measured->empty;
   const PanelRecord* first = nullptr;
@@ -119,8 +121,10 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
     h << "</div>\n</div>\n";
   }
   h << "</section>\n";
+}
 
-  // Errors.
+// Each panel's figures against the measured panel, and the noise floor's.
+void errorsSection(std::ostringstream& h, const SheetRecord& s) {
   h << "<section aria-labelledby=\"errors-heading\">\n<h2 id=\"errors-heading\">Errors against the measured panel</h2>\n"
     << "<div class=\"table-wrap\"><table class=\"errors\">\n<thead><tr><th class=\"text\" scope=\"col\">Panel</th>"
        "<th scope=\"col\">rel. RMSE [95 %]</th><th scope=\"col\">noisy rRMSE</th><th scope=\"col\">luminance ratio [95 %]</th>"
@@ -144,8 +148,10 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
        "noise's spread";
   if (s.flipNoiseFloor) h << " (noise alone gives " << shortNumber(s.flipNoiseFloor) << ": the measured panel against itself)";
   h << "; E1 and E2 score the fit against the measured table itself, not the image.</p>\n</section>\n";
+}
 
-  // Fit parameters.
+// Each model panel's fit and its parameters.
+void parametersSection(std::ostringstream& h, const SheetRecord& s) {
   h << "<section aria-labelledby=\"params-heading\">\n<h2 id=\"params-heading\">Fit parameters</h2>\n<div class=\"table-wrap\"><table>\n"
        "<thead><tr><th class=\"text\" scope=\"col\">Panel</th><th class=\"text\" scope=\"col\">Fit</th><th class=\"text\" scope=\"col\">Parameters</th></tr></thead>\n<tbody>\n";
   for (const PanelRecord& p : s.panels) {
@@ -154,8 +160,10 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
       << "</code></td><td class=\"text params\">" << escapeHtml(p.params.empty() ? (p.empty ? "no fit" : "–") : p.params) << "</td></tr>\n";
   }
   h << "</tbody>\n</table></div>\n</section>\n";
+}
 
-  // Plots.
+// The material's plots from glossy plot, captioned, with links to their SVG and CSV where the site has them.
+void plotsSection(std::ostringstream& h, const PlotIndex* plots) {
   h << "<section aria-labelledby=\"plots-heading\">\n<h2 id=\"plots-heading\">Plots</h2>\n";
   if (!plots || plots->figures.empty()) {
     h << "<p class=\"muted\">No plots for this material (<code>glossy plot</code> makes them).</p>\n";
@@ -176,7 +184,22 @@ std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const She
     }
     h << "</div>\n";
   }
-  h << "</section>\n</main>\n";
+  h << "</section>\n";
+}
+
+}  // namespace
+
+std::string materialPage(const SheetRecord& s, const PlotIndex* plots, const SheetRecord* previous, const SheetRecord* next) {
+  std::ostringstream h;
+  h << pageStart(s.name + " · glossy report", kRoot);
+  pageHeader(h, s, previous, next);
+  h << "<main>\n";
+  sheetSection(h, s);
+  compareSection(h, s);
+  errorsSection(h, s);
+  parametersSection(h, s);
+  plotsSection(h, plots);
+  h << "</main>\n";
   h << pageEnd("Made by <code>glossy report</code> from <code>" + escapeHtml(s.exr.filename().string()) + "</code>.");
   return h.str();
 }
