@@ -66,6 +66,98 @@ std::string settingsParagraph(const std::vector<SheetRecord>& sheets) {
   return "<p class=\"settings\">Every sheet made with: " + text + ".</p>\n";
 }
 
+// How many materials' measured data came from each kind of source ("none" for those without).
+std::string sourcesParagraph(const std::vector<SheetRecord>& sheets) {
+  std::map<std::string, int> sources;
+  for (const SheetRecord& s : sheets) {
+    const PanelRecord* m = s.measuredPanel();
+    ++sources[!m || m->empty || s.measured.empty() ? std::string("none") : sourceLabel(s.measured)];
+  }
+  return "<p>Measured data: " + joined(sources, "; ", [](const auto& source) {
+    return escapeHtml(source.first) + " (" + std::to_string(source.second) + (source.second == 1 ? " material)" : " materials)");
+  }) + ".</p>\n";
+}
+
+// Per model: how often it is the closest, and the medians of its figures over the materials.
+void summaryTable(std::ostringstream& h, const std::vector<ModelSummary>& summary) {
+  h << "<h2 id=\"summary-heading\">Per model</h2>\n<div class=\"table-wrap\">\n<table id=\"summary\" class=\"summary\" "
+       "aria-labelledby=\"summary-heading\">\n<thead><tr><th class=\"text\" scope=\"col\">Model</th>"
+       "<th scope=\"col\" title=\"materials where this model alone is the closest\">closest</th>"
+       "<th scope=\"col\" title=\"materials where it ties for the closest with other models\">ties</th>"
+       "<th scope=\"col\" title=\"materials with a relative RMSE for this model\">compared</th>"
+       "<th scope=\"col\">median rRMSE</th><th scope=\"col\">median lum.</th><th scope=\"col\">median \xEA\x9F\xBBLIP</th>"
+       "<th scope=\"col\">median E1</th><th scope=\"col\">median E2</th></tr></thead>\n<tbody>\n";
+  for (const ModelSummary& m : summary)
+    h << "<tr data-layer=\"" << escapeHtml(m.layer) << "\"><td class=\"model\"" << styleColour(m.colour) << ">" << escapeHtml(m.label)
+      << "</td><td>" << m.closest << "</td><td>" << m.ties << "</td><td>" << m.compared << "</td><td>" << shortNumber(m.medianRelativeRmse)
+      << "</td><td>" << shortNumber(m.medianLuminanceRatio) << "</td><td>" << shortNumber(m.medianFlip) << "</td><td>"
+      << shortNumber(m.medianE1) << "</td><td>" << shortNumber(m.medianE2) << "</td></tr>\n";
+  h << "</tbody>\n</table>\n</div>\n";
+}
+
+// The materials table's heading, filter and column headers: the fixed columns, then a group per model.
+void materialsTableHead(std::ostringstream& h, size_t materials, const std::vector<std::string>& layers, const std::vector<ModelSummary>& summary) {
+  h << "<h2 id=\"materials-heading\">Materials</h2>\n<div class=\"controls\"><label for=\"filter\">Filter</label>"
+       "<input id=\"filter\" type=\"search\" placeholder=\"material name or verdict\" autocomplete=\"off\">"
+       "<span id=\"shown\" class=\"muted\" aria-live=\"polite\">"
+    << materials << " materials</span></div>\n"
+    << "<noscript><p>Sorting, filtering and the compare views need JavaScript; the tables and images are all here without it.</p></noscript>\n"
+    << "<div class=\"table-wrap\">\n<table id=\"materials\" aria-labelledby=\"materials-heading\">\n<thead>\n<tr>"
+    << "<th rowspan=\"2\" scope=\"col\">Preview</th>"
+    << "<th rowspan=\"2\" scope=\"col\" class=\"name\" data-col=\"1\" data-type=\"text\"><button class=\"sort\" type=\"button\">Material</button></th>"
+    << "<th rowspan=\"2\" scope=\"col\" class=\"text\" data-col=\"2\" data-type=\"text\"><button class=\"sort\" type=\"button\">Verdict</button></th>";
+  for (const ModelSummary& m : summary)
+    h << "<th colspan=\"" << std::size(kColumns) << "\" scope=\"colgroup\" class=\"group\"" << styleColour(m.colour) << ">"
+      << escapeHtml(m.label) << "</th>";
+  h << "</tr>\n<tr>";
+  for (size_t k = 0; k < layers.size(); ++k)
+    for (size_t c = 0; c < std::size(kColumns); ++c)
+      h << "<th scope=\"col\"" << (c == 0 ? " class=\"group-start\"" : "") << " data-col=\"" << kFixedColumns + k * std::size(kColumns) + c
+        << "\" data-type=\"number\" data-layer=\"" << escapeHtml(layers[k]) << "\" title=\"" << kColumns[c].title
+        << "\"><button class=\"sort\" type=\"button\" aria-label=\"" << escapeHtml(summary[k].label) << " " << kColumns[c].heading
+        << "\">" << kColumns[c].heading << "</button></th>";
+  h << "</tr>\n</thead>\n<tbody class=\"rows\">\n";
+}
+
+// A material's row: its thumbnail, name, verdict and warnings, then each model's figures ("–" where the
+// sheet has no such panel).
+void materialRow(std::ostringstream& h, const SheetRecord& s, const std::vector<std::string>& layers) {
+  const std::string folder = layout::materialFolder(s.name) + "/";
+  const std::string page = layout::materialPage(s.name);
+  h << "<tr data-name=\"" << escapeHtml(s.name) << "\" data-verdict=\"" << escapeHtml(s.verdict) << "\">";
+  if (const PanelRecord* t = thumbnailPanel(s))
+    h << "<td class=\"thumb\"><a href=\"" << page << "\" tabindex=\"-1\"><img src=\"" << folder << layout::panelImage(t->layer)
+      << "\" width=\"48\" height=\"48\" alt=\"" << escapeHtml(s.name + ": " + t->label) << "\"></a></td>";
+  else
+    h << "<td class=\"thumb\">–</td>";
+  h << "<td class=\"name\" data-value=\"" << escapeHtml(s.name) << "\" title=\"" << escapeHtml(withoutFolders(s.measured)) << "\"><a href=\"" << page << "\">" << escapeHtml(s.name) << "</a></td>";
+  h << "<td class=\"text verdict\">" << escapeHtml(s.verdict.empty() ? "–" : s.verdict);
+  for (const std::string& w : s.warnings) h << "<br><span class=\"warning\">warning: " << escapeHtml(w) << "</span>";
+  h << "</td>";
+  const std::vector<std::string> closest = s.closestLayers();
+  for (const std::string& layer : layers) {
+    const PanelRecord* p = s.panel(layer);
+    if (!p) {
+      for (size_t c = 0; c < std::size(kColumns); ++c) h << "<td" << (c == 0 ? " class=\"group-start\"" : "") << " data-value=\"\">–</td>";
+      continue;
+    }
+    const bool best = std::find(closest.begin(), closest.end(), layer) != closest.end();
+    h << numberCell(p->relativeRmse.value, intervalTitle(p->relativeRmse), true, best)
+      << numberCell(p->luminanceRatio.value, intervalTitle(p->luminanceRatio), false, false)
+      << numberCell(p->flip.value, intervalTitle(p->flip), false, false) << numberCell(p->e1, "", false, false)
+      << numberCell(p->e2, "", false, false);
+    // 1 closest, 0.5 tie, 0 not; absent when the sheet has no verdict at all.
+    if (closest.empty())
+      h << "<td data-value=\"\"></td>";
+    else if (best)
+      h << "<td class=\"closest-mark\" data-value=\"" << (closest.size() == 1 ? "1" : "0.5") << "\">"
+        << (closest.size() == 1 ? "closest" : "tie") << "</td>";
+    else
+      h << "<td data-value=\"0\"></td>";
+  }
+  h << "</tr>\n";
+}
+
 }  // namespace
 
 const PanelRecord* thumbnailPanel(const SheetRecord& sheet) {
@@ -85,89 +177,10 @@ std::string indexPage(const std::vector<SheetRecord>& sheets) {
     << "<p>Each material's sheet renders the measured BRDF and the fits of the analytic models (Löw et al. 2012) in the same scene; "
        "the figures say how far each model's image is from the measured one over the object's pixels. "
     << sheets.size() << " materials.</p>\n";
-  std::map<std::string, int> sources;
-  for (const SheetRecord& s : sheets) {
-    const PanelRecord* m = s.measuredPanel();
-    ++sources[!m || m->empty || s.measured.empty() ? std::string("none") : sourceLabel(s.measured)];
-  }
-  h << "<p>Measured data: " << joined(sources, "; ", [](const auto& source) {
-    return escapeHtml(source.first) + " (" + std::to_string(source.second) + (source.second == 1 ? " material)" : " materials)");
-  });
-  h << ".</p>\n" << settingsParagraph(sheets) << "</header>\n<main>\n";
-
-  // Summary rows.
-  h << "<h2 id=\"summary-heading\">Per model</h2>\n<div class=\"table-wrap\">\n<table id=\"summary\" class=\"summary\" "
-       "aria-labelledby=\"summary-heading\">\n<thead><tr><th class=\"text\" scope=\"col\">Model</th>"
-       "<th scope=\"col\" title=\"materials where this model alone is the closest\">closest</th>"
-       "<th scope=\"col\" title=\"materials where it ties for the closest with other models\">ties</th>"
-       "<th scope=\"col\" title=\"materials with a relative RMSE for this model\">compared</th>"
-       "<th scope=\"col\">median rRMSE</th><th scope=\"col\">median lum.</th><th scope=\"col\">median \xEA\x9F\xBBLIP</th>"
-       "<th scope=\"col\">median E1</th><th scope=\"col\">median E2</th></tr></thead>\n<tbody>\n";
-  for (const ModelSummary& m : summary)
-    h << "<tr data-layer=\"" << escapeHtml(m.layer) << "\"><td class=\"model\"" << styleColour(m.colour) << ">" << escapeHtml(m.label)
-      << "</td><td>" << m.closest << "</td><td>" << m.ties << "</td><td>" << m.compared << "</td><td>" << shortNumber(m.medianRelativeRmse)
-      << "</td><td>" << shortNumber(m.medianLuminanceRatio) << "</td><td>" << shortNumber(m.medianFlip) << "</td><td>"
-      << shortNumber(m.medianE1) << "</td><td>" << shortNumber(m.medianE2) << "</td></tr>\n";
-  h << "</tbody>\n</table>\n</div>\n";
-
-  // The materials.
-  h << "<h2 id=\"materials-heading\">Materials</h2>\n<div class=\"controls\"><label for=\"filter\">Filter</label>"
-       "<input id=\"filter\" type=\"search\" placeholder=\"material name or verdict\" autocomplete=\"off\">"
-       "<span id=\"shown\" class=\"muted\" aria-live=\"polite\">"
-    << sheets.size() << " materials</span></div>\n"
-    << "<noscript><p>Sorting, filtering and the compare views need JavaScript; the tables and images are all here without it.</p></noscript>\n"
-    << "<div class=\"table-wrap\">\n<table id=\"materials\" aria-labelledby=\"materials-heading\">\n<thead>\n<tr>"
-    << "<th rowspan=\"2\" scope=\"col\">Preview</th>"
-    << "<th rowspan=\"2\" scope=\"col\" class=\"name\" data-col=\"1\" data-type=\"text\"><button class=\"sort\" type=\"button\">Material</button></th>"
-    << "<th rowspan=\"2\" scope=\"col\" class=\"text\" data-col=\"2\" data-type=\"text\"><button class=\"sort\" type=\"button\">Verdict</button></th>";
-  for (const ModelSummary& m : summary)
-    h << "<th colspan=\"" << std::size(kColumns) << "\" scope=\"colgroup\" class=\"group\"" << styleColour(m.colour) << ">"
-      << escapeHtml(m.label) << "</th>";
-  h << "</tr>\n<tr>";
-  for (size_t k = 0; k < layers.size(); ++k)
-    for (size_t c = 0; c < std::size(kColumns); ++c)
-      h << "<th scope=\"col\"" << (c == 0 ? " class=\"group-start\"" : "") << " data-col=\"" << kFixedColumns + k * std::size(kColumns) + c
-        << "\" data-type=\"number\" data-layer=\"" << escapeHtml(layers[k]) << "\" title=\"" << kColumns[c].title
-        << "\"><button class=\"sort\" type=\"button\" aria-label=\"" << escapeHtml(summary[k].label) << " " << kColumns[c].heading
-        << "\">" << kColumns[c].heading << "</button></th>";
-  h << "</tr>\n</thead>\n<tbody class=\"rows\">\n";
-
-  for (const SheetRecord& s : sheets) {
-    const std::string folder = layout::materialFolder(s.name) + "/";
-    const std::string page = layout::materialPage(s.name);
-    h << "<tr data-name=\"" << escapeHtml(s.name) << "\" data-verdict=\"" << escapeHtml(s.verdict) << "\">";
-    if (const PanelRecord* t = thumbnailPanel(s))
-      h << "<td class=\"thumb\"><a href=\"" << page << "\" tabindex=\"-1\"><img src=\"" << folder << layout::panelImage(t->layer)
-        << "\" width=\"48\" height=\"48\" alt=\"" << escapeHtml(s.name + ": " + t->label) << "\"></a></td>";
-    else
-      h << "<td class=\"thumb\">–</td>";
-    h << "<td class=\"name\" data-value=\"" << escapeHtml(s.name) << "\" title=\"" << escapeHtml(withoutFolders(s.measured)) << "\"><a href=\"" << page << "\">" << escapeHtml(s.name) << "</a></td>";
-    h << "<td class=\"text verdict\">" << escapeHtml(s.verdict.empty() ? "–" : s.verdict);
-    for (const std::string& w : s.warnings) h << "<br><span class=\"warning\">warning: " << escapeHtml(w) << "</span>";
-    h << "</td>";
-    const std::vector<std::string> closest = s.closestLayers();
-    for (const std::string& layer : layers) {
-      const PanelRecord* p = s.panel(layer);
-      if (!p) {
-        for (size_t c = 0; c < std::size(kColumns); ++c) h << "<td" << (c == 0 ? " class=\"group-start\"" : "") << " data-value=\"\">–</td>";
-        continue;
-      }
-      const bool best = std::find(closest.begin(), closest.end(), layer) != closest.end();
-      h << numberCell(p->relativeRmse.value, intervalTitle(p->relativeRmse), true, best)
-        << numberCell(p->luminanceRatio.value, intervalTitle(p->luminanceRatio), false, false)
-        << numberCell(p->flip.value, intervalTitle(p->flip), false, false) << numberCell(p->e1, "", false, false)
-        << numberCell(p->e2, "", false, false);
-      // 1 closest, 0.5 tie, 0 not; absent when the sheet has no verdict at all.
-      if (closest.empty())
-        h << "<td data-value=\"\"></td>";
-      else if (best)
-        h << "<td class=\"closest-mark\" data-value=\"" << (closest.size() == 1 ? "1" : "0.5") << "\">"
-          << (closest.size() == 1 ? "closest" : "tie") << "</td>";
-      else
-        h << "<td data-value=\"0\"></td>";
-    }
-    h << "</tr>\n";
-  }
+  h << sourcesParagraph(sheets) << settingsParagraph(sheets) << "</header>\n<main>\n";
+  summaryTable(h, summary);
+  materialsTableHead(h, sheets.size(), layers, summary);
+  for (const SheetRecord& s : sheets) materialRow(h, s, layers);
   h << "</tbody>\n</table>\n</div>\n";
   h << "<p class=\"muted\">Click a column's header to sort by it (again to reverse); materials without the figure stay last. "
        "Hover a figure for its 95 % interval. rRMSE: relative RMSE with the render noise taken out; lum.: luminance ratio; "
