@@ -43,13 +43,10 @@ std::string figureCaption(const std::string& file) {
 constexpr const char* kTextColumns[] = {"Material", "Database", "Class", "Lighting", "Scene", "Model", "Fit"};
 constexpr const char* kNumberColumns[] = {"rRMSE", "\xEA\x9F\xBBLIP", "lum.", "E1", "E2", "closest"};
 
-}  // namespace
-
-std::string studyPage(const study::StudyPlan& plan, const std::vector<study::StudyRow>& rows, const StudyFiles& files) {
+// The page's header: what the study covers, its sheets' settings and links to each scene and lighting's sheets.
+void pageHeader(std::ostringstream& h, const study::StudyPlan& plan, const std::vector<study::StudyRow>& rows) {
   std::set<std::string> databases;
   for (const study::PlannedMaterial& m : plan.materials) databases.insert(m.database);
-  std::ostringstream h;
-  h << pageStart(formatted("glossy study: %zu materials", plan.materials.size()), "");
   h << "<header class=\"site\">\n<h1>A study of analytic BRDF models against measured data</h1>\n<p>"
     << plan.materials.size() << " materials (" << list({databases.begin(), databases.end()}) << ") under " << plan.lightings.size()
     << (plan.lightings.size() == 1 ? " lighting" : " lightings") << " (" << list(plan.lightings) << ") in " << plan.scenes.size()
@@ -66,28 +63,25 @@ std::string studyPage(const study::StudyPlan& plan, const std::vector<study::Stu
         << escapeHtml(scene + " / " + lighting) << "</a>";
       first = false;
     }
-  h << ".</p>\n</header>\n<main>\n";
+  h << ".</p>\n</header>\n";
+}
 
-  if (!files.summary.empty())
-    h << "<h2 id=\"summary-heading\">Summary</h2>\n<div class=\"study-summary\">\n" << markdownToHtml(files.summary) << "</div>\n";
-  if (!files.figures.empty()) {
-    h << "<h2 id=\"figures-heading\">Figures</h2>\n";
-    for (const std::string& f : files.figures) {
-      const std::string src = escapeHtml(study_layout::analysisFile(f));
-      const auto known = files.captions.find(std::filesystem::path(f).stem().string());
-      const std::string caption = known != files.captions.end() ? known->second : figureCaption(f);
-      h << "<figure class=\"study-figure\"><a href=\"" << src << "\"><img src=\"" << src << "\" alt=\"" << escapeHtml(caption)
-        << "\" loading=\"lazy\" style=\"max-width:100%\"></a><figcaption>" << escapeHtml(caption) << " (<code>" << escapeHtml(f)
-        << "</code>)</figcaption></figure>\n";
-    }
+// The analysis's figures, each captioned by what it shows.
+void figuresSection(std::ostringstream& h, const StudyFiles& files) {
+  if (files.figures.empty()) return;
+  h << "<h2 id=\"figures-heading\">Figures</h2>\n";
+  for (const std::string& f : files.figures) {
+    const std::string src = escapeHtml(study_layout::analysisFile(f));
+    const auto known = files.captions.find(std::filesystem::path(f).stem().string());
+    const std::string caption = known != files.captions.end() ? known->second : figureCaption(f);
+    h << "<figure class=\"study-figure\"><a href=\"" << src << "\"><img src=\"" << src << "\" alt=\"" << escapeHtml(caption)
+      << "\" loading=\"lazy\" style=\"max-width:100%\"></a><figcaption>" << escapeHtml(caption) << " (<code>" << escapeHtml(f)
+      << "</code>)</figcaption></figure>\n";
   }
-  if (!files.others.empty()) {
-    h << "<h2 id=\"files-heading\">Tables and data</h2>\n<ul class=\"study-files\">\n";
-    for (const std::string& f : files.others)
-      h << "<li><a href=\"" << escapeHtml(study_layout::analysisFile(f)) << "\">" << escapeHtml(f) << "</a></li>\n";
-    h << "</ul>\n";
-  }
+}
 
+// Every row of the study, one model on one sheet, linking to the sheet's page.
+void rowsTable(std::ostringstream& h, const std::vector<study::StudyRow>& rows) {
   h << "<h2 id=\"materials-heading\">Rows</h2>\n<div class=\"controls\"><label for=\"filter\">Filter</label>"
        "<input id=\"filter\" type=\"search\" placeholder=\"words of a material, database, lighting, scene, model or fit\" autocomplete=\"off\">"
        "<span id=\"shown\" class=\"muted\" aria-live=\"polite\">"
@@ -122,7 +116,27 @@ std::string studyPage(const study::StudyPlan& plan, const std::vector<study::Stu
   h << "</tbody>\n</table>\n</div>\n<p class=\"muted\">A row is one model on one sheet; its material links to the sheet's page. "
        "rRMSE: relative RMSE with the render noise taken out (hover for its 95 % interval); \xEA\x9F\xBBLIP: mean HDR-\xEA\x9F\xBBLIP; "
        "lum.: luminance ratio; E1, E2: the fit's error against the measured table; closest: the sheet's verdict (a tie where "
-       "the intervals do not separate).</p>\n</main>\n";
+       "the intervals do not separate).</p>\n";
+}
+
+}  // namespace
+
+std::string studyPage(const study::StudyPlan& plan, const std::vector<study::StudyRow>& rows, const StudyFiles& files) {
+  std::ostringstream h;
+  h << pageStart(formatted("glossy study: %zu materials", plan.materials.size()), "");
+  pageHeader(h, plan, rows);
+  h << "<main>\n";
+  if (!files.summary.empty())
+    h << "<h2 id=\"summary-heading\">Summary</h2>\n<div class=\"study-summary\">\n" << markdownToHtml(files.summary) << "</div>\n";
+  figuresSection(h, files);
+  if (!files.others.empty()) {
+    h << "<h2 id=\"files-heading\">Tables and data</h2>\n<ul class=\"study-files\">\n";
+    for (const std::string& f : files.others)
+      h << "<li><a href=\"" << escapeHtml(study_layout::analysisFile(f)) << "\">" << escapeHtml(f) << "</a></li>\n";
+    h << "</ul>\n";
+  }
+  rowsTable(h, rows);
+  h << "</main>\n";
   h << pageEnd("Made by <code>glossy report</code> from the output of <code>glossy study</code> (docs/study.md).");
   return h.str();
 }
