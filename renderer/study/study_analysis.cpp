@@ -157,6 +157,75 @@ Study readRows(std::span<const StudyRow> rows) {
 
 // ---- per material: verdicts under each lighting, across lightings, and their agreement -----------------
 
+// A sheet's verdict (the closest model, a tie or none) and its models in order of rRMSE.
+Json sheetVerdict(const SheetKey& key, const std::map<std::string, const StudyRow*>& sheet) {
+  Json j;
+  j["lighting"] = key.lighting;
+  j["scene"] = key.scene;
+  std::vector<std::string> tied;
+  std::string closest, warning;
+  std::vector<std::pair<double, std::string>> byError;
+  for (const auto& [label, row] : sheet) {
+    if (row->closest) closest = label;
+    if (row->tied) tied.push_back(label);
+    if (!row->warning.empty()) warning = row->warning;
+    byError.emplace_back(*row->rrmse, label);
+  }
+  std::sort(byError.begin(), byError.end());
+  j["verdict"] = !closest.empty() ? "closest" : (!tied.empty() ? "tie" : "none");
+  j["models"] = !closest.empty() ? Json::array({closest}) : Json(tied);
+  Json ranking = Json::array();
+  for (const auto& [e, label] : byError) ranking.push_back(label);
+  j["ranking"] = ranking;
+  j["warning"] = warning;
+  return j;
+}
+
+// The model of the best mean rank over the material's sheets (`scores`: each sheet's rRMSE of the `common`
+// models), and how many of the sheets' verdicts (`sheets`, as sheetVerdict writes them) name another.
+Json acrossLightings(const std::vector<std::string>& common, const std::vector<std::vector<double>>& scores, const Json& sheets) {
+  Json across;
+  if (common.empty()) {
+    across["model"] = nullptr;
+    across["reason"] = "no model on every sheet of the material";
+    return across;
+  }
+  std::vector<double> meanRank(common.size(), 0.0);
+  for (const auto& row : scores) {
+    const auto r = averageRanks(row);
+    for (std::size_t k = 0; k < r.size(); ++k) meanRank[k] += r[k] / double(scores.size());
+  }
+  const std::size_t best = std::size_t(std::min_element(meanRank.begin(), meanRank.end()) - meanRank.begin());
+  across["model"] = common[best];
+  across["meanRank"] = meanRank[best];
+  // A flip: a sheet whose verdict names a model and not the one across lightings.
+  int flips = 0, withVerdict = 0;
+  std::set<std::string> verdicts;
+  for (const Json& j : sheets) {
+    if (j["verdict"] == "none") continue;
+    ++withVerdict;
+    verdicts.insert(j["models"].dump());
+    const auto& named = j["models"];
+    if (std::find(named.begin(), named.end(), Json(common[best])) == named.end()) ++flips;
+  }
+  across["sheetsWithVerdict"] = withVerdict;
+  across["flips"] = flips;
+  across["distinctVerdicts"] = int(verdicts.size());
+  return across;
+}
+
+// Kendall's W: how far the material's sheets agree on the ranks of the models on every sheet.
+Json rankAgreement(const std::vector<std::vector<double>>& scores, std::size_t models) {
+  Json w;
+  const auto kw = kendallW(scores);
+  w["value"] = num(kw);
+  w["lightings"] = int(scores.size());
+  w["models"] = int(models);
+  if (!kw)
+    w["reason"] = scores.size() < 2 ? "fewer than 2 sheets" : (models < 2 ? "fewer than 2 models on every sheet" : "every sheet ties every model");
+  return w;
+}
+
 Json perMaterial(const Study& s) {
   Json out = Json::array();
   for (const std::string& m : s.materials) {
@@ -169,26 +238,7 @@ Json perMaterial(const Study& s) {
     for (const auto& [key, sheet] : s.sheets) {
       if (key.material != m) continue;
       sheets.push_back(&sheet);
-      Json j;
-      j["lighting"] = key.lighting;
-      j["scene"] = key.scene;
-      std::vector<std::string> tied;
-      std::string closest, warning;
-      std::vector<std::pair<double, std::string>> byError;
-      for (const auto& [label, row] : sheet) {
-        if (row->closest) closest = label;
-        if (row->tied) tied.push_back(label);
-        if (!row->warning.empty()) warning = row->warning;
-        byError.emplace_back(*row->rrmse, label);
-      }
-      std::sort(byError.begin(), byError.end());
-      j["verdict"] = !closest.empty() ? "closest" : (!tied.empty() ? "tie" : "none");
-      j["models"] = !closest.empty() ? Json::array({closest}) : Json(tied);
-      Json ranking = Json::array();
-      for (const auto& [e, label] : byError) ranking.push_back(label);
-      j["ranking"] = ranking;
-      j["warning"] = warning;
-      js.push_back(j);
+      js.push_back(sheetVerdict(key, sheet));
     }
     // The models on every sheet of this material: rankings across lightings compare like with like.
     std::vector<std::string> common;
@@ -200,43 +250,9 @@ Json perMaterial(const Study& s) {
       for (const std::string& label : common) row.push_back(*sh->at(label)->rrmse);
       scores.push_back(row);
     }
-    Json across;
-    if (!common.empty()) {
-      std::vector<double> meanRank(common.size(), 0.0);
-      for (const auto& row : scores) {
-        const auto r = averageRanks(row);
-        for (std::size_t k = 0; k < r.size(); ++k) meanRank[k] += r[k] / double(scores.size());
-      }
-      const std::size_t best = std::size_t(std::min_element(meanRank.begin(), meanRank.end()) - meanRank.begin());
-      across["model"] = common[best];
-      across["meanRank"] = meanRank[best];
-      // A flip: a sheet whose verdict names a model and not the one across lightings.
-      int flips = 0, withVerdict = 0;
-      std::set<std::string> verdicts;
-      for (const Json& j : js) {
-        if (j["verdict"] == "none") continue;
-        ++withVerdict;
-        verdicts.insert(j["models"].dump());
-        const auto& named = j["models"];
-        if (std::find(named.begin(), named.end(), Json(common[best])) == named.end()) ++flips;
-      }
-      across["sheetsWithVerdict"] = withVerdict;
-      across["flips"] = flips;
-      across["distinctVerdicts"] = int(verdicts.size());
-    } else {
-      across["model"] = nullptr;
-      across["reason"] = "no model on every sheet of the material";
-    }
-    Json w;
-    const auto kw = kendallW(scores);
-    w["value"] = num(kw);
-    w["lightings"] = int(scores.size());
-    w["models"] = int(common.size());
-    if (!kw)
-      w["reason"] = scores.size() < 2 ? "fewer than 2 sheets" : (common.size() < 2 ? "fewer than 2 models on every sheet" : "every sheet ties every model");
     jm["sheets"] = js;
-    jm["acrossLightings"] = across;
-    jm["kendallW"] = w;
+    jm["acrossLightings"] = acrossLightings(common, scores, js);
+    jm["kendallW"] = rankAgreement(scores, common.size());
     out.push_back(jm);
   }
   return out;
