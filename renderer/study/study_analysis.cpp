@@ -273,25 +273,23 @@ struct RankTests {
   std::set<std::string> methods;
 };
 
-RankTests rankTests(const Study& s) {
-  RankTests t;
-  const std::size_t nk = s.models.size();
+// The materials with every model (`complete`) and, a block per material, their rRMSE of each model.
+std::vector<std::vector<double>> completeBlocks(const Study& s, std::vector<std::size_t>& complete) {
   std::vector<std::vector<double>> blocks;
   for (std::size_t i = 0; i < s.materials.size(); ++i) {
     if (std::any_of(s.rrmse[i].begin(), s.rrmse[i].end(), [](const Opt& v) { return !v; })) continue;
-    t.complete.push_back(i);
+    complete.push_back(i);
     std::vector<double> b;
     for (const Opt& v : s.rrmse[i]) b.push_back(*v);
     blocks.push_back(b);
   }
-  t.friedman = friedman(blocks);
-  if (nk < 2)
-    t.friedmanReason = "fewer than 2 models";
-  else if (blocks.size() < kTestMinMaterials)
-    t.friedmanReason = tooFewForTest(blocks.size());
-  else if (!t.friedman)
-    t.friedmanReason = "every material ties every model";
-  t.friedmanTested = t.friedman && blocks.size() >= kTestMinMaterials;
+  return blocks;
+}
+
+// Every pair of models by the Wilcoxon signed-rank test on the blocks, Holm-corrected: which pairs differ,
+// and each pair's entry of results.json.
+void wilcoxonPairs(const Study& s, const std::vector<std::vector<double>>& blocks, RankTests& t) {
+  const std::size_t nk = s.models.size();
   t.pHolm.assign(nk, std::vector<Opt>(nk));
   t.different.assign(nk, std::vector<bool>(nk, false));
   std::vector<std::pair<std::size_t, std::size_t>> tested;
@@ -337,27 +335,45 @@ RankTests rankTests(const Study& s) {
     j["significant"] = bool(t.different[a][b]);
     t.wilcoxon.push_back(j);
   }
-  // Rank order (mean rank, then label) and the cliques: maximal runs of models no pair of which differs.
+}
+
+// Rank order (mean rank, then label) and the cliques: maximal runs of models no pair of which differs.
+void rankOrderAndCliques(RankTests& t, std::size_t nk) {
   t.rankOrder.resize(nk);
   std::iota(t.rankOrder.begin(), t.rankOrder.end(), 0);
-  if (t.friedman) {
-    const auto& mr = t.friedman->meanRanks;
-    std::stable_sort(t.rankOrder.begin(), t.rankOrder.end(), [&](std::size_t a, std::size_t b) { return mr[a] < mr[b]; });
-    int lastEnd = -1;
-    for (int i = 0; i < int(nk); ++i) {
-      int j = i;
-      while (j + 1 < int(nk)) {
-        bool ok = true;
-        for (int k = i; k <= j && ok; ++k) ok = !t.different[t.rankOrder[std::size_t(k)]][t.rankOrder[std::size_t(j + 1)]];
-        if (!ok) break;
-        ++j;
-      }
-      if (j > i && j > lastEnd) {
-        t.cliques.emplace_back(i, j);
-        lastEnd = j;
-      }
+  if (!t.friedman) return;
+  const auto& mr = t.friedman->meanRanks;
+  std::stable_sort(t.rankOrder.begin(), t.rankOrder.end(), [&](std::size_t a, std::size_t b) { return mr[a] < mr[b]; });
+  int lastEnd = -1;
+  for (int i = 0; i < int(nk); ++i) {
+    int j = i;
+    while (j + 1 < int(nk)) {
+      bool ok = true;
+      for (int k = i; k <= j && ok; ++k) ok = !t.different[t.rankOrder[std::size_t(k)]][t.rankOrder[std::size_t(j + 1)]];
+      if (!ok) break;
+      ++j;
+    }
+    if (j > i && j > lastEnd) {
+      t.cliques.emplace_back(i, j);
+      lastEnd = j;
     }
   }
+}
+
+RankTests rankTests(const Study& s) {
+  RankTests t;
+  const std::size_t nk = s.models.size();
+  const std::vector<std::vector<double>> blocks = completeBlocks(s, t.complete);
+  t.friedman = friedman(blocks);
+  if (nk < 2)
+    t.friedmanReason = "fewer than 2 models";
+  else if (blocks.size() < kTestMinMaterials)
+    t.friedmanReason = tooFewForTest(blocks.size());
+  else if (!t.friedman)
+    t.friedmanReason = "every material ties every model";
+  t.friedmanTested = t.friedman && blocks.size() >= kTestMinMaterials;
+  wilcoxonPairs(s, blocks, t);
+  rankOrderAndCliques(t, nk);
   return t;
 }
 
