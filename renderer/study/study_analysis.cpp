@@ -963,6 +963,39 @@ std::string summaryMarkdown(const std::string& summary, const std::string& light
   return md;
 }
 
+// The analysis's files in `folder`, in this order: the rows, each figure (and its PNG when rsvg-convert is
+// installed), results.json with the figures' list, the LaTeX, the study file and summary.md.
+AnalysisResult writeAnalysis(const std::filesystem::path& folder, const Study& s, const std::string& summary, Json& results,
+                             const std::vector<StudyFigure>& figures, const LightingAnalysis& lighting, const AnalysisOptions& options) {
+  AnalysisResult result;
+  result.summary = summary;
+  auto write = [&](const std::string& name, const std::string& contents) {
+    writeFileAtomically(folder / name, contents);
+    result.files.emplace_back(name);
+  };
+  const auto dump = [](const Json& j) { return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; };
+  write("rows.csv", rowsCsv(s.all));
+  write("rows.json", dump(rowsJson(s.all)));
+  Json figureList = Json::array();
+  const auto rsvg = plot::findRsvgConvert();
+  for (const StudyFigure& f : figures) {
+    write(f.name + ".svg", f.svg);
+    if (rsvg) {
+      plot::svgToPng(*rsvg, folder / (f.name + ".svg"), folder / (f.name + ".png"), 1.5);
+      result.files.emplace_back(f.name + ".png");
+    }
+    figureList.push_back({{"name", f.name}, {"svg", f.name + ".svg"}, {"png", rsvg ? Json(f.name + ".png") : Json(nullptr)}, {"caption", f.caption}});
+  }
+  results["figures"] = figureList;
+  write("results.json", dump(results));
+  write("models.tex", modelsTex(results));
+  write("lighting.tex", lighting.tex);
+  write("methods.tex", methodsTex(results));
+  // The study file as it was read: the settings of these results, beside them.
+  if (options.provenance && !options.provenance->studyText.empty()) write(kStudyFileCopy, options.provenance->studyText);
+  write("summary.md", summaryMarkdown(summary, lighting.markdown, figures, results, options));
+  return result;
+}
 }  // namespace
 
 double expectedAnalysisSeconds(int resamples, std::size_t materials, std::size_t models) {
@@ -1027,34 +1060,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
 
   step(6, "figures and files");
   const std::vector<StudyFigure> figures = studyFigures(s, t, options, series);
-  AnalysisResult result;
-  result.summary = summary;
-  auto write = [&](const std::string& name, const std::string& contents) {
-    writeFileAtomically(folder / name, contents);
-    result.files.emplace_back(name);
-  };
-  const auto dump = [](const Json& j) { return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n"; };
-  write("rows.csv", rowsCsv(s.all));
-  write("rows.json", dump(rowsJson(s.all)));
-  Json figureList = Json::array();
-  const auto rsvg = plot::findRsvgConvert();
-  for (const StudyFigure& f : figures) {
-    write(f.name + ".svg", f.svg);
-    if (rsvg) {
-      plot::svgToPng(*rsvg, folder / (f.name + ".svg"), folder / (f.name + ".png"), 1.5);
-      result.files.emplace_back(f.name + ".png");
-    }
-    figureList.push_back({{"name", f.name}, {"svg", f.name + ".svg"}, {"png", rsvg ? Json(f.name + ".png") : Json(nullptr)}, {"caption", f.caption}});
-  }
-  results["figures"] = figureList;
-  write("results.json", dump(results));
-  write("models.tex", modelsTex(results));
-  write("lighting.tex", lighting.tex);
-  write("methods.tex", methodsTex(results));
-  // The study file as it was read: the settings of these results, beside them.
-  if (options.provenance && !options.provenance->studyText.empty()) write(kStudyFileCopy, options.provenance->studyText);
-  write("summary.md", summaryMarkdown(summary, lighting.markdown, figures, results, options));
-  return result;
+  return writeAnalysis(folder, s, summary, results, figures, lighting, options);
 }
 
 }  // namespace glossy::study
