@@ -53,12 +53,12 @@ std::string fitSourceText(const Json& f, const Markup& m) {
   return std::string("the fit published by L") + (m.text == plain ? "ö" : "\\\"{o}") + "w et al. (2012)";
 }
 
-std::string paragraph(const Json& r, const Markup& m) {
+// What was rendered: the materials by database and kind of measured panel, the lightings and scenes, the
+// sheets, and the glossy that rendered them.
+std::string renderingText(const Json& r, const Json* p, const Markup& m) {
   const auto t = m.text;
   std::string out;
   const Json& counts = r["counts"];
-  const Json* p = r.contains("provenance") && r["provenance"].contains("settings") ? &r["provenance"] : nullptr;
-  // What was rendered.
   std::vector<std::string> dbs;
   if (p) {
     for (const Json& d : (*p)["databases"]) {
@@ -95,7 +95,12 @@ std::string paragraph(const Json& r, const Markup& m) {
   }
   out += ", " + plural(std::size_t(counts["sheets"].get<int>()), "sheet", "sheets") + " in all, with glossy " + t(version) +
          " (commit " + t(commit) + "), a physically based path tracer on Embree. ";
-  // The fits.
+  return out;
+}
+
+// The fits: each model's, by who made them.
+std::string fitsText(const Json& r, const Markup& m) {
+  const auto t = m.text;
   std::vector<std::string> models;
   for (const Json& model : r["fits"]) {
     std::vector<std::string> fits;
@@ -106,22 +111,27 @@ std::string paragraph(const Json& r, const Markup& m) {
     }
     models.push_back(t(model["model"].get<std::string>()) + " (" + listed(fits) + ")");
   }
-  out += "Each sheet shows the measured material beside " + plural(models.size(), "fitted model", "fitted models") + ": " + listed(models) + ". ";
-  if (p) {
-    const Json& s = (*p)["settings"];
-    out += "Each panel is " + std::to_string(s["width"].get<int>()) + " " + m.times + " " + std::to_string(s["height"].get<int>()) + " pixels";
-    if (s["targetError"].get<double>() > 0.0)
-      out += ", rendered until every model's " + std::string(m.rstar) + " interval has a half-width of at most " + number(s["targetError"].get<double>()) +
-             " or " + std::to_string(s["spp"].get<int>()) + " samples per pixel";
-    else if (s["time"].get<double>() > 0.0)
-      out += ", rendered for " + number(s["time"].get<double>()) + " s per panel (at most " + std::to_string(s["spp"].get<int>()) + " samples per pixel)";
-    else
-      out += " at " + std::to_string(s["spp"].get<int>()) + " samples per pixel";
-    out += ", with paths of up to " + std::to_string(s["maxDepth"].get<int>()) + " bounces, " + std::to_string(s["lightSamples"].get<int>()) +
-           " light samples at the first vertex, shared by every panel, and seed " + std::to_string(s["seed"].get<std::uint64_t>()) + ". ";
-  }
-  // The statistics.
-  out += "A model's image error is the noise-free relative RMSE " + std::string(m.rstar) +
+  return "Each sheet shows the measured material beside " + plural(models.size(), "fitted model", "fitted models") + ": " + listed(models) + ". ";
+}
+
+// The panels: their size, how long they were rendered, their paths and seed (`s`: provenance.settings).
+std::string panelsText(const Json& s, const Markup& m) {
+  std::string out = "Each panel is " + std::to_string(s["width"].get<int>()) + " " + m.times + " " + std::to_string(s["height"].get<int>()) + " pixels";
+  if (s["targetError"].get<double>() > 0.0)
+    out += ", rendered until every model's " + std::string(m.rstar) + " interval has a half-width of at most " + number(s["targetError"].get<double>()) +
+           " or " + std::to_string(s["spp"].get<int>()) + " samples per pixel";
+  else if (s["time"].get<double>() > 0.0)
+    out += ", rendered for " + number(s["time"].get<double>()) + " s per panel (at most " + std::to_string(s["spp"].get<int>()) + " samples per pixel)";
+  else
+    out += " at " + std::to_string(s["spp"].get<int>()) + " samples per pixel";
+  out += ", with paths of up to " + std::to_string(s["maxDepth"].get<int>()) + " bounces, " + std::to_string(s["lightSamples"].get<int>()) +
+         " light samples at the first vertex, shared by every panel, and seed " + std::to_string(s["seed"].get<std::uint64_t>()) + ". ";
+  return out;
+}
+
+// The statistics: r*, materials as the unit, the rank tests, the effect size and the intervals.
+std::string statisticsText(const Json& r, const Markup& m) {
+  return "A model's image error is the noise-free relative RMSE " + std::string(m.rstar) +
          " = ||P - M|| / ||M|| of its panel P against the measured panel M, estimated with the render noise taken out; lower is better. "
          "Materials are the unit of analysis: a model's " + m.rstar + " on a material is its mean over the material's sheets. "
          "The models are ranked by " + m.rstar + " on each material, and their mean ranks compared with the Friedman test and its "
@@ -133,7 +143,11 @@ std::string paragraph(const Json& r, const Markup& m) {
          " is below Y's (a tie counts one half). Every interval is a 95 " + m.pct + " percentile bootstrap interval over materials (" +
          std::to_string(r["resamples"].get<int>()) + " resamples, each drawing materials with replacement with all their sheets; seed " +
          std::to_string(r["seed"].get<std::uint64_t>()) + "): it reflects the sampling of materials, not the render noise within a sheet.";
-  return out;
+}
+
+std::string paragraph(const Json& r, const Markup& m) {
+  const Json* p = r.contains("provenance") && r["provenance"].contains("settings") ? &r["provenance"] : nullptr;
+  return renderingText(r, p, m) + fitsText(r, m) + (p ? panelsText((*p)["settings"], m) : std::string()) + statisticsText(r, m);
 }
 
 }  // namespace
