@@ -258,6 +258,23 @@ Agreement agreement(const Data& d, int resamples, std::uint64_t seed) {
   return a;
 }
 
+Json kendallWJson(const Data& d, const Agreement& a) {
+  Json w;
+  w["what"] = "Kendall's W of rankings of the models by r* under the lightings (1: every lighting ranks them alike, 0: no agreement)";
+  Json wm = intervalJson(a.mean);
+  wm["what"] = "each material's W (raters: its lightings, r* averaged over scenes; items: the models under all of them), mean over materials";
+  wm["materials"] = a.defined;
+  wm["materialsUndefined"] = int(d.materials.size()) - a.defined;
+  wm["median"] = num(a.median);
+  w["meanOverMaterials"] = wm;
+  Json wr = intervalJson(a.ofMeanRanks);
+  wr["what"] = "W of the lightings' mean ranks of the models, over the materials with every model under every lighting";
+  wr["materials"] = int(a.everywhere.size());
+  w["ofMeanRanks"] = wr;
+  if (!a.reason.empty()) w["reason"] = a.reason;
+  return w;
+}
+
 // ---- verdicts that change with the lighting ---------------------------------------------------------------
 
 struct SheetVerdict {
@@ -329,6 +346,37 @@ Changes changes(const Data& d) {
   return c;
 }
 
+// One change list: the `changed` materials with each sheet's verdict (`verdicts`) or lowest-r* model, out of
+// the `compared` materials.
+Json changesJson(const Changes& c, const std::vector<std::string>& changed, int compared, bool verdicts, const char* what) {
+  Json x;
+  x["what"] = what;
+  x["materials"] = compared;
+  x["changed"] = int(changed.size());
+  Json list = Json::array();
+  for (const std::string& m : changed) {
+    Json e;
+    e["material"] = m;
+    Json sheets = Json::array();
+    for (const SheetVerdict& v : c.sheets.at(m)) {
+      Json s;
+      s["scene"] = v.scene;
+      s["lighting"] = v.lighting;
+      if (verdicts) {
+        s["verdict"] = v.named.empty() ? "none" : (v.closest ? "closest" : "tie");
+        s["models"] = v.named;
+      } else {
+        s["lowest"] = v.lowest;
+      }
+      sheets.push_back(s);
+    }
+    e["sheets"] = sheets;
+    list.push_back(e);
+  }
+  x["list"] = list;
+  return x;
+}
+
 // ---- text --------------------------------------------------------------------------------------------------
 
 // Text as LaTeX shows it; latexEscape writes the "≥" of the small-sample reasons as math.
@@ -374,76 +422,29 @@ std::string changedList(const Changes& c, const std::vector<std::string>& materi
   });
 }
 
-}  // namespace
+// ---- results.json's object, the summary's paragraph and section, lighting.tex -----------------------------
 
-LightingAnalysis analyseLighting(const std::vector<const StudyRow*>& rows, const std::vector<std::string>& models,
-                                 int resamples, std::uint64_t seed) {
-  const Data d = readData(rows, models);
-  LightingAnalysis out;
-  std::vector<LightingTable> tables;
-  for (std::size_t l = 0; l < d.lightings.size(); ++l) tables.push_back(lightingTable(d, l, resamples, seed));
-  const Agreement a = agreement(d, resamples, seed);
-  const Changes c = changes(d);
-
-  // results.json
-  Json& j = out.json;
+// results.json's "lighting".
+Json resultsJson(const Data& d, const std::vector<LightingTable>& tables, const Agreement& a, const Changes& c) {
+  Json j;
   j["lightings"] = d.lightings;
   j["materials"] = int(d.materials.size());
   Json per = Json::array();
   for (const LightingTable& t : tables) per.push_back(tableJson(d, t));
   j["perLighting"] = per;
-  Json w;
-  w["what"] = "Kendall's W of rankings of the models by r* under the lightings (1: every lighting ranks them alike, 0: no agreement)";
-  Json wm = intervalJson(a.mean);
-  wm["what"] = "each material's W (raters: its lightings, r* averaged over scenes; items: the models under all of them), mean over materials";
-  wm["materials"] = a.defined;
-  wm["materialsUndefined"] = int(d.materials.size()) - a.defined;
-  wm["median"] = num(a.median);
-  w["meanOverMaterials"] = wm;
-  Json wr = intervalJson(a.ofMeanRanks);
-  wr["what"] = "W of the lightings' mean ranks of the models, over the materials with every model under every lighting";
-  wr["materials"] = int(a.everywhere.size());
-  w["ofMeanRanks"] = wr;
-  if (!a.reason.empty()) w["reason"] = a.reason;
-  j["kendallW"] = w;
-  const auto changeJson = [&](const std::vector<std::string>& changed, int compared, bool verdicts, const char* what) {
-    Json x;
-    x["what"] = what;
-    x["materials"] = compared;
-    x["changed"] = int(changed.size());
-    Json list = Json::array();
-    for (const std::string& m : changed) {
-      Json e;
-      e["material"] = m;
-      Json sheets = Json::array();
-      for (const SheetVerdict& v : c.sheets.at(m)) {
-        Json s;
-        s["scene"] = v.scene;
-        s["lighting"] = v.lighting;
-        if (verdicts) {
-          s["verdict"] = v.named.empty() ? "none" : (v.closest ? "closest" : "tie");
-          s["models"] = v.named;
-        } else {
-          s["lowest"] = v.lowest;
-        }
-        sheets.push_back(s);
-      }
-      e["sheets"] = sheets;
-      list.push_back(e);
-    }
-    x["list"] = list;
-    return x;
-  };
-  j["verdictChanges"] = changeJson(c.verdictChanged, c.withVerdicts, true,
-                                   "materials two of whose lightings (in one scene) have verdicts naming no model in common; of the "
-                                   "materials with a verdict under two lightings or more");
-  j["lowestRrmseChanges"] = changeJson(c.lowestChanged, c.withSheets, false,
-                                       "materials whose lowest-r* model differs between two lightings (in one scene), render noise "
-                                       "not considered");
+  j["kendallW"] = kendallWJson(d, a);
+  j["verdictChanges"] = changesJson(c, c.verdictChanged, c.withVerdicts, true,
+                                    "materials two of whose lightings (in one scene) have verdicts naming no model in common; of the "
+                                    "materials with a verdict under two lightings or more");
+  j["lowestRrmseChanges"] = changesJson(c, c.lowestChanged, c.withSheets, false,
+                                        "materials whose lowest-r* model differs between two lightings (in one scene), render noise "
+                                        "not considered");
+  return j;
+}
 
-  // The printed summary's paragraph.
-  std::string& h = out.headline;
-  h = "Lighting (" + std::to_string(d.lightings.size()) + "): ";
+// The printed summary's paragraph.
+std::string headline(const Data& d, const std::vector<LightingTable>& tables, const Agreement& a, const Changes& c) {
+  std::string h = "Lighting (" + std::to_string(d.lightings.size()) + "): ";
   for (std::size_t l = 0; l < tables.size(); ++l) {
     const LightingTable& t = tables[l];
     h += (l ? "; " : "") + t.lighting + ": best-ranked " + (t.top ? d.models[t.top->first] : std::string("none")) + ", " +
@@ -456,12 +457,14 @@ LightingAnalysis analyseLighting(const std::vector<const StudyRow*>& rows, const
          " materials with a verdict under two lightings (lowest r* changes: " + std::to_string(c.lowestChanged.size()) + " of " +
          std::to_string(c.withSheets) + ").\n";
   }
+  return h;
+}
 
-  // summary.md's section.
-  std::string& md = out.markdown;
-  md = "## Lighting\n\nEach lighting on its own, over the materials with every model under it (a material's r* under a lighting "
-       "is the mean over its scenes): the models' mean rank of r* (1 = closest), their median r* with its 95 % bootstrap interval "
-       "over materials, and the sheets whose verdict names them closest or tied.\n";
+// summary.md's section.
+std::string markdownSection(const Data& d, const std::vector<LightingTable>& tables, const Agreement& a, const Changes& c) {
+  std::string md = "## Lighting\n\nEach lighting on its own, over the materials with every model under it (a material's r* under a lighting "
+                   "is the mean over its scenes): the models' mean rank of r* (1 = closest), their median r* with its 95 % bootstrap interval "
+                   "over materials, and the sheets whose verdict names them closest or tied.\n";
   for (const LightingTable& t : tables) {
     md += "\n### " + t.lighting + ": " + materialsText(t.complete.size()) + ", " + std::to_string(t.sheets) + " sheets\n\n";
     md += "| model | mean rank | median r* [95 %] | closest | tied |\n|---|---|---|---|---|\n";
@@ -486,9 +489,11 @@ LightingAnalysis analyseLighting(const std::vector<const StudyRow*>& rows, const
           std::to_string(c.lowestChanged.size()) + " of " + materialsText(std::size_t(c.withSheets)) +
           (c.lowestChanged.empty() ? "" : ": " + changedList(c, c.lowestChanged, false)) + ".\n";
   }
+  return md;
+}
 
-  // lighting.tex: plain LaTeX (no package), so it compiles in any paper.
-  std::string& tex = out.tex;
+// lighting.tex: plain LaTeX (no package), so it compiles in any paper.
+std::string lightingTex(const Data& d, const std::vector<LightingTable>& tables, const Agreement& a, const Changes& c) {
   bool intervalAbsent = false;
   for (const LightingTable& t : tables)
     for (const Interval& iv : t.median) intervalAbsent |= iv.estimate && !iv.lo;
@@ -502,10 +507,10 @@ LightingAnalysis analyseLighting(const std::vector<const StudyRow*>& rows, const
                "; the closest model changes with the lighting for " + std::to_string(c.verdictChanged.size()) + " of " +
                materialsText(std::size_t(c.withVerdicts)) + " with a verdict under two lightings or more.";
   }
-  tex = "% glossy study: the models under each lighting (plain LaTeX, no package needed).\n"
-        "\\begin{table}[htbp]\n\\centering\n\\caption{" + caption + "}\n\\label{tab:glossy-study-lighting}\n"
-        "\\begin{tabular}{llrlr}\n\\hline\n"
-        "Lighting & Model & Mean rank & Median $r^*$ [95\\,\\% CI] & Closest \\\\\n\\hline\n";
+  std::string tex = "% glossy study: the models under each lighting (plain LaTeX, no package needed).\n"
+                    "\\begin{table}[htbp]\n\\centering\n\\caption{" + caption + "}\n\\label{tab:glossy-study-lighting}\n"
+                    "\\begin{tabular}{llrlr}\n\\hline\n"
+                    "Lighting & Model & Mean rank & Median $r^*$ [95\\,\\% CI] & Closest \\\\\n\\hline\n";
   std::string testLines;
   for (const LightingTable& t : tables) {
     for (std::size_t k = 0; k < d.models.size(); ++k)
@@ -523,7 +528,19 @@ LightingAnalysis analyseLighting(const std::vector<const StudyRow*>& rows, const
   }
   // The tests below the table, as paragraphs: their reasons may be longer than a column can hold.
   tex += "\\end{tabular}\n\\par\\smallskip\n{\\footnotesize\n" + testLines + "}\n\\end{table}\n";
-  return out;
+  return tex;
+}
+
+}  // namespace
+
+LightingAnalysis analyseLighting(const std::vector<const StudyRow*>& rows, const std::vector<std::string>& models,
+                                 int resamples, std::uint64_t seed) {
+  const Data d = readData(rows, models);
+  std::vector<LightingTable> tables;
+  for (std::size_t l = 0; l < d.lightings.size(); ++l) tables.push_back(lightingTable(d, l, resamples, seed));
+  const Agreement a = agreement(d, resamples, seed);
+  const Changes c = changes(d);
+  return {resultsJson(d, tables, a, c), headline(d, tables, a, c), markdownSection(d, tables, a, c), lightingTex(d, tables, a, c)};
 }
 
 }  // namespace glossy::study
