@@ -303,6 +303,169 @@ template <class Variance> Interval scoreInterval(double r, double t, double step
 // Blocks of kBlock × kBlock pixels, over which the variance estimates are summed before they are clamped.
 constexpr size_t kBlock = 16;
 
+// The analytic panels that have images, in order: series 1 + f is panel fitted[f]. Throws where one's
+// replicate count differs from the measured panel's or an image's size from the mask's.
+std::vector<size_t> fittedPanels(const std::vector<std::vector<RgbImage>>& panels, const std::vector<RgbImage>& measured,
+                                 const std::vector<char>& mask) {
+  const int k = int(measured.size());
+  const auto checkSize = [&](const RgbImage& image) {
+    if (image.pixels.size() != 3 * mask.size())
+      throw std::invalid_argument("compareToMeasured: an image's size differs from the mask's");
+  };
+  std::vector<size_t> fitted;
+  for (size_t p = 0; p < panels.size(); ++p) {
+    if (panels[p].empty()) continue;
+    if (int(panels[p].size()) != k)
+      throw std::invalid_argument("compareToMeasured: panel " + std::to_string(p) + " has " +
+                                  std::to_string(panels[p].size()) + " replicates, the measured panel " +
+                                  std::to_string(k));
+    for (const RgbImage& image : panels[p]) checkSize(image);
+    fitted.push_back(p);
+  }
+  for (const RgbImage& image : measured) checkSize(image);
+  return fitted;
+}
+
+// What compareToMeasured compares: the measured panel's replicates and those of the panels in `fitted`.
+struct Inputs {
+  const std::vector<std::vector<RgbImage>>& panels;
+  const std::vector<RgbImage>& measured;
+  const std::vector<char>& mask;
+  const std::vector<size_t>& fitted;
+};
+
+// Each compared pixel's replicates into `pixel`, then f(i); the compared and skipped pixels counted into
+// `counts` when given (on one pass only: every pass sees the same pixels).
+template <class F> void forEachPixel(const Inputs& in, PixelReplicates& pixel, Comparison* counts, F&& f) {
+  const int k = int(in.measured.size());
+  const auto rgb = [](const RgbImage& image, size_t i) {
+    return Rgb3{image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]};
+  };
+  const auto lum = [](const Rgb3& v) { return luminance(Rgb(v[0], v[1], v[2])); };
+  for (size_t i = 0; i < in.mask.size(); ++i) {
+    if (!in.mask[i]) continue;
+    for (int j = 0; j < k; ++j) {
+      const Rgb3 m = rgb(in.measured[j], i);
+      pixel.x(0, j) = m;
+      pixel.l(0, j) = lum(m);
+      for (size_t f = 0; f < in.fitted.size(); ++f) {
+        const Rgb3 p = rgb(in.panels[in.fitted[f]][j], i);
+        pixel.x(1 + f, j) = {p[0] - m[0], p[1] - m[1], p[2] - m[2]};
+        pixel.l(1 + f, j) = lum(p);
+      }
+    }
+    // Finite floats give finite differences, products and sums in double: checking the inputs suffices.
+    if (!pixel.finite()) {
+      if (counts) ++counts->skippedPixels;
+      continue;
+    }
+    if (counts) ++counts->pixels;
+    f(i);
+  }
+}
+
+// The second pass (K ≥ 4, B > 0): the variances of the intervals and the verdict into `totals`.
+void addBlockVariances(const Inputs& in, PixelReplicates& pixel, Totals& totals) {
+  // The variances are summed per block of kBlock² pixels, each block's clamped at 0. The per-pixel
+  // estimate is unbiased but not always positive semi-definite: one bright outlier among a pixel's
+  // replicates can make a form hugely negative and cancel the spread of every other pixel (seen as
+  // zero-width intervals). A block's sum averages out the ordinary sign flips of noise-dominated pixels,
+  // which a per-pixel clamp would turn into a large overstatement, and confines an outlier to its block.
+  const size_t series = totals.series;
+  const int width = in.measured.front().width, blocksX = (width + kBlock - 1) / kBlock;
+  const size_t height = in.mask.size() / size_t(std::max(width, 1)), blocks = size_t(blocksX) * ((height + kBlock - 1) / kBlock);
+  std::vector<double> ratioVar(blocks * series), diffVar(blocks * series * series);
+  forEachPixel(in, pixel, nullptr, [&](size_t i) {
+    const size_t block = (i / size_t(width)) / kBlock * size_t(blocksX) + (i % size_t(width)) / kBlock;
+    pixel.addVariances(totals, &ratioVar[block * series], &diffVar[block * series * series]);
+  });
+  for (size_t b = 0; b < blocks; ++b) {
+    for (size_t s = 0; s < series; ++s) totals.ratioVar[s] += std::max(0.0, ratioVar[b * series + s]);
+    for (size_t e = 0; e < series * series; ++e) totals.diffVar[e] += std::max(0.0, diffVar[b * series * series + e]);
+  }
+}
+
+// Both passes over the compared pixels; the first counts them into `out`.
+Totals sumOverPixels(const Inputs& in, Comparison& out) {
+  const int k = int(in.measured.size());
+  Totals totals(1 + in.fitted.size());
+  PixelReplicates pixel(totals.series, k);
+  forEachPixel(in, pixel, &out, [&](size_t) { pixel.addTo(totals); });
+  if (k >= 4 && totals.u[0] > 0.0) addBlockVariances(in, pixel, totals);
+  return totals;
+}
+
+// The r* interval where few pixels carry A (ν < kFewDof): the delta method's variance, taken at this
+// seed's own difference, shrinks with it. Test each ρ with the variance A would have if the true squared
+// difference were ρ B: the difference terms scaled by c² = ρ B / Σ|d̄|² (the seed's differences give the
+// pixels' shares and directions, ρ their size); the noise-only terms, which may come out negative, clamped
+// at 0.
+Interval invertedTestInterval(const Totals& totals, size_t s, int k, double ratio, double tq, double halfRatio) {
+  const double b = totals.u[0];
+  const double kk = k, sd = totals.squared[s];
+  const auto variance = [&](double rho) {
+    const double c = sd > 0.0 ? std::sqrt(rho * b / sd) : 0.0;
+    const double linear = c * c * totals.projVar[s] - 2.0 * rho * c * totals.projCov[s] + rho * rho * totals.projVar[0];
+    const double noise = totals.trace[s] - 2.0 * rho * totals.traceCross[s] + rho * rho * totals.trace[0];
+    return (4.0 / kk * linear + std::max(0.0, 2.0 / (kk * (kk - 1.0)) * noise)) / (b * b);
+  };
+  // Where B's own variance is as large as (B / t)² (a highlight seen in one replicate of the measured
+  // panel) no ρ above R is rejected: the interval then ends at four times the noisy figure's square
+  // (twice the noisy r), finite, since studies and merged tables take only finite bounds.
+  const double cap = 4.0 * std::max(ratio + halfRatio, totals.squared[s] / totals.squared[0]);
+  const Interval squared = scoreInterval(ratio, tq, halfRatio, cap, variance);
+  return {std::sqrt(squared.lo), std::sqrt(squared.hi)};
+}
+
+// Panel series s's r* interval and its degrees of freedom, R = A / B being `ratio` (K ≥ 4).
+void setRelativeRmseCi(PanelFigures& fig, const Totals& totals, size_t s, int k, double ratio, double confidence) {
+  // Welch–Satterthwaite: a sum of per-pixel variances, each from K − 1 degrees of freedom, has
+  // ν = (K − 1) (Σ v)² / Σ v² of them, few when a handful of pixels carry the variance (a sharp highlight
+  // a few pixels wide, a rare bright path): the interval then takes Student's t for ν, not the normal z.
+  fig.relativeRmseDof = totals.jackSquared[s] > 0.0 ? (k - 1.0) * totals.jack[s] * totals.jack[s] / totals.jackSquared[s]
+                                                    : std::numeric_limits<double>::infinity();
+  const double tq = studentQuantile(confidence, fig.relativeRmseDof < kUnsteadyDof ? k - 1.0 : fig.relativeRmseDof);
+  const double halfRatio = tq * std::sqrt(totals.ratioVar[s]);
+  fig.relativeRmseCi = {std::sqrt(std::max(0.0, ratio - halfRatio)), std::sqrt(std::max(0.0, ratio + halfRatio))};
+  if (fig.relativeRmseDof < kFewDof) fig.relativeRmseCi = invertedTestInterval(totals, s, k, ratio, tq, halfRatio);
+  // Every ρ ≥ 0 rejected: A came out further below 0 than its estimated noise allows, so that noise is
+  // underestimated (a bright path in one replicate of one pixel), and no value is known to be excluded.
+  // Up to twice the noisy figure, as where nothing above R is rejected, rather than the empty [0, 0].
+  if (!(fig.relativeRmseCi.hi > 0.0)) fig.relativeRmseCi = {0.0, 2.0 * fig.noisyRelativeRmse};
+}
+
+// Panel series s's luminance ratio interval, by the delta method on Σ lum(p̄) / Σ lum(m̄) (K ≥ 4).
+Interval luminanceRatioCi(const PanelFigures& fig, const Totals& totals, size_t s, int k, double confidence) {
+  const double l = fig.luminanceRatio, lumTotal = totals.lum[0];
+  const double varL = (totals.lumVar[s] - 2.0 * l * totals.lumCov[s] + l * l * totals.lumVar[0]) / (lumTotal * lumTotal);
+  // Student's t for the luminance sums too, with their own Welch–Satterthwaite degrees of freedom (K − 1
+  // below kUnsteadyDof): a highlight's few pixels carry their variance as they carry A's.
+  const double lumDof = totals.lumRatioVarSquared[s] > 0.0 ? (k - 1.0) * totals.lumRatioVar[s] * totals.lumRatioVar[s] /
+                                                                 totals.lumRatioVarSquared[s]
+                                                           : std::numeric_limits<double>::infinity();
+  const double halfL = studentQuantile(confidence, lumDof < kUnsteadyDof ? k - 1.0 : lumDof) * std::sqrt(std::max(0.0, varL));
+  return {l - halfL, l + halfL};
+}
+
+// Panel series s's figures, as far as K allows, the measured panel having signal over the mask.
+void setFigures(PanelFigures& fig, const Totals& totals, size_t s, int k, double confidence) {
+  const double b = totals.u[0];
+  fig.noisyRelativeRmse = std::sqrt(totals.squared[s] / totals.squared[0]);
+  fig.luminanceRatio = totals.lum[s] / totals.lum[0];
+
+  fig.available = k >= 2 && b > 0.0;
+  if (!fig.available) return;
+  const double a = totals.u[s], ratio = a / b;
+  fig.squaredError = a;
+  fig.clamped = a < 0.0;
+  fig.relativeRmse = std::sqrt(std::max(0.0, ratio));
+
+  fig.hasCi = k >= 4;
+  if (!fig.hasCi) return;
+  setRelativeRmseCi(fig, totals, s, k, ratio, confidence);
+  fig.luminanceRatioCi = luminanceRatioCi(fig, totals, s, k, confidence);
+}
+
 std::string percent(double confidence) {
   std::ostringstream s;
   s << confidence * 100.0 << " %";
@@ -362,134 +525,17 @@ Comparison compareToMeasured(const std::vector<std::vector<RgbImage>>& panels, c
     return out;
   }
   const int k = int(measured.size());
-  const auto checkSize = [&](const RgbImage& image) {
-    if (image.pixels.size() != 3 * mask.size())
-      throw std::invalid_argument("compareToMeasured: an image's size differs from the mask's");
-  };
-  std::vector<size_t> fitted;
-  for (size_t p = 0; p < panels.size(); ++p) {
-    if (panels[p].empty()) continue;
-    if (int(panels[p].size()) != k)
-      throw std::invalid_argument("compareToMeasured: panel " + std::to_string(p) + " has " +
-                                  std::to_string(panels[p].size()) + " replicates, the measured panel " +
-                                  std::to_string(k));
-    for (const RgbImage& image : panels[p]) checkSize(image);
-    fitted.push_back(p);
-  }
-  for (const RgbImage& image : measured) checkSize(image);
+  const std::vector<size_t> fitted = fittedPanels(panels, measured, mask);
   out.replicates = k;
 
-  const size_t series = 1 + fitted.size();
-  Totals totals(series);
-  PixelReplicates pixel(series, k);
-  const auto rgb = [](const RgbImage& image, size_t i) {
-    return Rgb3{image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]};
-  };
-  const auto lum = [](const Rgb3& v) { return luminance(Rgb(v[0], v[1], v[2])); };
-  // Each compared pixel's replicates into `pixel`, then f(i); skipped pixels counted on the first pass.
-  const auto forEachPixel = [&](bool first, auto&& f) {
-    for (size_t i = 0; i < mask.size(); ++i) {
-      if (!mask[i]) continue;
-      for (int j = 0; j < k; ++j) {
-        const Rgb3 m = rgb(measured[j], i);
-        pixel.x(0, j) = m;
-        pixel.l(0, j) = lum(m);
-        for (size_t f = 0; f < fitted.size(); ++f) {
-          const Rgb3 p = rgb(panels[fitted[f]][j], i);
-          pixel.x(1 + f, j) = {p[0] - m[0], p[1] - m[1], p[2] - m[2]};
-          pixel.l(1 + f, j) = lum(p);
-        }
-      }
-      // Finite floats give finite differences, products and sums in double: checking the inputs suffices.
-      if (!pixel.finite()) {
-        if (first) ++out.skippedPixels;
-        continue;
-      }
-      if (first) ++out.pixels;
-      f(i);
-    }
-  };
-  forEachPixel(true, [&](size_t) { pixel.addTo(totals); });
-  if (k >= 4 && totals.u[0] > 0.0) {
-    // The variances are summed per block of kBlock² pixels, each block's clamped at 0. The per-pixel
-    // estimate is unbiased but not always positive semi-definite: one bright outlier among a pixel's
-    // replicates can make a form hugely negative and cancel the spread of every other pixel (seen as
-    // zero-width intervals). A block's sum averages out the ordinary sign flips of noise-dominated pixels,
-    // which a per-pixel clamp would turn into a large overstatement, and confines an outlier to its block.
-    const int width = measured.front().width, blocksX = (width + kBlock - 1) / kBlock;
-    const size_t height = mask.size() / size_t(std::max(width, 1)), blocks = size_t(blocksX) * ((height + kBlock - 1) / kBlock);
-    std::vector<double> ratioVar(blocks * series), diffVar(blocks * series * series);
-    forEachPixel(false, [&](size_t i) {
-      const size_t block = (i / size_t(width)) / kBlock * size_t(blocksX) + (i % size_t(width)) / kBlock;
-      pixel.addVariances(totals, &ratioVar[block * series], &diffVar[block * series * series]);
-    });
-    for (size_t b = 0; b < blocks; ++b) {
-      for (size_t s = 0; s < series; ++s) totals.ratioVar[s] += std::max(0.0, ratioVar[b * series + s]);
-      for (size_t e = 0; e < series * series; ++e) totals.diffVar[e] += std::max(0.0, diffVar[b * series * series + e]);
-    }
-  }
-
+  const Totals totals = sumOverPixels({panels, measured, mask, fitted}, out);
   const double z = twoSidedQuantile(confidence);
-  const double b = totals.u[0];
   const bool signal = out.pixels > 0 && totals.squared[0] > 0.0 && totals.lum[0] > 0.0;
-  out.measuredSquared = b;
+  out.measuredSquared = totals.u[0];
   for (size_t f = 0; f < fitted.size(); ++f) {
-    const size_t s = 1 + f;
     PanelFigures& fig = out.panels[fitted[f]];
     fig.compared = signal;
-    if (!fig.compared) continue;
-    fig.noisyRelativeRmse = std::sqrt(totals.squared[s] / totals.squared[0]);
-    fig.luminanceRatio = totals.lum[s] / totals.lum[0];
-
-    fig.available = k >= 2 && b > 0.0;
-    if (!fig.available) continue;
-    const double a = totals.u[s], ratio = a / b;
-    fig.squaredError = a;
-    fig.clamped = a < 0.0;
-    fig.relativeRmse = std::sqrt(std::max(0.0, ratio));
-
-    fig.hasCi = k >= 4;
-    if (!fig.hasCi) continue;
-    // Welch–Satterthwaite: a sum of per-pixel variances, each from K − 1 degrees of freedom, has
-    // ν = (K − 1) (Σ v)² / Σ v² of them, few when a handful of pixels carry the variance (a sharp highlight
-    // a few pixels wide, a rare bright path): the interval then takes Student's t for ν, not the normal z.
-    fig.relativeRmseDof = totals.jackSquared[s] > 0.0 ? (k - 1.0) * totals.jack[s] * totals.jack[s] / totals.jackSquared[s]
-                                                      : std::numeric_limits<double>::infinity();
-    const double tq = studentQuantile(confidence, fig.relativeRmseDof < kUnsteadyDof ? k - 1.0 : fig.relativeRmseDof);
-    const double halfRatio = tq * std::sqrt(totals.ratioVar[s]);
-    fig.relativeRmseCi = {std::sqrt(std::max(0.0, ratio - halfRatio)), std::sqrt(std::max(0.0, ratio + halfRatio))};
-    if (fig.relativeRmseDof < kFewDof) {
-      // Few pixels carry A: the delta method's variance, taken at this seed's own difference, shrinks
-      // with it. Test each ρ with the variance A would have if the true squared difference were ρ B: the
-      // difference terms scaled by c² = ρ B / Σ|d̄|² (the seed's differences give the pixels' shares and
-      // directions, ρ their size); the noise-only terms, which may come out negative, clamped at 0.
-      const double kk = k, sd = totals.squared[s];
-      const auto variance = [&](double rho) {
-        const double c = sd > 0.0 ? std::sqrt(rho * b / sd) : 0.0;
-        const double linear = c * c * totals.projVar[s] - 2.0 * rho * c * totals.projCov[s] + rho * rho * totals.projVar[0];
-        const double noise = totals.trace[s] - 2.0 * rho * totals.traceCross[s] + rho * rho * totals.trace[0];
-        return (4.0 / kk * linear + std::max(0.0, 2.0 / (kk * (kk - 1.0)) * noise)) / (b * b);
-      };
-      // Where B's own variance is as large as (B / t)² (a highlight seen in one replicate of the measured
-      // panel) no ρ above R is rejected: the interval then ends at four times the noisy figure's square
-      // (twice the noisy r), finite, since studies and merged tables take only finite bounds.
-      const double cap = 4.0 * std::max(ratio + halfRatio, totals.squared[s] / totals.squared[0]);
-      const Interval squared = scoreInterval(ratio, tq, halfRatio, cap, variance);
-      fig.relativeRmseCi = {std::sqrt(squared.lo), std::sqrt(squared.hi)};
-    }
-    // Every ρ ≥ 0 rejected: A came out further below 0 than its estimated noise allows, so that noise is
-    // underestimated (a bright path in one replicate of one pixel), and no value is known to be excluded.
-    // Up to twice the noisy figure, as where nothing above R is rejected, rather than the empty [0, 0].
-    if (!(fig.relativeRmseCi.hi > 0.0)) fig.relativeRmseCi = {0.0, 2.0 * fig.noisyRelativeRmse};
-    const double l = fig.luminanceRatio, lumTotal = totals.lum[0];
-    const double varL = (totals.lumVar[s] - 2.0 * l * totals.lumCov[s] + l * l * totals.lumVar[0]) / (lumTotal * lumTotal);
-    // Student's t for the luminance sums too, with their own Welch–Satterthwaite degrees of freedom (K − 1
-    // below kUnsteadyDof): a highlight's few pixels carry their variance as they carry A's.
-    const double lumDof = totals.lumRatioVarSquared[s] > 0.0 ? (k - 1.0) * totals.lumRatioVar[s] * totals.lumRatioVar[s] /
-                                                                   totals.lumRatioVarSquared[s]
-                                                             : std::numeric_limits<double>::infinity();
-    const double halfL = studentQuantile(confidence, lumDof < kUnsteadyDof ? k - 1.0 : lumDof) * std::sqrt(std::max(0.0, varL));
-    fig.luminanceRatioCi = {l - halfL, l + halfL};
+    if (fig.compared) setFigures(fig, totals, 1 + f, k, confidence);
   }
   out.verdict = decide(out, fitted, totals, z, confidence);
   return out;
