@@ -418,13 +418,19 @@ Interval invertedTestInterval(const Totals& totals, size_t s, int k, double rati
 }
 
 // Panel series s's r* interval and its degrees of freedom, R = A / B being `ratio` (K ≥ 4).
+// Welch–Satterthwaite: a sum of per-pixel variances, each from K − 1 degrees of freedom, has
+// ν = (K − 1) (Σ v)² / Σ v² of them, few when a handful of pixels carry the variance (a sharp highlight
+// a few pixels wide, a rare bright path): an interval then takes Student's t for ν, not the normal z.
+double welchDof(double sum, double sumSquared, int k) {
+  return sumSquared > 0.0 ? (k - 1.0) * sum * sum / sumSquared : std::numeric_limits<double>::infinity();
+}
+
+// Student's t for ν degrees of freedom; for K − 1 below kUnsteadyDof, where ν is as unsteady as the variance.
+double tQuantile(double confidence, double dof, int k) { return studentQuantile(confidence, dof < kUnsteadyDof ? k - 1.0 : dof); }
+
 void setRelativeRmseCi(PanelFigures& fig, const Totals& totals, size_t s, int k, double ratio, double confidence) {
-  // Welch–Satterthwaite: a sum of per-pixel variances, each from K − 1 degrees of freedom, has
-  // ν = (K − 1) (Σ v)² / Σ v² of them, few when a handful of pixels carry the variance (a sharp highlight
-  // a few pixels wide, a rare bright path): the interval then takes Student's t for ν, not the normal z.
-  fig.relativeRmseDof = totals.jackSquared[s] > 0.0 ? (k - 1.0) * totals.jack[s] * totals.jack[s] / totals.jackSquared[s]
-                                                    : std::numeric_limits<double>::infinity();
-  const double tq = studentQuantile(confidence, fig.relativeRmseDof < kUnsteadyDof ? k - 1.0 : fig.relativeRmseDof);
+  fig.relativeRmseDof = welchDof(totals.jack[s], totals.jackSquared[s], k);
+  const double tq = tQuantile(confidence, fig.relativeRmseDof, k);
   const double halfRatio = tq * std::sqrt(totals.ratioVar[s]);
   fig.relativeRmseCi = {std::sqrt(std::max(0.0, ratio - halfRatio)), std::sqrt(std::max(0.0, ratio + halfRatio))};
   if (fig.relativeRmseDof < kFewDof) fig.relativeRmseCi = invertedTestInterval(totals, s, k, ratio, tq, halfRatio);
@@ -438,12 +444,10 @@ void setRelativeRmseCi(PanelFigures& fig, const Totals& totals, size_t s, int k,
 Interval luminanceRatioCi(const PanelFigures& fig, const Totals& totals, size_t s, int k, double confidence) {
   const double l = fig.luminanceRatio, lumTotal = totals.lum[0];
   const double varL = (totals.lumVar[s] - 2.0 * l * totals.lumCov[s] + l * l * totals.lumVar[0]) / (lumTotal * lumTotal);
-  // Student's t for the luminance sums too, with their own Welch–Satterthwaite degrees of freedom (K − 1
-  // below kUnsteadyDof): a highlight's few pixels carry their variance as they carry A's.
-  const double lumDof = totals.lumRatioVarSquared[s] > 0.0 ? (k - 1.0) * totals.lumRatioVar[s] * totals.lumRatioVar[s] /
-                                                                 totals.lumRatioVarSquared[s]
-                                                           : std::numeric_limits<double>::infinity();
-  const double halfL = studentQuantile(confidence, lumDof < kUnsteadyDof ? k - 1.0 : lumDof) * std::sqrt(std::max(0.0, varL));
+  // Student's t for the luminance sums too, with their own degrees of freedom: a highlight's few pixels
+  // carry their variance as they carry A's.
+  const double lumDof = welchDof(totals.lumRatioVar[s], totals.lumRatioVarSquared[s], k);
+  const double halfL = tQuantile(confidence, lumDof, k) * std::sqrt(std::max(0.0, varL));
   return {l - halfL, l + halfL};
 }
 
