@@ -379,6 +379,50 @@ TEST(StudyAnalysis, RowsWithoutAnImageErrorAreSkippedAndCounted) {
   EXPECT_EQ(test::readCsv(dir / "rows.csv").size(), 96u);  // still listed, with the figure empty
 }
 
+// The sheets' render noise, summarised from the rows' r* intervals: median and 90th percentile of the
+// half-widths (numpy's default quantile) and the rows whose noise is as large as r*, in results.json, the
+// summary and the methods paragraph. Rows without an interval do not count.
+TEST(StudyAnalysis, RenderNoiseIsSummarisedFromTheRowsIntervals) {
+  TempDir dir;
+  auto rows = syntheticStudy();  // 96 rows
+  std::vector<double> half;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    StudyRow& r = rows[i];
+    if (i % 8 == 7) {  // 12 rows without an interval
+      r.rrmseLo.reset();
+      r.rrmseHi.reset();
+      continue;
+    }
+    const double h = 0.001 * double(i + 1);
+    r.rrmseLo = std::max(0.0, *r.rrmse - h);
+    r.rrmseHi = *r.rrmse + h;
+    half.push_back(0.5 * (*r.rrmseHi - *r.rrmseLo));
+  }
+  int asLarge = 0;
+  for (const StudyRow& r : rows)
+    if (r.rrmseLo) asLarge += 0.5 * (*r.rrmseHi - *r.rrmseLo) >= *r.rrmse ? 1 : 0;
+  std::sort(half.begin(), half.end());
+  const auto quantile = [&](double q) {  // type 7: linear between order statistics
+    const double at = q * double(half.size() - 1);
+    const std::size_t k = std::size_t(at);
+    return half[k] + (at - double(k)) * (half[std::min(k + 1, half.size() - 1)] - half[k]);
+  };
+  ASSERT_EQ(half.size(), 84u);
+  ASSERT_GT(asLarge, 0);
+  ASSERT_LT(asLarge, 84);
+  const auto res = analyseStudy(rows, fastOptions(), dir.path());
+  const Json n = results(dir)["renderNoise"];
+  EXPECT_EQ(n["rows"], 84);
+  EXPECT_DOUBLE_EQ(n["medianHalfWidth"].get<double>(), quantile(0.5));
+  EXPECT_DOUBLE_EQ(n["p90HalfWidth"].get<double>(), quantile(0.9));
+  EXPECT_EQ(n["rowsHalfWidthAtLeastRrmse"], asLarge);
+  const std::string said = formatted("median half-width of %.2g (90 %% at most %.2g); on %d of 84 rows", quantile(0.5), quantile(0.9), asLarge);
+  EXPECT_NE(res.summary.find(said), std::string::npos) << said << "\n" << res.summary;
+  const std::string methods = test::readText(dir / "methods.tex");
+  EXPECT_NE(methods.find(formatted("median half-width of %.2g", quantile(0.5))), std::string::npos) << methods;
+  EXPECT_NE(methods.find("which the intervals do not include"), std::string::npos) << methods;
+}
+
 TEST(StudyAnalysis, VerdictCountsSayHowManySheetsDecidedAndClampedEstimatesAreMarked) {
   TempDir dir;
   auto rows = syntheticStudy();  // 24 sheets: 22 name Microfacet E2 closest, 2 a tie

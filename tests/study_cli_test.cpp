@@ -1,6 +1,8 @@
 // glossy study (renderer/cli/study_command.cpp, renderer/app/study_file.h): a tiny study's outputs are the same
 // bytes whether it runs whole, in shards then --analyse, or resumed after an interruption; a bad study file
 // or destination is refused in one line before any work.
+#include "renderer/app/sheet_job.h"
+#include "renderer/app/study_file.h"
 #include "renderer/study/study_plan.h"
 #include "renderer/study/study_rows.h"
 #include "support/test_support.h"
@@ -167,6 +169,27 @@ TEST(StudyCli, WholeShardedAndResumedRunsWriteTheSameBytes) {
 }
 
 // Each bad study file fails in one line naming the file and the key, before any folder is made.
+// A study file that sets no cost renders each sheet to kStudyTargetError (at most kTargetErrorSppCap spp);
+// settings.spp or time is a fixed cost, as given; a target-error of its own wins.
+TEST(StudyCli, ASheetsPrecisionIsATargetUnlessTheFileSetsACost) {
+  TempDir tmp;
+  const auto load = [&](const std::string& settings) {
+    writeText(tmp / "s.toml", "materials = [\"merl/gold-paint\"]\n[lightings]\nsky = { sky = true }\n" + settings);
+    return app::loadStudyFile(tmp / "s.toml", libraryDir()).job.settings;
+  };
+  const SheetSettings none = load("");
+  EXPECT_EQ(none.targetError, app::kStudyTargetError);
+  EXPECT_EQ(none.spp, app::kTargetErrorSppCap);
+  EXPECT_EQ(load("[settings]\nwidth = 32\n").targetError, app::kStudyTargetError);
+  const SheetSettings fixed = load("[settings]\nspp = 16\n");
+  EXPECT_EQ(fixed.targetError, 0.0);
+  EXPECT_EQ(fixed.spp, 16);
+  EXPECT_EQ(load("[settings]\ntime = 2\n").targetError, 0.0);
+  const SheetSettings own = load("[settings]\ntarget-error = 0.1\nspp = 256\n");
+  EXPECT_EQ(own.targetError, 0.1);
+  EXPECT_EQ(own.spp, 256);
+}
+
 TEST(StudyCli, BadStudyFilesAreRefusedBeforeAnyWork) {
   TempDir tmp;
   const std::string head = "materials = \"merl/gold-paint\"\n";

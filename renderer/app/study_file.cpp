@@ -215,6 +215,8 @@ void readSettings(const Reader& r, const toml::node& node, StudyFile& study) {
   r.keys(*t, "settings.", known);
   for (const OptionField& f : fields) setting(r, *t, f);
   study.sppGiven = t->contains(options::kSheetSpp.name);
+  if ((study.sppGiven || t->contains(options::kTime.name)) && !t->contains(options::kTargetError.name))
+    study.job.settings.targetError = 0.0;  // a fixed cost, as given
   if (const toml::node* p = t->get("panels")) {
     const std::string key = "settings.panels";
     try {
@@ -276,6 +278,7 @@ StudyFile loadStudyFile(const fs::path& path, const fs::path& library) {
   r.keys(root, "", {"materials", "perceptual", "lightings", "scenes", "settings", "analysis"});
 
   // Settings first: the analysis's reference names one of their panels.
+  study.job.settings.targetError = kStudyTargetError;
   if (const toml::node* s = root.get("settings")) readSettings(r, *s, study);
   applyPassLimits(study.job.settings, study.sppGiven);
   if (const toml::node* a = root.get("analysis")) readAnalysis(r, *a, study);

@@ -30,6 +30,12 @@ struct StudyScene {
   std::string builtin;  // "preview" or "sphere" for a scene glossy ships, else ""
 };
 
+// The r* half-width a study renders each sheet to when its file sets no cost (settings.spp or time) and no
+// other target: the precision at which render noise stops biasing a study's figures. At a fixed 64 spp
+// (32² panels) a sharp lobe's r* usually reads low and the study's correlations weaker; rendered to ±0.05
+// they match a reference rendered to ±0.02 (bench/study-coverage; docs/study.md, "Render noise").
+inline constexpr double kStudyTargetError = 0.05;
+
 struct StudyFile {
   std::filesystem::path path;
   std::string text;  // its bytes as read and parsed: what the analysis keeps a copy of

@@ -834,6 +834,29 @@ Json countsJson(const Study& s, const VerdictCounts& v) {
   return counts;
 }
 
+// How noisy the sheets' r* are: their 95 % intervals' half-widths over the rows that have one, and the rows
+// whose noise is as large as r* itself. Resampling materials carries this noise into every interval's
+// spread; where it is large it also biases r* low and weakens the correlations built on it, which no
+// interval includes (docs/study.md, "Render noise"), so a reader of the figures needs its size.
+Json renderNoiseJson(const Study& s) {
+  std::vector<double> half;
+  int asLarge = 0;
+  for (const StudyRow* r : s.used)
+    if (r->rrmse && r->rrmseLo && r->rrmseHi) {
+      half.push_back(0.5 * (*r->rrmseHi - *r->rrmseLo));
+      asLarge += half.back() >= *r->rrmse ? 1 : 0;
+    }
+  std::sort(half.begin(), half.end());
+  Json j;
+  j["what"] = "the half-widths of the sheets' 95 % r* intervals (render noise) over the rows that have one";
+  j["rows"] = int(half.size());
+  j["medianHalfWidth"] = half.empty() ? Json(nullptr) : Json(quantileSorted(half, 0.5));
+  j["p90HalfWidth"] = half.empty() ? Json(nullptr) : Json(quantileSorted(half, 0.9));
+  j["rowsHalfWidthAtLeastRrmse"] = asLarge;
+  if (half.empty()) j["reason"] = "no row has an r* interval";
+  return j;
+}
+
 // The Friedman test and the Holm–Wilcoxon pairs with the cliques they leave, as results.json has them.
 void addRankTests(const Study& s, const RankTests& t, Json& results) {
   Json jf;
@@ -889,6 +912,13 @@ std::string summaryText(const Study& s, const RankTests& t, const VerdictCounts&
              " none (intervals that do not part the models, or a warning that they may be too narrow)";
   if (v.clamped > 0) summary += "; " + std::to_string(v.clamped) + " r* clamped to 0 (the model within the render noise), ranked as 0";
   summary += ".\n";
+  const Json& noise = results["renderNoise"];
+  if (!noise["medianHalfWidth"].is_null())
+    summary += formatted("Render noise: the sheets' r* intervals have a median half-width of %.2g (90 %% at most %.2g); on %d of %d rows "
+                         "it is as large as r* itself. Where it is large, r* reads low and its correlations weaker (docs/study.md, "
+                         "\"Render noise\").\n",
+                         noise["medianHalfWidth"].get<double>(), noise["p90HalfWidth"].get<double>(),
+                         noise["rowsHalfWidthAtLeastRrmse"].get<int>(), noise["rows"].get<int>());
   for (const Json& m : results["models"])
     summary += "  " + m["label"].get<std::string>() + ": closest on " + std::to_string(m["closest"].get<int>()) + " of " +
                std::to_string(m["sheets"].get<int>()) + " sheets, tied on " + std::to_string(m["tied"].get<int>()) +
@@ -1026,6 +1056,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   results["resamples"] = options.resamples;
   results["interval"] = "95 % percentile bootstrap, materials resampled with their sheets";
   results["counts"] = countsJson(s, verdicts);
+  results["renderNoise"] = renderNoiseJson(s);
   results["materials"] = perMaterial(s);
 
   step(2, "per-model and per-lighting intervals");

@@ -129,6 +129,15 @@ std::string panelsText(const Json& s, const Markup& m) {
   return out;
 }
 
+// How large the render noise is, and what no interval includes: the bias it gives r* where it is large.
+std::string renderNoiseText(const Json& r, const Markup& m) {
+  if (!r.contains("renderNoise") || r["renderNoise"]["medianHalfWidth"].is_null()) return "";
+  const Json& n = r["renderNoise"];
+  return "; the sheets' " + std::string(m.rstar) + " intervals have a median half-width of " + formatted("%.2g", n["medianHalfWidth"].get<double>()) +
+         " (90 " + m.pct + " of them at most " + formatted("%.2g", n["p90HalfWidth"].get<double>()) + "), and where that noise is large it biases " +
+         m.rstar + " low and weakens its correlations, which the intervals do not include";
+}
+
 // The statistics: r*, materials as the unit, the rank tests, the effect size and the intervals.
 std::string statisticsText(const Json& r, const Markup& m) {
   return "A model's image error is the noise-free relative RMSE " + std::string(m.rstar) +
@@ -142,7 +151,7 @@ std::string statisticsText(const Json& r, const Markup& m) {
          "form a group. As an effect size, \"X closer than Y\" is the share of materials on which X's " + m.rstar +
          " is below Y's (a tie counts one half). Every interval is a 95 " + m.pct + " percentile bootstrap interval over materials (" +
          std::to_string(r["resamples"].get<int>()) + " resamples, each drawing materials with replacement with all their sheets; seed " +
-         std::to_string(r["seed"].get<std::uint64_t>()) + "): it reflects the sampling of materials, not the render noise within a sheet.";
+         std::to_string(r["seed"].get<std::uint64_t>()) + "), which carries each sheet's render noise into its spread" + renderNoiseText(r, m) + ".";
 }
 
 std::string paragraph(const Json& r, const Markup& m) {
