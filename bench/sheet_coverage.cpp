@@ -51,8 +51,8 @@ Render fromSheet(const Sheet& sheet) {
     if (p.panel.fit.empty()) continue;
     r.panels.push_back(p.replicates);
     r.flip.push_back(p.maps.available ? p.maps.flip : -1.0);
-    r.flipLo.push_back(p.maps.hasFlipCi ? p.maps.flipCi.lo : -1.0);
-    r.flipHi.push_back(p.maps.hasFlipCi ? p.maps.flipCi.hi : -1.0);
+    r.flipLo.push_back(p.maps.hasCi ? p.maps.flipCi.lo : -1.0);
+    r.flipHi.push_back(p.maps.hasCi ? p.maps.flipCi.hi : -1.0);
   }
   return r;
 }

@@ -1,7 +1,10 @@
 // The sheets' error maps (renderer/sheet/error_maps.h): the relative difference is the formula, masked and
 // floored; the ꟻLIP figure's jackknife takes out most of the bias render noise adds, and its interval covers
-// the noise-free ꟻLIP about as often as it says.
+// the noise-free ꟻLIP about as often as it says; ΔE_ITP's and SSIM's, treated alike, cover their means.
+#include "renderer/image/delta_e_itp.h"
 #include "renderer/image/flip.h"
+#include "renderer/image/masked_mean.h"
+#include "renderer/image/ssim.h"
 #include "renderer/sheet/error_maps.h"
 
 #include <gtest/gtest.h>
@@ -82,14 +85,14 @@ TEST(ErrorMaps, FlipsJackknifeIntervalCoversItsMeanOverRenders) {
   const double noise = 0.3;  // coverage 0.95–0.96 also at 0.05 and 0.5
   const RgbImage truthM = ball(size, 1.0, 8.0), truthP = ball(size, 1.15, 5.0);
   const std::vector<char> mask = ballMask(size);
-  const double noiseFree = maskedMean(hdrFlip(truthM, truthP), mask);
+  const double noiseFree = maskedMean(hdrFlip(truthM, truthP).error, mask);
   std::mt19937 rng(7);
   std::vector<ErrorMaps> runs;
   double mean = 0.0, floor = 0.0;
   for (int t = 0; t < trials; ++t) {
     const std::vector<RgbImage> m = replicates(truthM, 4, noise, rng);
     runs.push_back(errorMaps(replicates(truthP, 4, noise, rng), m, mask));
-    ASSERT_TRUE(runs.back().available && runs.back().hasFlipCi);
+    ASSERT_TRUE(runs.back().available && runs.back().hasCi);
     mean += runs.back().flip / trials;
     floor += flipNoiseFloor(m, mask) / trials;
   }
@@ -101,6 +104,39 @@ TEST(ErrorMaps, FlipsJackknifeIntervalCoversItsMeanOverRenders) {
   EXPECT_LT(floor, noiseFree) << "this much noise is smaller than the two images' difference";
   EXPECT_GE(covered, int(0.88 * trials)) << "of " << trials << "; mean " << mean << ", noise-free " << noiseFree;
   EXPECT_LE(covered, trials);
+}
+
+// ΔE_ITP and SSIM are treated as ꟻLIP is: the figure of the mean images, raised (ΔE_ITP) or lowered (SSIM)
+// by noise, with a jackknife interval over the replicates that covers the figure's mean over renders
+// about as often as it says.
+TEST(ErrorMaps, DisplayFiguresJackknifeIntervalsCoverTheirMeansOverRenders) {
+  const int size = 48, trials = 80;
+  const double noise = 0.3;
+  const RgbImage truthM = ball(size, 0.4, 3.0), truthP = ball(size, 0.46, 2.0);
+  const std::vector<char> mask = ballMask(size);
+  const double freeDelta = maskedMean(deltaEItpMap(truthM, truthP), mask), freeSsim = maskedMean(ssimMap(truthM, truthP), mask);
+  std::mt19937 rng(11);
+  std::vector<ErrorMaps> runs;
+  double delta = 0.0, ssim = 0.0;
+  for (int t = 0; t < trials; ++t) {
+    runs.push_back(errorMaps(replicates(truthP, 4, noise, rng), replicates(truthM, 4, noise, rng), mask));
+    ASSERT_TRUE(runs.back().available && runs.back().hasCi);
+    delta += runs.back().deltaEItp / trials;
+    ssim += runs.back().ssim / trials;
+  }
+  int coveredDelta = 0, coveredSsim = 0;
+  for (const ErrorMaps& r : runs) {
+    coveredDelta += r.deltaEItpCi.lo <= delta && delta <= r.deltaEItpCi.hi;
+    coveredSsim += r.ssimCi.lo <= ssim && ssim <= r.ssimCi.hi;
+    EXPECT_TRUE(r.deltaEItpCi.lo <= r.deltaEItp && r.deltaEItp <= r.deltaEItpCi.hi);
+    EXPECT_TRUE(r.ssimCi.lo <= r.ssim && r.ssim <= r.ssimCi.hi);
+  }
+  RecordProperty("coverage_delta_e_itp", std::to_string(double(coveredDelta) / trials));
+  RecordProperty("coverage_ssim", std::to_string(double(coveredSsim) / trials));
+  EXPECT_GT(delta, freeDelta) << "noise raises ΔE_ITP";
+  EXPECT_LT(ssim, freeSsim) << "noise lowers SSIM";
+  EXPECT_GE(coveredDelta, int(0.88 * trials)) << "ΔE_ITP: mean " << delta << ", noise-free " << freeDelta;
+  EXPECT_GE(coveredSsim, int(0.88 * trials)) << "SSIM: mean " << ssim << ", noise-free " << freeSsim;
 }
 
 }  // namespace glossy::test

@@ -5,6 +5,7 @@
 // pair's mean within 1e-3 of the package's and its map close pixel by pixel. Skipped, saying why, where
 // the test Python or flip_evaluator is absent.
 #include "renderer/image/flip.h"
+#include "renderer/image/masked_mean.h"
 #include "renderer/sheet/sheet.h"
 #include "tests/support/image_regression.h"
 #include "tests/support/test_support.h"
@@ -332,10 +333,10 @@ TEST(FlipProperties, MaskedMeanAveragesTheMaskedPixels) {
   FlipMap map;
   map.width = 2, map.height = 2;
   map.error = {0.1f, 0.2f, 0.4f, 0.8f};
-  EXPECT_NEAR(maskedMean(map, {1, 0, 1, 0}), 0.25, 1e-7);
-  EXPECT_NEAR(maskedMean(map, {1, 1, 1, 1}), 0.375, 1e-7);
-  EXPECT_EQ(maskedMean(map, {0, 0, 0, 0}), 0.0);
-  EXPECT_THROW(maskedMean(map, {1, 1}), std::invalid_argument);
+  EXPECT_NEAR(maskedMean(map.error, {1, 0, 1, 0}), 0.25, 1e-7);
+  EXPECT_NEAR(maskedMean(map.error, {1, 1, 1, 1}), 0.375, 1e-7);
+  EXPECT_EQ(maskedMean(map.error, {0, 0, 0, 0}), 0.0);
+  EXPECT_THROW(maskedMean(map.error, {1, 1}), std::invalid_argument);
 }
 
 

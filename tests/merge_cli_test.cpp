@@ -143,6 +143,8 @@ TEST(MergeCli, SheetsFiguresInOneTable) {
     if (row.at("panel") == "noise_floor") {
       EXPECT_EQ(std::stod(row.at("relative_rmse_noisy")), *chrome.noiseFloor->relativeRmseNoisy);
       EXPECT_EQ(std::stod(row.at("flip")), *chrome.noiseFloor->flip.value);
+      EXPECT_EQ(std::stod(row.at("delta_e_itp")), *chrome.noiseFloor->deltaEItp.value);
+      EXPECT_EQ(std::stod(row.at("ssim_lo")), *chrome.noiseFloor->ssim.lo);
     }
     if (row.at("panel") == "measured" || row.at("panel") == "noise_floor") continue;
     const PanelRecord* p = chrome.panel(row.at("panel"));

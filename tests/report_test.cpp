@@ -360,6 +360,9 @@ TEST(ReportInput, FiguresOutsideTheirDomainAreRefused) {
                                                                                  {e + "relativeRmseCi", "0.5 0.1"},
                                                                                  {e + "relativeRmseCi", "-0.1 0.2"},
                                                                                  {e + "flipCi", "0.2 0.1"},
+                                                                                 {e + "deltaEItp", "-1"},
+                                                                                 {e + "ssim", "1.5"},
+                                                                                 {e + "ssimCi", "0.9 0.8"},
                                                                                  {"glossy:flipNoiseFloor", "2"}}) {
     SCOPED_TRACE(key + " = " + value);
     fs::remove_all(tmp / "sheets");

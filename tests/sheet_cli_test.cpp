@@ -2,7 +2,10 @@
 // the error table and metadata, labelled empty panels, the smooth fit's Fresnel angle, --time,
 // --target-error, batch resuming and sharding, bad input.
 #include "renderer/image/colour_maps.h"
+#include "renderer/image/delta_e_itp.h"
 #include "renderer/image/exr_image.h"
+#include "renderer/image/masked_mean.h"
+#include "renderer/image/ssim.h"
 #include "renderer/sheet/error_maps.h"
 #include "renderer/sheet/sheet.h"
 #include "materials/params/material_file.h"
@@ -163,6 +166,27 @@ TEST(CliSheet, ErrorMapsAreTheRelativeDifferenceOfThePanelsShownInThePngsSecondR
   EXPECT_GT(floor, 0.0);
   EXPECT_LT(floor, flipFigure) << "AS E2 differs from the measured panel by more than 16 spp of noise";
   EXPECT_NE(r.out.find("HDR-FLIP"), std::string::npos) << r.out;
+  // ΔE_ITP and SSIM of the panels as shown: recomputed from the EXR's own layers over the object, inside their
+  // intervals; noise alone (the noise-floor row) is nearer the measured panel than AS E2 is.
+  std::vector<char> mask(size_t(w) * h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) mask[size_t(y) * w + x] = d[size_t(y) * spec.width + x0 + x] != 0.0f;
+  RgbImage mPanel(w, h), pPanel(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      for (int k = 0; k < 3; ++k) mPanel.at(x, y)[k] = m.at(x, y)[k], pPanel.at(x, y)[k] = p.at(x0 + x, y)[k];
+  const std::string key = "glossy:error.ashikhmin_shirley_E2.";
+  const double deltaE = std::stod(readImageAttribute(exr, key + "deltaEItp")), ssim = std::stod(readImageAttribute(exr, key + "ssim"));
+  EXPECT_NEAR(maskedMean(deltaEItpMap(mPanel, pPanel), mask), deltaE, 1e-4 * deltaE);
+  EXPECT_NEAR(maskedMean(ssimMap(mPanel, pPanel), mask), ssim, 1e-5);
+  for (const auto& [name, value] : {std::pair{"deltaEItpCi", deltaE}, std::pair{"ssimCi", ssim}}) {
+    ASSERT_EQ(std::sscanf(readImageAttribute(exr, key + name).c_str(), "%lf %lf", &lo, &hi), 2) << name;
+    EXPECT_LE(lo, value) << name;
+    EXPECT_GE(hi, value) << name;
+  }
+  EXPECT_LT(std::stod(readImageAttribute(exr, "glossy:noiseFloor.deltaEItp")), deltaE);
+  EXPECT_GT(std::stod(readImageAttribute(exr, "glossy:noiseFloor.ssim")), ssim);
+  EXPECT_NE(r.out.find("dE_ITP"), std::string::npos) << r.out;
   EXPECT_EQ(readImageAttribute(exr, "glossy:panel.ashikhmin_shirley_E1.params"),
             "kd = [0.1062, 0.0815, 0.0556]; ks = [0.248103, 0.184284, 0.220735]; n = 6679.521974; eta = 1.453599");
   EXPECT_EQ(readImageAttribute(exr, "glossy:panel.measured.params"), "");

@@ -1,7 +1,9 @@
 // Which approximation looks closest, glossy against people, within a material (renderer/study/study_people.h),
 // on made-up perceived distances (never the dataset's) and rows built so that every answer is known: r*
-// orders the approximations as people do, E1 the reverse, ꟻLIP on one lighting only.
+// orders the approximations as people do, E1 the reverse, ꟻLIP on one lighting only, ΔE_ITP and SSIM (a
+// similarity) as people do.
 #include "renderer/study/study_people.h"
+#include "materials/core/text.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
@@ -61,6 +63,8 @@ struct Fixture {
           r.e1 = 1.0 - d;                                              // the reverse
           r.e2 = 0.5;                                                  // no order at all
           r.flip = lighting == std::string("sky") ? d : 1.0 - d;       // people's order under the sky only
+          r.deltaEItp = 10.0 * d;                                      // people's order
+          r.ssim = 1.0 - d;                                            // a similarity: people's order as 1 − SSIM
           rows.push_back(r);
         }
   }
@@ -96,6 +100,11 @@ TEST(StudyPeople, AFigureThatOrdersTheApproximationsAsPeopleDoAgreesFullyAndItsR
   EXPECT_DOUBLE_EQ(figure(microfacet["overall"], "e2")["closestAgrees"]["estimate"].get<double>(), 0.2);
   EXPECT_TRUE(figure(microfacet["overall"], "e2")["meanKendallTau"]["estimate"].is_null());
   EXPECT_EQ(microfacet["overall"]["agreesBest"], "rrmse");
+  // SSIM is a similarity: its closest is its largest, so it agrees as fully as ΔE_ITP does.
+  for (const char* name : {"deltaEItp", "ssim"}) {
+    EXPECT_DOUBLE_EQ(figure(microfacet["overall"], name)["closestAgrees"]["estimate"].get<double>(), 1.0) << name;
+    EXPECT_DOUBLE_EQ(figure(microfacet["overall"], name)["meanKendallTau"]["estimate"].get<double>(), 1.0) << name;
+  }
   // ꟻLIP agrees under the sky and is reversed under the studio: the per-lighting blocks say so.
   EXPECT_DOUBLE_EQ(figure(microfacet["byLighting"]["sky"], "flip")["closestAgrees"]["estimate"].get<double>(), 1.0);
   EXPECT_DOUBLE_EQ(figure(microfacet["byLighting"]["studio"], "flip")["closestAgrees"]["estimate"].get<double>(), 0.0);
@@ -146,6 +155,30 @@ TEST(StudyPeople, ATieBetweenGlossysClosestIsSharedNotCountedWhole) {
   const PeopleAnalysis p = closestToPeople(fx.used(), fx.data, 400, 1);
   // Eleven materials agree fully, the tied one half.
   EXPECT_NEAR(figure(p.json["variants"][0]["overall"], "rrmse")["closestAgrees"]["estimate"].get<double>(), (11.0 + 0.5) / 12.0, 1e-12);
+}
+
+// The summary's section and people.tex print what results.json holds, per ABC variant, overall and per
+// lighting; the LaTeX compiles.
+TEST(StudyPeople, TheTablesShowTheJsonsFiguresAndTheLatexCompiles) {
+  const Fixture fx;
+  const PeopleAnalysis p = closestToPeople(fx.used(), fx.data, 400, 1);
+  EXPECT_NE(p.markdown.find("### ABC as microfacet:E2"), std::string::npos) << p.markdown;
+  EXPECT_NE(p.markdown.find("### ABC as smooth:E2"), std::string::npos) << p.markdown;
+  const Json& flip = figure(p.json["variants"][0]["overall"], "flip");
+  const std::string share = formatted("%.2f", flip["closestAgrees"]["estimate"].get<double>());
+  EXPECT_NE(p.markdown.find("| ꟻLIP | " + share), std::string::npos) << p.markdown;
+  EXPECT_NE(p.markdown.find("| figure | sky | studio |"), std::string::npos) << p.markdown;
+  EXPECT_NE(p.markdown.find("| ꟻLIP | 1.00"), std::string::npos) << "under the sky ꟻLIP orders as people do\n" << p.markdown;
+  EXPECT_NE(p.markdown.find("| 1 − SSIM | 1.00"), std::string::npos) << p.markdown;
+  EXPECT_NE(p.tex.find("\\label{tab:glossy-study-people-microfacet-E2}"), std::string::npos) << p.tex;
+  if (std::system("command -v pdflatex >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "pdflatex is not installed (texlive-latex-base, a test package of scripts/test)";
+  test::writeText(fx.dir / "people.tex", p.tex);
+  test::writeText(fx.dir / "paper.tex", "\\documentclass{article}\n\\begin{document}\n\\input{people.tex}\n\\end{document}\n");
+  const std::string command = "cd " + test::shellQuote(fx.dir.path().string()) +
+                              " && pdflatex -interaction=nonstopmode -halt-on-error paper.tex > pdflatex.log 2>&1";
+  EXPECT_EQ(std::system(command.c_str()), 0) << test::readText(fx.dir / "pdflatex.log");
+  EXPECT_EQ(test::readText(fx.dir / "pdflatex.log").find("Missing character"), std::string::npos);
 }
 
 }  // namespace

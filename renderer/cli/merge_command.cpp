@@ -111,7 +111,7 @@ nlohmann::json jsonNumber(const std::optional<double>& v) { return v ? nlohmann:
 // as JSON members.
 std::string figureCells(const ImageFigures& f) {
   std::string cells;
-  for (const Figure* g : {&f.relativeRmse, &f.luminanceRatio, &f.flip})
+  for (const Figure* g : {&f.relativeRmse, &f.luminanceRatio, &f.flip, &f.deltaEItp, &f.ssim})
     cells += number(g->value) + "," + number(g->lo) + "," + number(g->hi) + ",";
   return cells + number(f.relativeRmseNoisy);
 }
@@ -120,7 +120,9 @@ nlohmann::json figureJson(const ImageFigures& f) {
   const auto ci = [](const Figure& g) { return g.lo ? nlohmann::json{*g.lo, *g.hi} : nlohmann::json(nullptr); };
   return {{"relative_rmse", jsonNumber(f.relativeRmse.value)}, {"relative_rmse_ci", ci(f.relativeRmse)},
           {"luminance_ratio", jsonNumber(f.luminanceRatio.value)}, {"luminance_ratio_ci", ci(f.luminanceRatio)},
-          {"flip", jsonNumber(f.flip.value)}, {"flip_ci", ci(f.flip)}, {"relative_rmse_noisy", jsonNumber(f.relativeRmseNoisy)}};
+          {"flip", jsonNumber(f.flip.value)}, {"flip_ci", ci(f.flip)}, {"delta_e_itp", jsonNumber(f.deltaEItp.value)},
+          {"delta_e_itp_ci", ci(f.deltaEItp)}, {"ssim", jsonNumber(f.ssim.value)}, {"ssim_ci", ci(f.ssim)},
+          {"relative_rmse_noisy", jsonNumber(f.relativeRmseNoisy)}};
 }
 
 int runMergeSheets(const MergeOptions& o) {
@@ -134,7 +136,8 @@ int runMergeSheets(const MergeOptions& o) {
 
   std::string csv =
       "material,panel,label,fit,empty,spp,relative_rmse,relative_rmse_lo,relative_rmse_hi,luminance_ratio,luminance_ratio_lo,"
-      "luminance_ratio_hi,flip,flip_lo,flip_hi,relative_rmse_noisy,E1,E2,closest,verdict,warning\n";
+      "luminance_ratio_hi,flip,flip_lo,flip_hi,delta_e_itp,delta_e_itp_lo,delta_e_itp_hi,ssim,ssim_lo,ssim_hi,relative_rmse_noisy,E1,E2,"
+      "closest,verdict,warning\n";
   nlohmann::json doc = {{"sheets", nlohmann::json::array()}};
   for (const SheetRecord& s : sheets) {
     const std::vector<std::string> closest = s.closestLayers();

@@ -446,15 +446,4 @@ FlipMap hdrFlip(const RgbImage& reference, const RgbImage& test, const FlipSetti
   return result;
 }
 
-double maskedMean(const FlipMap& map, const std::vector<char>& mask) {
-  if (mask.size() != map.error.size())
-    throw std::invalid_argument("maskedMean: the mask has " + std::to_string(mask.size()) + " entries, the map " +
-                                std::to_string(map.error.size()));
-  double sum = 0.0;
-  size_t count = 0;
-  for (size_t i = 0; i < mask.size(); ++i)
-    if (mask[i]) sum += map.error[i], ++count;
-  return count ? sum / double(count) : 0.0;
-}
-
 }  // namespace glossy

@@ -50,8 +50,4 @@ FlipExposures hdrFlipExposures(const RgbImage& reference);
 // square overflows a float maps to ∞/∞ = NaN and counts as 0. The map is finite and in [0,1] for any input.
 FlipMap hdrFlip(const RgbImage& reference, const RgbImage& test, const FlipSettings& settings = {});
 
-// The mean of a map over the pixels where mask is nonzero (mask has width*height entries); 0 if none.
-// Throws std::invalid_argument if the mask's size is not the map's.
-double maskedMean(const FlipMap& map, const std::vector<char>& mask);
-
 }  // namespace glossy

@@ -186,7 +186,11 @@ py::dict panelFigures(const Sheet& sheet, const PanelRender& p) {
   d["luminance_ratio"] = optionalNumber(f.compared, f.luminanceRatio);
   d["luminance_ratio_ci"] = optionalInterval(f.hasCi, f.luminanceRatioCi);
   d["flip"] = optionalNumber(p.maps.available, p.maps.flip);
-  d["flip_ci"] = optionalInterval(p.maps.available && p.maps.hasFlipCi, p.maps.flipCi);
+  d["flip_ci"] = optionalInterval(p.maps.available && p.maps.hasCi, p.maps.flipCi);
+  d["delta_e_itp"] = optionalNumber(p.maps.available, p.maps.deltaEItp);
+  d["delta_e_itp_ci"] = optionalInterval(p.maps.available && p.maps.hasCi, p.maps.deltaEItpCi);
+  d["ssim"] = optionalNumber(p.maps.available, p.maps.ssim);
+  d["ssim_ci"] = optionalInterval(p.maps.available && p.maps.hasCi, p.maps.ssimCi);
   return d;
 }
 
@@ -292,8 +296,9 @@ Smooth E2 | AS E1 | AS E2 | CT E1 | CT E2), and each model's error figures again
            }, R"doc(
 Per panel, by layer name: label, fit, colour, empty, note, spp, params, the fit's E1 and E2 against the
 measured table, and against the measured panel the noise-free relative RMSE with its 95 % interval
-(relative_rmse, relative_rmse_ci), the noisy one, the luminance ratio with its interval, and HDR-ꟻLIP
-with its interval (flip, flip_ci). A figure the sheet cannot give is None.
+(relative_rmse, relative_rmse_ci), the noisy one, the luminance ratio with its interval, HDR-ꟻLIP
+with its interval (flip, flip_ci), and ΔE_ITP and SSIM of the panels as the PNG shows them with theirs
+(delta_e_itp, delta_e_itp_ci, ssim, ssim_ci). A figure the sheet cannot give is None.
 )doc")
       .def_property_readonly("verdict", [](const PySheet& x) { return verdictText(x.made.sheet); },
                              "The closest model when the intervals say so, a tie, or why there is no verdict.")

@@ -21,10 +21,11 @@ std::string withInterval(const Figure& f) {
   return s;
 }
 
-// An image's figures as the errors table's cells: rel. RMSE, noisy rRMSE, luminance ratio, ꟻLIP.
+// An image's figures as the errors table's cells: rel. RMSE, noisy rRMSE, luminance ratio, ꟻLIP, ΔE_ITP, SSIM.
 std::string figureCells(const ImageFigures& f) {
   return "<td>" + withInterval(f.relativeRmse) + "</td><td>" + shortNumber(f.relativeRmseNoisy) + "</td><td>" +
-         withInterval(f.luminanceRatio) + "</td><td>" + withInterval(f.flip) + "</td>";
+         withInterval(f.luminanceRatio) + "</td><td>" + withInterval(f.flip) + "</td><td>" + withInterval(f.deltaEItp) + "</td><td>" +
+         withInterval(f.ssim) + "</td>";
 }
 
 void metaRow(std::ostringstream& h, const char* name, const std::string& value) {
@@ -128,7 +129,8 @@ void errorsSection(std::ostringstream& h, const SheetRecord& s) {
   h << "<section aria-labelledby=\"errors-heading\">\n<h2 id=\"errors-heading\">Errors against the measured panel</h2>\n"
     << "<div class=\"table-wrap\"><table class=\"errors\">\n<thead><tr><th class=\"text\" scope=\"col\">Panel</th>"
        "<th scope=\"col\">rel. RMSE [95 %]</th><th scope=\"col\">noisy rRMSE</th><th scope=\"col\">luminance ratio [95 %]</th>"
-       "<th scope=\"col\">\xEA\x9F\xBBLIP [95 %]</th><th scope=\"col\">E1</th><th scope=\"col\">E2</th><th class=\"text\" scope=\"col\">Note</th></tr></thead>\n<tbody>\n";
+       "<th scope=\"col\">\xEA\x9F\xBBLIP [95 %]</th><th scope=\"col\">\xCE\x94" "E<sub>ITP</sub> [95 %]</th>"
+       "<th scope=\"col\">SSIM [95 %]</th><th scope=\"col\">E1</th><th scope=\"col\">E2</th><th class=\"text\" scope=\"col\">Note</th></tr></thead>\n<tbody>\n";
   const std::vector<std::string> closest = s.closestLayers();
   for (const PanelRecord& p : s.panels) {
     // The measured panel's note says where its data came from: without the renderer's folders.
@@ -147,7 +149,9 @@ void errorsSection(std::ostringstream& h, const SheetRecord& s) {
        "independent replicates), the noisy one keeps it; \xEA\x9F\xBBLIP includes the noise, which raises it, and its interval is the "
        "noise's spread";
   if (s.flipNoiseFloor) h << " (noise alone gives " << shortNumber(s.flipNoiseFloor) << ": the measured panel against itself)";
-  h << "; E1 and E2 score the fit against the measured table itself, not the image.</p>\n</section>\n";
+  h << "; \xCE\x94" "E<sub>ITP</sub> and SSIM compare the panels as the PNG shows them at exposure 0 and are treated alike (noise "
+       "raises \xCE\x94" "E<sub>ITP</sub> and lowers SSIM); E1 and E2 score the fit against the measured table itself, not the image.</p>\n"
+       "</section>\n";
 }
 
 // Each model panel's fit and its parameters.

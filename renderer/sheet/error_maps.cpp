@@ -1,7 +1,10 @@
 #include "renderer/sheet/error_maps.h"
 
 #include "materials/core/types.h"
+#include "renderer/image/delta_e_itp.h"
 #include "renderer/image/flip.h"
+#include "renderer/image/masked_mean.h"
+#include "renderer/image/ssim.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -29,6 +32,17 @@ double luminanceAt(const RgbImage& image, size_t pixel) {
 double tQuantile975(size_t dof) {
   static const double table[] = {0.0, 12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228};
   return dof < std::size(table) ? table[dof] : 1.96;
+}
+
+// The jackknife's 95 % half-width of a figure from its K leave-one-out values F_j:
+// t(K − 1) · √((K − 1)/K · Σ_j (F_j − mean F_j)²).
+double jackknifeHalfWidth(const std::vector<double>& partial) {
+  const size_t k = partial.size();
+  double mean = 0.0;
+  for (double f : partial) mean += f / double(k);
+  double ss = 0.0;
+  for (double f : partial) ss += (f - mean) * (f - mean);
+  return tQuantile975(k - 1) * std::sqrt(double(k - 1) / double(k) * ss);
 }
 
 }  // namespace
@@ -59,21 +73,23 @@ ErrorMaps errorMaps(const std::vector<RgbImage>& panel, const std::vector<RgbIma
     maps.relativeDifference[i] = std::isfinite(d) ? float(d) : 0.0f;
   }
 
-  const FlipMap full = hdrFlip(m, p);
-  maps.flipMap = full.error;
-  maps.flip = maskedMean(full, mask);
+  maps.flipMap = hdrFlip(m, p).error;
+  maps.flip = maskedMean(maps.flipMap, mask);
+  maps.deltaEItp = maskedMean(deltaEItpMap(m, p), mask);
+  maps.ssim = maskedMean(ssimMap(m, p), mask);
   if (k < 3) return maps;
-  std::vector<double> partial(k);
-  double mean = 0.0;
+  std::vector<double> flips(k), deltas(k), ssims(k);
   for (size_t j = 0; j < k; ++j) {
-    partial[j] = maskedMean(hdrFlip(meanOf(measured, j), meanOf(panel, j)), mask);
-    mean += partial[j] / double(k);
+    const RgbImage mj = meanOf(measured, j), pj = meanOf(panel, j);
+    flips[j] = maskedMean(hdrFlip(mj, pj).error, mask);
+    deltas[j] = maskedMean(deltaEItpMap(mj, pj), mask);
+    ssims[j] = maskedMean(ssimMap(mj, pj), mask);
   }
-  double ss = 0.0;
-  for (double f : partial) ss += (f - mean) * (f - mean);
-  const double halfWidth = tQuantile975(k - 1) * std::sqrt(double(k - 1) / double(k) * ss);
-  maps.hasFlipCi = true;
-  maps.flipCi = {std::max(0.0, maps.flip - halfWidth), std::min(1.0, maps.flip + halfWidth)};
+  const double flipHalf = jackknifeHalfWidth(flips), deltaHalf = jackknifeHalfWidth(deltas), ssimHalf = jackknifeHalfWidth(ssims);
+  maps.hasCi = true;
+  maps.flipCi = {std::max(0.0, maps.flip - flipHalf), std::min(1.0, maps.flip + flipHalf)};
+  maps.deltaEItpCi = {std::max(0.0, maps.deltaEItp - deltaHalf), maps.deltaEItp + deltaHalf};
+  maps.ssimCi = {std::max(-1.0, maps.ssim - ssimHalf), std::min(1.0, maps.ssim + ssimHalf)};
   return maps;
 }
 
@@ -82,7 +98,7 @@ double flipNoiseFloor(const std::vector<RgbImage>& measured, const std::vector<c
   const size_t half = measured.size() / 2;
   const std::vector<RgbImage> first(measured.begin(), measured.begin() + std::ptrdiff_t(half)),
       second(measured.begin() + std::ptrdiff_t(half), measured.end());
-  return maskedMean(hdrFlip(meanOf(first, first.size()), meanOf(second, second.size())), mask);
+  return maskedMean(hdrFlip(meanOf(first, first.size()), meanOf(second, second.size())).error, mask);
 }
 
 }  // namespace glossy

@@ -1,6 +1,8 @@
 // Where a model differs from the measured panel, as pictures beside the sheet's figures: the signed relative
 // difference of luminance, and HDR-ꟻLIP's perceptual error map (renderer/image/flip.h) with its mean over
-// the object's pixels and a 95 % interval.
+// the object's pixels and a 95 % interval; and two more perceptual figures of the panels as the PNG shows
+// them, each the mean of its map over the object with the same kind of interval: ΔE_ITP
+// (renderer/image/delta_e_itp.h) and SSIM (renderer/image/ssim.h).
 //
 // Relative difference: d = (Y_p − Y_m) / max(Y_m, 0.01 Ȳ_m) on the object's pixels (Y: Rec. 709 luminance of
 // the panels' mean images; Ȳ_m: the measured panel's mean luminance over the object), 0 elsewhere. The floor
@@ -14,7 +16,10 @@
 // reports for the EXR's layers — with an interval for the render noise's spread of F: the jackknife over the
 // K coherent replicates, F_j the ꟻLIP of the means without replicate j, se² = (K − 1)/K Σ_j (F_j − mean F_j)²,
 // F ± t(K − 1) · se. Beside it the sheet states the noise floor: the ꟻLIP between the measured panel's two
-// halves of replicates, what noise alone shows (flipNoiseFloor).
+// halves of replicates, what noise alone shows (flipNoiseFloor). ΔE_ITP and SSIM are non-linear in the
+// images as ꟻLIP is (a square root of squared differences; ratios of local moments), so they are treated
+// alike: the figure of the two mean images, with the jackknife's interval for its render noise; noise alone
+// raises ΔE_ITP and lowers SSIM, as the sheet's noise-floor row shows.
 #pragma once
 
 #include "renderer/image/exr_image.h"
@@ -32,8 +37,10 @@ struct ErrorMaps {
   std::vector<float> relativeDifference;  // per panel pixel, row 0 at the top
   std::vector<float> flipMap;             // per panel pixel, over the whole panel (ꟻLIP's filters need the context)
   double flip = 0.0;                      // F: mean of `flipMap` over the object
-  bool hasFlipCi = false;                 // K ≥ 3
-  Interval flipCi;                        // the render noise's 95 % spread of F
+  double deltaEItp = 0.0;                 // mean ΔE_ITP over the object
+  double ssim = 0.0;                      // mean SSIM over the object (1: identical)
+  bool hasCi = false;                     // K ≥ 3: the intervals below
+  Interval flipCi, deltaEItpCi, ssimCi;   // the render noise's 95 % spread of each figure
 };
 
 // panel, measured: the K replicates of each (same count, one size); mask: the object's pixels.

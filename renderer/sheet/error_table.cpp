@@ -28,7 +28,9 @@ std::string errorTable(const Sheet& sheet) {
   // The label column fits the longest label (a glossy fit's says so: "GGX E2 (glossy fit)").
   int w = 14;
   for (const PanelRender& p : sheet.panels) w = std::max(w, int(p.panel.label.size()));
-  s << formatted("  %-*s   rel. RMSE, noise-free [95 %%]   luminance ratio [95 %%]    HDR-FLIP [95 %%]            noisy rRMSE   BRDF E1   BRDF E2\n", w, "panel");
+  s << formatted("  %-*s   rel. RMSE, noise-free [95 %%]   luminance ratio [95 %%]    HDR-FLIP [95 %%]            "
+                 "dE_ITP [95 %%]          SSIM [95 %%]                noisy rRMSE   BRDF E1   BRDF E2\n",
+                 w, "panel");
   bool clamped = false;
   const auto row = [&](const PanelRender& p) {
     const PanelFigures& f = p.figures;
@@ -38,12 +40,16 @@ std::string errorTable(const Sheet& sheet) {
                                        : formatted("%.4f%s", f.relativeRmse, f.clamped ? "*" : "");
     const std::string l = f.hasCi ? formatted("%.4f [%.4f, %.4f]", f.luminanceRatio, f.luminanceRatioCi.lo, f.luminanceRatioCi.hi)
                                   : formatted("%.4f", f.luminanceRatio);
-    const std::string flip = !p.maps.available ? "-"
-                             : p.maps.hasFlipCi ? formatted("%.4f [%.4f, %.4f]", p.maps.flip, p.maps.flipCi.lo, p.maps.flipCi.hi)
-                                                : formatted("%.4f", p.maps.flip);
+    const auto withCi = [&](const char* format, double v, const Interval& ci) {
+      if (!p.maps.available) return std::string("-");
+      const std::string value = formatted(format, v);
+      return p.maps.hasCi ? value + " [" + formatted(format, ci.lo) + ", " + formatted(format, ci.hi) + "]" : value;
+    };
+    const std::string flip = withCi("%.4f", p.maps.flip, p.maps.flipCi), deltaE = withCi("%.2f", p.maps.deltaEItp, p.maps.deltaEItpCi),
+                      ssim = withCi("%.4f", p.maps.ssim, p.maps.ssimCi);
     clamped = clamped || f.clamped;
-    s << formatted("  %-*s   %-29s  %-24s  %-25s  %11.4f   %7.4f   %7.4f\n", w, p.panel.label.c_str(), r.c_str(), l.c_str(),
-                   flip.c_str(), f.noisyRelativeRmse, p.brdfE1, p.brdfE2);
+    s << formatted("  %-*s   %-29s  %-24s  %-25s  %-21s  %-25s  %11.4f   %7.4f   %7.4f\n", w, p.panel.label.c_str(), r.c_str(),
+                   l.c_str(), flip.c_str(), deltaE.c_str(), ssim.c_str(), f.noisyRelativeRmse, p.brdfE1, p.brdfE2);
   };
   for (const PanelRender& p : sheet.panels) {
     if (p.empty) {
@@ -66,6 +72,9 @@ std::string errorTable(const Sheet& sheet) {
     s << formatted("  HDR-FLIP includes render noise, which raises it; the [95 %%] is the noise's spread. Noise alone gives "
                    "%.4f (the measured panel against itself, half its samples each)\n",
                    sheet.flipNoiseFloor);
+  if (sheet.hasMeasured())
+    s << "  dE_ITP (ITU-R BT.2124) and SSIM compare the panels as the PNG shows them at exposure 0; noise raises dE_ITP "
+         "and lowers SSIM (the noise-floor row)\n";
   if (sheet.hasMeasured()) {
     s << "  " << verdictText(sheet);
     if (sheet.verdict.models.size() > 1) s << " (not separated at 95 %: more samples, e.g. --target-error, may decide)";

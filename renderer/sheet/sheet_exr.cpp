@@ -28,7 +28,13 @@ void addFigureAttributes(const std::string& prefix, const PanelFigures& f, const
   }
   if (maps.available) {
     metadata.push_back({prefix + ".flip", float(maps.flip)});
-    if (maps.hasFlipCi) metadata.push_back({prefix + ".flipCi", formatted("%.6g %.6g", maps.flipCi.lo, maps.flipCi.hi)});
+    metadata.push_back({prefix + ".deltaEItp", float(maps.deltaEItp)});
+    metadata.push_back({prefix + ".ssim", float(maps.ssim)});
+    if (maps.hasCi) {
+      metadata.push_back({prefix + ".flipCi", formatted("%.6g %.6g", maps.flipCi.lo, maps.flipCi.hi)});
+      metadata.push_back({prefix + ".deltaEItpCi", formatted("%.6g %.6g", maps.deltaEItpCi.lo, maps.deltaEItpCi.hi)});
+      metadata.push_back({prefix + ".ssimCi", formatted("%.6g %.6g", maps.ssimCi.lo, maps.ssimCi.hi)});
+    }
   }
 }
 

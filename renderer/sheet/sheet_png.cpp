@@ -98,7 +98,7 @@ void drawLabels(Picture& pic, int k, const PanelRender& p) {
   if (!second.empty()) label(second, 2 * fontSize + 5, small, kGrey);
   if (p.brdfE1 >= 0.0) label(formatted(w >= 120 ? "E1 %.3g  E2 %.3g" : "%.2g %.2g", p.brdfE1, p.brdfE2), 3 * fontSize + 7, small, kGrey);
   if (p.maps.available)
-    label(p.maps.hasFlipCi ? formatted(w >= 120 ? "FLIP %.3f +/-%.3f" : "F %.3f+/-%.3f", p.maps.flip, p.maps.flipCi.halfWidth())
+    label(p.maps.hasCi ? formatted(w >= 120 ? "FLIP %.3f +/-%.3f" : "F %.3f+/-%.3f", p.maps.flip, p.maps.flipCi.halfWidth())
                            : formatted("FLIP %.3f", p.maps.flip),
           4 * fontSize + 9, small, kGrey);
 }

@@ -89,7 +89,8 @@ class Header {
   ImageFigures figures(const std::string& prefix) const {
     const double inf = std::numeric_limits<double>::infinity();
     return {figure(prefix + ".relativeRmse", 0.0, inf, 0.0), figure(prefix + ".luminanceRatio", 0.0, inf, -inf),
-            figure(prefix + ".flip", 0.0, 1.0, 0.0), bounded(prefix + ".relativeRmseNoisy", 0.0, inf)};
+            figure(prefix + ".flip", 0.0, 1.0, 0.0), figure(prefix + ".deltaEItp", 0.0, inf, 0.0),
+            figure(prefix + ".ssim", -1.0, 1.0, -1.0), bounded(prefix + ".relativeRmseNoisy", 0.0, inf)};
   }
   [[noreturn]] void fail(const std::string& why) const { throw InputError(path_.string() + ": " + why); }
 

@@ -23,6 +23,7 @@ struct Figure {
 // each figure shows of noise alone).
 struct ImageFigures {
   Figure relativeRmse, luminanceRatio, flip;
+  Figure deltaEItp, ssim;  // absent in sheets made before glossy computed them
   std::optional<double> relativeRmseNoisy;
 };
 

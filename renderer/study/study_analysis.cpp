@@ -99,6 +99,8 @@ Study readRows(std::span<const StudyRow> rows) {
     checkFinite(r, r.flip, "FLIP");
     checkFinite(r, r.flipLo, "FLIP's lower bound");
     checkFinite(r, r.flipHi, "FLIP's upper bound");
+    checkFinite(r, r.deltaEItp, "ΔE_ITP");
+    checkFinite(r, r.ssim, "SSIM");
     checkFinite(r, r.luminanceRatio, "the luminance ratio");
     auto& sheet = s.sheets[{r.material, r.lighting, r.scene}];
     // One row per model and sheet: a sheet showing two fits of one model (the published and glossy's)
@@ -977,7 +979,7 @@ std::string summaryMarkdown(const std::string& summary, const std::string& light
   std::string md = "# Study summary\n\n```\n" + summary + "```\n\n" + lightingMarkdown +
                    "\nEvery statistic with its interval: `results.json`; "
                    "the rows: `rows.csv`, `rows.json`; per-model tables: `models.tex`; per-lighting table: `lighting.tex`; "
-                   "methods: `methods.tex`" +
+                   "methods: `methods.tex`" + std::string(options.perceptualDir.empty() ? "" : "; against people: `people.tex`") +
                    std::string(studyFile ? "; the study file: `study.toml`" : "") + "; figures: ";
   for (std::size_t i = 0; i < figures.size(); ++i) md += (i ? ", " : "") + std::string("`") + figures[i].name + ".svg`";
   md += ".\n\n## Figures\n\n";
@@ -994,9 +996,11 @@ std::string summaryMarkdown(const std::string& summary, const std::string& light
 }
 
 // The analysis's files in `folder`, in this order: the rows, each figure (and its PNG when rsvg-convert is
-// installed), results.json with the figures' list, the LaTeX, the study file and summary.md.
+// installed), results.json with the figures' list, the LaTeX (people.tex with perceptual data), the study
+// file and summary.md.
 AnalysisResult writeAnalysis(const std::filesystem::path& folder, const Study& s, const std::string& summary, Json& results,
-                             const std::vector<StudyFigure>& figures, const LightingAnalysis& lighting, const AnalysisOptions& options) {
+                             const std::vector<StudyFigure>& figures, const LightingAnalysis& lighting, const PeopleAnalysis& people,
+                             const AnalysisOptions& options) {
   AnalysisResult result;
   result.summary = summary;
   auto write = [&](const std::string& name, const std::string& contents) {
@@ -1021,9 +1025,11 @@ AnalysisResult writeAnalysis(const std::filesystem::path& folder, const Study& s
   write("models.tex", modelsTex(results));
   write("lighting.tex", lighting.tex);
   write("methods.tex", methodsTex(results));
+  if (!people.tex.empty()) write("people.tex", people.tex);
   // The study file as it was read: the settings of these results, beside them.
   if (options.provenance && !options.provenance->studyText.empty()) write(kStudyFileCopy, options.provenance->studyText);
-  write("summary.md", summaryMarkdown(summary, lighting.markdown, figures, results, options));
+  write("summary.md", summaryMarkdown(summary, lighting.markdown + (people.markdown.empty() ? "" : "\n" + people.markdown), figures,
+                                      results, options));
   return result;
 }
 }  // namespace
@@ -1080,8 +1086,9 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
   step(5, "against people");
   std::vector<PerceptualSeries> series;
   results["againstPeople"] = againstPeople(s, options, peopleHeadline, series);
+  PeopleAnalysis within;
   if (!options.perceptualDir.empty()) {
-    const PeopleAnalysis within = closestToPeople(s.used, PerceptualData::read(options.perceptualDir), options.resamples, options.seed);
+    within = closestToPeople(s.used, PerceptualData::read(options.perceptualDir), options.resamples, options.seed);
     results["againstPeople"]["withinMaterial"] = within.json;
     peopleHeadline += (peopleHeadline.empty() ? "" : "\n") + within.headline;
     if (!peopleHeadline.empty() && peopleHeadline.back() == '\n') peopleHeadline.pop_back();
@@ -1091,7 +1098,7 @@ AnalysisResult analyseStudy(std::span<const StudyRow> rows, const AnalysisOption
 
   step(6, "figures and files");
   const std::vector<StudyFigure> figures = studyFigures(s, t, options, series);
-  return writeAnalysis(folder, s, summary, results, figures, lighting, options);
+  return writeAnalysis(folder, s, summary, results, figures, lighting, within, options);
 }
 
 }  // namespace glossy::study

@@ -3,6 +3,7 @@
 #include "materials/core/text.h"
 #include "renderer/study/study_intervals.h"
 #include "renderer/study/study_statistics.h"
+#include "renderer/study/study_tables.h"
 
 #include <algorithm>
 #include <array>
@@ -16,11 +17,16 @@ namespace {
 using Json = nlohmann::ordered_json;
 using Opt = std::optional<double>;
 
-constexpr const char* kFigures[] = {"rrmse", "flip", "e1", "e2"};
+constexpr const char* kFigures[] = {"rrmse", "flip", "deltaEItp", "ssim", "e1", "e2"};
 constexpr std::size_t kFigureCount = std::size(kFigures);
+// The figures as the summary's and people.tex's tables name them, in kFigures' order.
+constexpr const char* kMarkdownNames[] = {"r\\*", "ꟻLIP", "ΔE_ITP", "1 − SSIM", "E1", "E2"};
+constexpr const char* kTexNames[] = {"$r^*$", "FLIP", "$\\Delta E_{\\mathrm{ITP}}$", "$1 - \\mathrm{SSIM}$", "E1", "E2"};
+static_assert(std::size(kMarkdownNames) == kFigureCount && std::size(kTexNames) == kFigureCount);
 
+// Each figure as a distance, smaller closer: SSIM (a similarity) as 1 − SSIM.
 Opt figureOf(const StudyRow& r, std::size_t f) {
-  const Opt values[] = {r.rrmse, r.flip, r.e1, r.e2};
+  const Opt values[] = {r.rrmse, r.flip, r.deltaEItp, r.ssim ? Opt(1.0 - *r.ssim) : std::nullopt, r.e1, r.e2};
   return values[f];
 }
 
@@ -153,13 +159,82 @@ Json agreementsJson(const std::vector<FigureAgreement>& all, std::size_t approxi
   return out;
 }
 
+// One ABC variant's results, as the summary's section and people.tex show them.
+struct VariantTables {
+  std::string abc;
+  std::size_t approximations = 0;
+  std::vector<FigureAgreement> overall;
+  std::map<std::string, std::vector<FigureAgreement>> byLighting;
+};
+
+std::string markdownOf(const VariantTables& v) {
+  const std::size_t materials = v.overall.empty() ? 0 : v.overall.front().materials;
+  std::string md = "### ABC as " + v.abc + "\n\n" + std::to_string(materials) +
+                   " materials with a figure and a perceived distance for every approximation; 95 % bootstrap intervals over "
+                   "materials.\n\n| figure | people's closest named (chance " + formatted("%.2f", 1.0 / double(v.approximations)) +
+                   ") | mean Kendall τ (chance 0) | pooled Spearman ρ (chance 0) |\n|---|---|---|---|\n";
+  for (std::size_t f = 0; f < v.overall.size(); ++f)
+    md += std::string("| ") + kMarkdownNames[f] + " | " + intervalText(v.overall[f].share, "%.2f") + " | " +
+          intervalText(v.overall[f].tau, "%.2f") + " | " + intervalText(v.overall[f].rho, "%.2f") + " |\n";
+  if (v.byLighting.empty()) return md;
+  md += "\nPeople's closest named, under each lighting alone:\n\n| figure |";
+  for (const auto& [lighting, _] : v.byLighting) md += " " + lighting + " |";
+  md += "\n|---|";
+  for (std::size_t i = 0; i < v.byLighting.size(); ++i) md += "---|";
+  md += "\n";
+  for (std::size_t f = 0; f < kFigureCount; ++f) {
+    md += std::string("| ") + kMarkdownNames[f] + " |";
+    for (const auto& [lighting, agreements] : v.byLighting) md.append(" ").append(intervalText(agreements[f].share, "%.2f")).append(" |");
+    md += "\n";
+  }
+  return md;
+}
+
+std::string texOf(const VariantTables& v) {
+  const std::size_t materials = v.overall.empty() ? 0 : v.overall.front().materials;
+  std::string label = v.abc;
+  std::replace(label.begin(), label.end(), ':', '-');
+  std::string tex = "\\begin{table}[htbp]\n\\centering\n\\caption{Which approximation looks closest within a material: glossy's "
+                    "figures against people's perceived distances (Lavou\\'e et al.\\ 2021), the approximations ABC as " +
+                    latexEscape(v.abc) + ", Ngan et al.'s Ward, Blinn-Phong and Lafortune and Bagher et al.'s SGD; " +
+                    std::to_string(materials) + " materials; 95\\,\\% bootstrap intervals over materials. Closest named: the "
+                    "share of materials where the figure's closest is people's (chance " +
+                    formatted("%.2f", 1.0 / double(v.approximations)) + "); chance is 0 for $\\tau$ and $\\rho$.}\n"
+                    "\\label{tab:glossy-study-people-" + latexEscape(label) + "}\n\\begin{tabular}{llll}\n\\hline\n"
+                    "Figure & closest named & mean Kendall $\\tau$ & pooled Spearman $\\rho$ \\\\\n\\hline\n";
+  for (std::size_t f = 0; f < v.overall.size(); ++f)
+    tex += std::string(kTexNames[f]) + " & " + latexEscape(intervalText(v.overall[f].share, "%.2f")) + " & " +
+           latexEscape(intervalText(v.overall[f].tau, "%.2f")) + " & " + latexEscape(intervalText(v.overall[f].rho, "%.2f")) +
+           " \\\\\n";
+  tex += "\\hline\n\\end{tabular}\n";
+  if (!v.byLighting.empty()) {
+    tex += "\n\\medskip\nClosest named, under each lighting alone:\n\n\\begin{tabular}{l" + std::string(v.byLighting.size(), 'l') +
+           "}\n\\hline\nFigure";
+    for (const auto& [lighting, _] : v.byLighting) tex += " & " + latexEscape(lighting);
+    tex += " \\\\\n\\hline\n";
+    for (std::size_t f = 0; f < kFigureCount; ++f) {
+      tex += kTexNames[f];
+      for (const auto& [lighting, agreements] : v.byLighting) tex += " & " + latexEscape(intervalText(agreements[f].share, "%.2f"));
+      tex += " \\\\\n";
+    }
+    tex += "\\hline\n\\end{tabular}\n";
+  }
+  return tex + "\\end{table}\n";
+}
+
 }  // namespace
 
 PeopleAnalysis closestToPeople(const std::vector<const StudyRow*>& rows, const PerceptualData& data, int resamples,
                                std::uint64_t seed) {
   PeopleAnalysis out;
   Json& j = out.json;
+  out.markdown = "## Against people: which approximation looks closest\n\nWithin a material, glossy's figures against the "
+                 "distances people perceived (Lavoué et al. 2021) between each approximation and the measured material: Löw et "
+                 "al.'s ABC (each of its two E2 fits in turn), Ngan et al.'s Ward, Blinn-Phong and Lafortune, Bagher et al.'s "
+                 "SGD. Every figure is a distance here, smaller closer (SSIM as 1 − SSIM); a material's figure is the mean over "
+                 "its sheets.\n\n";
   j["question"] = "within a material, which approximation looks closest: glossy's figures against people's";
+  j["figuresAsDistances"] = "each figure smaller is closer: rrmse, flip, deltaEItp, e1, e2 as they are, ssim as 1 - SSIM";
   // What each dataset method's rows are taken to judge, with the evidence: how many materials the dataset
   // gives it for, and how many of the study's materials with the fit it covers.
   std::vector<PerceptualFit> shared = judgedApproximations();
@@ -188,13 +263,18 @@ PeopleAnalysis closestToPeople(const std::vector<const StudyRow*>& rows, const P
     Json v;
     v["abc"] = abc.fit;
     v["approximations"] = joined(approximations, ", ", [](const PerceptualFit& p) { return p.method + " = " + p.fit; });
-    const std::vector<FigureAgreement> overall = agreements(tablesOf(rows, data, approximations, ""), k, resamples, seed, abc.fit);
+    VariantTables tables{abc.fit, k, agreements(tablesOf(rows, data, approximations, ""), k, resamples, seed, abc.fit), {}};
+    const std::vector<FigureAgreement>& overall = tables.overall;
     v["overall"] = agreementsJson(overall, k);
     Json byLighting = Json::object();
-    for (const std::string& l : lightings)
-      byLighting[l] = agreementsJson(agreements(tablesOf(rows, data, approximations, l), k, resamples, seed, abc.fit + "/" + l), k);
+    for (const std::string& l : lightings) {
+      tables.byLighting[l] = agreements(tablesOf(rows, data, approximations, l), k, resamples, seed, abc.fit + "/" + l);
+      byLighting[l] = agreementsJson(tables.byLighting[l], k);
+    }
     v["byLighting"] = byLighting;
     variants.push_back(v);
+    out.markdown += markdownOf(tables) + "\n";
+    out.tex += texOf(tables) + "\n";
     out.headline += "Within a material (people's closest among ABC as " + abc.fit + ", Ngan's Ward, Blinn-Phong, Lafortune, Bagher's SGD";
     const FigureAgreement* best = bestOf(overall);
     if (!best) {

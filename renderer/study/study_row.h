@@ -30,6 +30,8 @@ struct StudyRow {
   // render noise of the measured panel). Ranked as 0, drawn as 0, and counted (results.json).
   bool rrmseClamped = false;
   std::optional<double> flip, flipLo, flipHi;     // mean HDR-ꟻLIP over the object
+  std::optional<double> deltaEItp, deltaEItpLo, deltaEItpHi;  // mean ΔE_ITP over the object (display-encoded)
+  std::optional<double> ssim, ssimLo, ssimHi;                 // mean SSIM over the object (1: identical)
   std::optional<double> luminanceRatio;
   // The sheet's verdict as it concerns this model.
   bool closest = false;  // named closest: its interval separates it from every other model

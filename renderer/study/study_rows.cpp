@@ -87,6 +87,12 @@ std::vector<StudyRow> sheetRows(const SheetRecord& sheet, const PlannedMaterial&
     r.flip = p.flip.value;
     r.flipLo = p.flip.lo;
     r.flipHi = p.flip.hi;
+    r.deltaEItp = p.deltaEItp.value;
+    r.deltaEItpLo = p.deltaEItp.lo;
+    r.deltaEItpHi = p.deltaEItp.hi;
+    r.ssim = p.ssim.value;
+    r.ssimLo = p.ssim.lo;
+    r.ssimHi = p.ssim.hi;
     r.luminanceRatio = p.luminanceRatio.value;
     const bool named = std::find(closest.begin(), closest.end(), p.layer) != closest.end();
     r.closest = named && !tie;

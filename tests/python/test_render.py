@@ -163,6 +163,10 @@ def test_sheet_is_the_cli_sheet(tmp_path):
     assert floor["label"] == "noise floor" and floor["relative_rmse_noisy"] > 0
     assert floor["relative_rmse_ci"][0] <= floor["relative_rmse"] <= floor["relative_rmse_ci"][1]
     assert floor["flip"] < ct["flip"]
+    for key in ("delta_e_itp", "ssim"):
+        assert ct[f"{key}_ci"][0] <= ct[key] <= ct[f"{key}_ci"][1]
+    # At 8 spp noise alone is as far as the model (the sheet warns): only that the row has the figures.
+    assert floor["delta_e_itp"] > 0 and 0 < floor["ssim"] < 1
     assert sheet.warnings and all("intervals may be too narrow" in w for w in sheet.warnings)
     assert not sheet.verdict.startswith("closest: ")
     assert "noise floor" in sheet.table

@@ -97,7 +97,7 @@ TEST_P(SheetIntervals, CoverTheConvergedValues) {
       rmseCovered[k] += f.relativeRmseCi.lo <= conv.relativeRmse && conv.relativeRmse <= f.relativeRmseCi.hi;
       ratioCovered[k] += f.luminanceRatioCi.lo <= conv.luminanceRatio && conv.luminanceRatio <= f.luminanceRatioCi.hi;
       rmse[k].add(f.relativeRmse), rmseSigma[k].add(f.relativeRmseCi.halfWidth() / 1.96);
-      if (const ErrorMaps& maps = sheet.panels[k].maps; maps.hasFlipCi) flip[k].add(maps.flip), flipCis[k].push_back(maps.flipCi);
+      if (const ErrorMaps& maps = sheet.panels[k].maps; maps.hasCi) flip[k].add(maps.flip), flipCis[k].push_back(maps.flipCi);
     }
     if (sheet.verdict.models.size() == 1) ++named, wrong += converged.verdict.models.size() == 1 && sheet.verdict.models.front() != converged.verdict.models.front();
   }
