@@ -85,6 +85,7 @@ PYBIND11_MODULE(_core, m) {
   });
   bindBrdfs(m);
   bindFitting(m);
+  bindImages(m);
   bindRendering(m);
   bindStudies(m);
 }

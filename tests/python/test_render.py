@@ -165,6 +165,12 @@ def test_sheet_is_the_cli_sheet(tmp_path):
     assert floor["flip"] < ct["flip"]
     for key in ("delta_e_itp", "ssim"):
         assert ct[f"{key}_ci"][0] <= ct[key] <= ct[f"{key}_ci"][1]
+    # The display figures from the maps glossy.delta_e_itp and glossy.ssim give, over the object (where the
+    # relative difference is not 0): the sheet's own. sheet.panels are the mean images the figures compare.
+    obj = sheet.maps["cook_torrance_E2"]["reldiff"] != 0
+    measured, model = sheet.panels["measured"], sheet.panels["cook_torrance_E2"]
+    assert np.isclose(glossy.delta_e_itp(measured, model)[obj].mean(dtype=np.float64), ct["delta_e_itp"], rtol=1e-5)
+    assert np.isclose(glossy.ssim(measured, model)[obj].mean(dtype=np.float64), ct["ssim"], rtol=1e-5)
     # At 8 spp noise alone is as far as the model (the sheet warns): only that the row has the figures.
     assert floor["delta_e_itp"] > 0 and 0 < floor["ssim"] < 1
     assert sheet.warnings and all("intervals may be too narrow" in w for w in sheet.warnings)
@@ -227,3 +233,20 @@ def test_read_exr_refuses_a_fifo_at_once(tmp_path):
         writer.kill()
         writer.wait()
     assert time.monotonic() - start < 5
+
+
+def test_display_figures_of_any_two_images():
+    rng = np.random.default_rng(3)
+    a = rng.uniform(0, 1.5, (20, 30, 3)).astype(np.float32)
+    assert glossy.delta_e_itp(a, a).shape == (20, 30) and not glossy.delta_e_itp(a, a).any()
+    np.testing.assert_allclose(glossy.ssim(a, a), 1.0, atol=1e-6)
+    # Brighter is farther, on a brighter display too; what the display clips is no difference.
+    assert glossy.delta_e_itp(a, 1.2 * a, white=400).mean() > glossy.delta_e_itp(a, 1.2 * a).mean() > 0
+    assert not glossy.delta_e_itp(np.full((4, 4, 3), 2.0), np.full((4, 4, 3), 5.0)).any()
+    assert glossy.ssim(a, a[::-1]).mean() < 0.5
+    with pytest.raises(glossy.InputError, match=r"^test: expected shape \(height, width, 3\)"):
+        glossy.ssim(a, a[..., 0])
+    with pytest.raises(glossy.InputError, match=r"^reference and test: 30x20 and 20x30"):
+        glossy.delta_e_itp(a, a.transpose(1, 0, 2))
+    with pytest.raises(glossy.InputError, match=r"^white and black"):
+        glossy.delta_e_itp(a, a, white=50, black=60)
