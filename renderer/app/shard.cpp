@@ -2,6 +2,7 @@
 
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "renderer/util/notes.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -107,8 +108,9 @@ std::vector<size_t> shardItems(std::span<const double> costs, const Shard& shard
   double myCost = 0.0;
   for (size_t k : mine) myCost += costs[k];
   if (!shard.source.empty())
-    std::fprintf(stderr, "%s: shard %d/%d from %s: %zu of %zu %s, %.1f %% of the expected cost\n", command, shard.index, shard.count,
-                 shard.source.c_str(), mine.size(), costs.size(), items, 100.0 * myCost / std::accumulate(costs.begin(), costs.end(), 0.0));
+    tell(formatted("%s: shard %d/%d from %s: %zu of %zu %s, %.1f %% of the expected cost", command, shard.index, shard.count,
+                   shard.source.c_str(), mine.size(), costs.size(), items,
+                   100.0 * myCost / std::accumulate(costs.begin(), costs.end(), 0.0)));
   return mine;
 }
 

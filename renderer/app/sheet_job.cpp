@@ -138,8 +138,8 @@ void makeSheetFiles(const Stage& stage, const std::filesystem::path& materialPat
   writeSheetFiles(made, stage, job, exr);
   std::cout << errorTable(made.sheet) << std::flush;
   flushNotes();  // what the render and the writing noted (a target missed, values clipped), by its sheet
-  std::cerr << "glossy: wrote " << exr.string() << " and " << std::filesystem::path(exr).replace_extension(".png").string()
-            << " (" << made.seconds << " s)\n";
+  tell("glossy: wrote " + exr.string() + " and " + std::filesystem::path(exr).replace_extension(".png").string() +
+       formatted(" (%g s)", made.seconds));
 }
 
 BatchSheet renderBatchSheet(const std::string& stageInputs, const std::function<const Stage&()>& stage,
@@ -149,17 +149,17 @@ BatchSheet renderBatchSheet(const std::string& stageInputs, const std::function<
   try {
     lock.emplace(exr, "-o");
   } catch (const OutputBusy& e) {
-    std::cerr << "glossy: " << tag << ": " << e.what() << ", skipped\n";
+    tell("glossy: " + tag + ": " + e.what() + ", skipped");
     return BatchSheet::Busy;
   }
   if (const size_t stale = removeStaleTemporaries(exr))
-    std::cerr << "glossy: " << tag << ": removed " << stale << " temporary files an interrupted run left\n";
+    tell("glossy: " + tag + ": removed " + std::to_string(stale) + " temporary files an interrupted run left");
   const std::string why = whyIncomplete(exr, sheetSettings(loadMaterialFile(materialPath), stageInputs, job, ""), job.settings);
   if (why.empty()) {
-    std::cerr << "glossy: " << tag << ": complete, skipped\n";
+    tell("glossy: " + tag + ": complete, skipped");
     return BatchSheet::Complete;
   }
-  if (std::error_code ec; std::filesystem::exists(exr, ec)) std::cerr << "glossy: " << tag << ": " << why << ", rendering it again\n";
+  if (std::error_code ec; std::filesystem::exists(exr, ec)) tell("glossy: " + tag + ": " + why + ", rendering it again");
   makeSheetFiles(stage(), materialPath, job, exr, "");
   return BatchSheet::Rendered;
 }
@@ -180,10 +180,10 @@ size_t renderBatch(const std::vector<double>& costs, const std::function<std::st
     ++done;
     renderedCost += costs[k];
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::fprintf(stderr, "glossy: %s done; %.0f s elapsed, about %.0f s to go\n", tag.c_str(), elapsed,
-                 elapsed / renderedCost * std::max(left, 0.0));
+    tell(formatted("glossy: %s done; %.0f s elapsed, about %.0f s to go", tag.c_str(), elapsed,
+                   elapsed / renderedCost * std::max(left, 0.0)));
   }
-  std::fprintf(stderr, "%s: %zu sheets rendered, %zu already complete, in %s\n", who, done, skipped, folder.c_str());
+  tell(formatted("%s: %zu sheets rendered, %zu already complete, in %s", who, done, skipped, folder.c_str()));
   return busy;
 }
 

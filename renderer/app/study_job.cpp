@@ -123,8 +123,8 @@ class Study {
     const size_t models = size_t(std::count_if(panels.begin(), panels.end(), [](const SheetPanel& p) { return !p.fit.empty(); }));
     const double seconds = study::expectedAnalysisSeconds(file_.resamples, plan_.materials.size(), models);
     if (shard_.source.empty() && seconds >= 60.0)
-      std::fprintf(stderr, "glossy study: the analysis will take about %s (analysis.resamples = %d over %zu materials and %zu models); "
-                           "fewer resamples make it quicker\n", durationText(seconds).c_str(), file_.resamples, plan_.materials.size(), models);
+      tell(formatted("glossy study: the analysis will take about %s (analysis.resamples = %d over %zu materials and %zu models); "
+                     "fewer resamples make it quicker", durationText(seconds).c_str(), file_.resamples, plan_.materials.size(), models));
     return seconds;
   }
 
@@ -180,8 +180,8 @@ class Study {
     const auto start = std::chrono::steady_clock::now();
     analysis.progress = [&](int step, int steps, const std::string& what) {
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::fprintf(stderr, "glossy study: analysis %d/%d: %s (%.0f s elapsed, about %s in all)\n", step, steps, what.c_str(), elapsed,
-                   durationText(expectedSeconds).c_str());
+      tell(formatted("glossy study: analysis %d/%d: %s (%.0f s elapsed, about %s in all)", step, steps, what.c_str(), elapsed,
+                     durationText(expectedSeconds).c_str()));
     };
     const fs::path folder = analysisFolder();
     const OutputLock lock(folder, o_.outName, OutputLock::Busy::Wait);
@@ -189,8 +189,8 @@ class Study {
     FreshFolder fresh(folder);
     const study::AnalysisResult result = study::analyseStudy(rows, analysis, fresh.path());
     fresh.replaceTarget();
-    std::fprintf(stderr, "glossy study: %zu rows of %zu sheets analysed into %s (%zu files)\n", rows.size(), items_.size(), folder.c_str(),
-                 result.files.size());
+    tell(formatted("glossy study: %zu rows of %zu sheets analysed into %s (%zu files)", rows.size(), items_.size(), folder.c_str(),
+                   result.files.size()));
     StudyRun run;
     run.summary = result.summary;
     run.rows = rows.size();
@@ -290,15 +290,15 @@ StudyRun runStudy(const StudyRequest& o) {
   const size_t busy = study.renderMine();
   StudyRun run;
   if (busy > 0) {
-    std::fprintf(stderr, "glossy study: %zu sheets left to the other run writing them; run again to check them and analyse\n", busy);
+    tell(formatted("glossy study: %zu sheets left to the other run writing them; run again to check them and analyse", busy));
     run.ended = StudyRun::Ended::Busy;
   } else if (study.isShard()) {
-    std::fprintf(stderr, "glossy study: shard done; once every shard is, analyse: glossy study %s -o %s --analyse\n", o.file.c_str(),
-                 o.out.c_str());
+    tell(formatted("glossy study: shard done; once every shard is, analyse: glossy study %s -o %s --analyse", o.file.c_str(),
+                   o.out.c_str()));
     run.ended = StudyRun::Ended::ShardDone;
   } else if (std::string first; const size_t missing = study.incomplete(first)) {
-    std::fprintf(stderr, "glossy study: %zu of %zu sheets are not complete (%s): render them first (glossy study %s -o %s)\n", missing,
-                 study.sheets(), first.c_str(), o.file.c_str(), o.out.c_str());
+    tell(formatted("glossy study: %zu of %zu sheets are not complete (%s): render them first (glossy study %s -o %s)", missing,
+                   study.sheets(), first.c_str(), o.file.c_str(), o.out.c_str()));
     run.ended = StudyRun::Ended::Incomplete;
   } else {
     run = study.analyse(analysisSeconds);

@@ -9,6 +9,7 @@
 #include "renderer/integrator/light_count.h"
 #include "renderer/scene/material_binding.h"
 #include "renderer/sheet/pass_plan.h"
+#include "renderer/util/notes.h"
 
 #include <tbb/parallel_for.h>
 
@@ -212,11 +213,11 @@ class SheetRender {
       if (settings_.targetError > 0.0) {
         compare();
         if (settings_.passLines)
-          std::fprintf(stderr, "glossy: %s: pass %d: %d spp, widest interval ±%.4g (target ±%.4g), %.1f s\n", material_.name.c_str(),
-                       sheet_.passes, sheet_.replicates * done_, widest_, settings_.targetError, sheet_.seconds);
+          tell(formatted("glossy: %s: pass %d: %d spp, widest interval ±%.4g (target ±%.4g), %.1f s", material_.name.c_str(),
+                         sheet_.passes, sheet_.replicates * done_, widest_, settings_.targetError, sheet_.seconds));
       } else if (settings_.passLines && settings_.secondsPerPanel > 0.0) {
-        std::fprintf(stderr, "glossy: %s: pass %d: %d spp, %.1f s\n", material_.name.c_str(), sheet_.passes, sheet_.replicates * done_,
-                     sheet_.seconds);
+        tell(formatted("glossy: %s: pass %d: %d spp, %.1f s", material_.name.c_str(), sheet_.passes, sheet_.replicates * done_,
+                       sheet_.seconds));
       }
     }
     if (settings_.targetError <= 0.0 || sheet_.passes == 0) compare();

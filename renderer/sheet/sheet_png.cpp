@@ -4,6 +4,7 @@
 
 #include "materials/core/text.h"
 #include "renderer/image/colour_maps.h"
+#include "renderer/util/notes.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -191,7 +192,7 @@ void writeSheetPng(const Sheet& sheet, const std::filesystem::path& path, double
     }
     drawNotes(pic, sheet, top + h, size.width);
   }
-  if (buf.has_error()) std::fprintf(stderr, "glossy: %s: labels not drawn: %s\n", path.string().c_str(), buf.geterror().c_str());
+  if (buf.has_error()) note(path.string() + ": labels not drawn: " + buf.geterror());
   std::vector<unsigned char> rgb(size_t(w * n) * size_t(height) * 3);
   if (!buf.get_pixels(buf.roi(), OIIO::TypeDesc::UINT8, rgb.data())) throw std::runtime_error(path.string() + ": " + buf.geterror());
   writeRgb8(path, w * n, height, rgb);

@@ -64,6 +64,12 @@ std::vector<std::string> takeNotes() {
   return std::exchange(pending(), {});
 }
 
+void tell(const std::string& line) {
+  std::lock_guard guard(lock());
+  std::fprintf(stderr, "%s\n", line.c_str());
+  std::fflush(stderr);
+}
+
 void keepNotesForTaking() {
   std::lock_guard guard(lock());
   keptForTaking() = true;
