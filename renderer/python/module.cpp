@@ -86,6 +86,7 @@ PYBIND11_MODULE(_core, m) {
   bindBrdfs(m);
   bindFitting(m);
   bindImages(m);
+  bindMerging(m);
   bindRendering(m);
   bindStudies(m);
 }

@@ -23,6 +23,7 @@ namespace py = pybind11;
 void bindBrdfs(py::module_& m);
 void bindFitting(py::module_& m);
 void bindImages(py::module_& m);
+void bindMerging(py::module_& m);
 void bindRendering(py::module_& m);
 void bindStudies(py::module_& m);
 

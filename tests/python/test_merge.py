@@ -1,0 +1,42 @@
+"""glossy.merge_fits and glossy.merge_sheets write what `glossy merge fits` and `glossy merge sheets` write
+(renderer/app/merge_job.h), byte for byte, and refuse what they refuse in the keywords' names."""
+import shutil
+
+import pytest
+
+import glossy
+from conftest import cli_error, material_path, run_cli
+
+
+def test_merge_sheets_is_the_cli_merge(tmp_path):
+    sheets = tmp_path / "sheets"
+    sheets.mkdir()
+    for name in ("alum-bronze", "chrome"):
+        run_cli("sheet", "--material", material_path(name), "--width", 16, "--height", 16, "--spp", 4, "--threads", 2,
+                "-o", sheets / f"{name}.exr")
+    assert glossy.merge_sheets(sheets, csv=tmp_path / "py.csv", json=tmp_path / "py.json") == 2
+    run_cli("merge", "sheets", sheets, "--csv", tmp_path / "cli.csv", "--json", tmp_path / "cli.json")
+    assert (tmp_path / "py.csv").read_bytes() == (tmp_path / "cli.csv").read_bytes()
+    assert (tmp_path / "py.json").read_bytes() == (tmp_path / "cli.json").read_bytes()
+    assert "delta_e_itp" in (tmp_path / "py.csv").read_text().splitlines()[0]
+    with pytest.raises(glossy.InputError, match=r"^glossy merge sheets needs csv FILE, json FILE or both$"):
+        glossy.merge_sheets(sheets)
+    with pytest.raises(glossy.InputError) as error:
+        glossy.merge_sheets(sheets, csv=tmp_path / "table.txt")
+    assert str(error.value).replace("csv", "--csv", 1) == cli_error("merge", "sheets", sheets, "--csv", tmp_path / "table.txt")
+
+
+def test_merge_fits_is_the_cli_merge(tmp_path):
+    shards = tmp_path / "shards"
+    shards.mkdir()
+    for name in ("alum-bronze", "gold-paint"):
+        shutil.copy(material_path(name), shards / f"{name}.toml")
+    done = glossy.merge_fits(shards, tmp_path / "py")
+    assert done["materials"] == 2 and done["files_written"] == 2 and done["replaced"] == 0
+    run_cli("merge", "fits", shards, "-o", tmp_path / "cli")
+    for name in ("alum-bronze", "gold-paint"):
+        assert (tmp_path / "py" / f"{name}.toml").read_bytes() == (tmp_path / "cli" / f"{name}.toml").read_bytes()
+    # Merged again: every fit is already there, nothing is written.
+    assert glossy.merge_fits(shards, tmp_path / "py")["files_written"] == 0
+    with pytest.raises(glossy.InputError, match=r"not a directory"):
+        glossy.merge_fits(tmp_path / "none", tmp_path / "py")
