@@ -1,30 +1,13 @@
 // glossy report: a static, offline HTML site over a folder of sheets and their plots
-// (renderer/report/report_site.h; docs/report.md).
-#include "materials/core/text.h"
-#include "renderer/util/output_lock.h"
-#include "renderer/app/destination.h"
+// (renderer/report/report_site.h; docs/report.md). The job is renderer/app/report_job.h; this is its command
+// line.
+#include "renderer/app/report_job.h"
 #include "renderer/cli/command.h"
 #include "renderer/plot/plot_output.h"
-#include "renderer/report/report_site.h"
 
-#include <cstdio>
 #include <memory>
 
 namespace glossy::cli {
-
-namespace {
-
-int runReport(const report::ReportOptions& o) {
-  checkOutputFolder(o.site, "-o");
-  const OutputLock lock(o.site, "-o");
-  const report::ReportResult r = report::writeReport(o);
-  const std::string sheets = r.sheets == r.materials.size() ? formatted("%zu materials", r.sheets)
-                                                             : formatted("%zu sheets of %zu materials", r.sheets, r.materials.size());
-  std::fprintf(stderr, "glossy: wrote %s/index.html: %s, %zu images, %zu plot files\n", o.site.c_str(), sheets.c_str(), r.images, r.plots);
-  return 0;
-}
-
-}  // namespace
 
 Command addReportCommand(CLI::App& parent) {
   auto o = std::make_shared<report::ReportOptions>();
@@ -45,7 +28,10 @@ Command addReportCommand(CLI::App& parent) {
       ->delimiter(',');
   app->add_flag("--plot-data,!--no-plot-data", o->plotData,
                 "Also copy each plot's SVG and CSV beside its picture and link them (default: the picture alone, a lighter site)");
-  return {app, [o] { return runReport(*o); }};
+  return {app, [o] {
+            app::makeReport(*o);
+            return 0;
+          }};
 }
 
 }  // namespace glossy::cli

@@ -87,6 +87,7 @@ PYBIND11_MODULE(_core, m) {
   bindFitting(m);
   bindImages(m);
   bindMerging(m);
+  bindReports(m);
   bindRendering(m);
   bindStudies(m);
 }

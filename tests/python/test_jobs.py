@@ -1,5 +1,6 @@
-"""glossy.merge_fits and glossy.merge_sheets write what `glossy merge fits` and `glossy merge sheets` write
-(renderer/app/merge_job.h), byte for byte, and refuse what they refuse in the keywords' names."""
+"""glossy.merge_fits, glossy.merge_sheets and glossy.report write what `glossy merge fits`, `glossy merge
+sheets` and `glossy report` write (renderer/app/merge_job.h, report_job.h), byte for byte, and refuse what
+they refuse in the keywords' names."""
 import shutil
 
 import pytest
@@ -40,3 +41,22 @@ def test_merge_fits_is_the_cli_merge(tmp_path):
     assert glossy.merge_fits(shards, tmp_path / "py")["files_written"] == 0
     with pytest.raises(glossy.InputError, match=r"not a directory"):
         glossy.merge_fits(tmp_path / "none", tmp_path / "py")
+
+
+def test_report_is_the_cli_report(tmp_path):
+    sheets = tmp_path / "sheets"
+    sheets.mkdir()
+    run_cli("sheet", "--material", material_path("alum-bronze"), "--width", 16, "--height", 16, "--spp", 4, "--threads", 2,
+            "-o", sheets / "alum-bronze.exr")
+    done = glossy.report(sheets, tmp_path / "py")
+    assert done["sheets"] == 1 and done["materials"] == 1 and done["images"] > 0
+    run_cli("report", sheets, "-o", tmp_path / "cli")
+    py_files = sorted(p.relative_to(tmp_path / "py") for p in (tmp_path / "py").rglob("*") if p.is_file())
+    cli_files = sorted(p.relative_to(tmp_path / "cli") for p in (tmp_path / "cli").rglob("*") if p.is_file())
+    assert py_files == cli_files
+    for f in py_files:
+        assert (tmp_path / "py" / f).read_bytes() == (tmp_path / "cli" / f).read_bytes(), f
+    with pytest.raises(glossy.InputError, match=r"^plot_kinds: 'lobes' is none of theta_h, image_slice, albedo, polar$"):
+        glossy.report(sheets, tmp_path / "py", plot_kinds=["lobes"])
+    with pytest.raises(glossy.InputError, match=r"^output .*alum-bronze\.exr: exists and is not a folder$"):
+        glossy.report(sheets, sheets / "alum-bronze.exr")
