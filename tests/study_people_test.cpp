@@ -181,5 +181,16 @@ TEST(StudyPeople, TheTablesShowTheJsonsFiguresAndTheLatexCompiles) {
   EXPECT_EQ(test::readText(fx.dir / "pdflatex.log").find("Missing character"), std::string::npos);
 }
 
+// A study without every judged fit (the supplement's grid has no Ngan or Bagher fit) says so in one sentence
+// per variant, with no tables of nothing and no people.tex.
+TEST(StudyPeople, WithoutEveryJudgedFitThereAreNoTables) {
+  Fixture fx;
+  std::erase_if(fx.rows, [](const StudyRow& r) { return r.fit == std::string("sgd:Bagher12"); });
+  const PeopleAnalysis p = closestToPeople(fx.used(), fx.data, 100, 1);
+  EXPECT_TRUE(p.tex.empty()) << p.tex;
+  EXPECT_EQ(p.markdown.find("| figure |"), std::string::npos) << p.markdown;
+  EXPECT_NE(p.markdown.find("No material has a figure and a perceived distance for every approximation"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace glossy::study

@@ -974,12 +974,12 @@ std::vector<StudyFigure> studyFigures(const Study& s, const RankTests& t, const 
 // summary.md: the summary, the lighting table, where every other output is, the figures' captions and the
 // methods.
 std::string summaryMarkdown(const std::string& summary, const std::string& lightingMarkdown, const std::vector<StudyFigure>& figures,
-                            const Json& results, const AnalysisOptions& options) {
+                            const Json& results, bool peopleTex, const AnalysisOptions& options) {
   const bool studyFile = options.provenance && !options.provenance->studyText.empty();
   std::string md = "# Study summary\n\n```\n" + summary + "```\n\n" + lightingMarkdown +
                    "\nEvery statistic with its interval: `results.json`; "
                    "the rows: `rows.csv`, `rows.json`; per-model tables: `models.tex`; per-lighting table: `lighting.tex`; "
-                   "methods: `methods.tex`" + std::string(options.perceptualDir.empty() ? "" : "; against people: `people.tex`") +
+                   "methods: `methods.tex`" + std::string(peopleTex ? "; against people: `people.tex`" : "") +
                    std::string(studyFile ? "; the study file: `study.toml`" : "") + "; figures: ";
   for (std::size_t i = 0; i < figures.size(); ++i) md += (i ? ", " : "") + std::string("`") + figures[i].name + ".svg`";
   md += ".\n\n## Figures\n\n";
@@ -1029,7 +1029,7 @@ AnalysisResult writeAnalysis(const std::filesystem::path& folder, const Study& s
   // The study file as it was read: the settings of these results, beside them.
   if (options.provenance && !options.provenance->studyText.empty()) write(kStudyFileCopy, options.provenance->studyText);
   write("summary.md", summaryMarkdown(summary, lighting.markdown + (people.markdown.empty() ? "" : "\n" + people.markdown), figures,
-                                      results, options));
+                                      results, !people.tex.empty(), options));
   return result;
 }
 }  // namespace

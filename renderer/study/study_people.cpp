@@ -167,8 +167,13 @@ struct VariantTables {
   std::map<std::string, std::vector<FigureAgreement>> byLighting;
 };
 
+// What a variant without a single material to compare says instead of tables of nothing.
+constexpr const char* kNoMaterial = "No material has a figure and a perceived distance for every approximation: the study's panels "
+                                    "need every judged fit, as the grid lavoue2021 has them (scenes/studies/people.toml).";
+
 std::string markdownOf(const VariantTables& v) {
   const std::size_t materials = v.overall.empty() ? 0 : v.overall.front().materials;
+  if (materials == 0) return "### ABC as " + v.abc + "\n\n" + kNoMaterial + "\n";
   std::string md = "### ABC as " + v.abc + "\n\n" + std::to_string(materials) +
                    " materials with a figure and a perceived distance for every approximation; 95 % bootstrap intervals over "
                    "materials.\n\n| figure | people's closest named (chance " + formatted("%.2f", 1.0 / double(v.approximations)) +
@@ -190,8 +195,10 @@ std::string markdownOf(const VariantTables& v) {
   return md;
 }
 
+// "" when no material has every figure: people.tex is then not written.
 std::string texOf(const VariantTables& v) {
   const std::size_t materials = v.overall.empty() ? 0 : v.overall.front().materials;
+  if (materials == 0) return "";
   std::string label = v.abc;
   std::replace(label.begin(), label.end(), ':', '-');
   std::string tex = "\\begin{table}[htbp]\n\\centering\n\\caption{Which approximation looks closest within a material: glossy's "
@@ -274,7 +281,7 @@ PeopleAnalysis closestToPeople(const std::vector<const StudyRow*>& rows, const P
     v["byLighting"] = byLighting;
     variants.push_back(v);
     out.markdown += markdownOf(tables) + "\n";
-    out.tex += texOf(tables) + "\n";
+    if (const std::string tex = texOf(tables); !tex.empty()) out.tex += tex + "\n";
     out.headline += "Within a material (people's closest among ABC as " + abc.fit + ", Ngan's Ward, Blinn-Phong, Lafortune, Bagher's SGD";
     const FigureAgreement* best = bestOf(overall);
     if (!best) {

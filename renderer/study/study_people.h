@@ -28,7 +28,7 @@ struct PeopleAnalysis {
   nlohmann::ordered_json json;  // results.json's againstPeople.withinMaterial
   std::string headline;         // lines of the printed summary
   std::string markdown;         // summary.md's section "Against people": per ABC variant, overall and per lighting
-  std::string tex;              // people.tex: the same as LaTeX tables (no package needed)
+  std::string tex;              // people.tex: the same as LaTeX tables (no package needed); "" without a material to compare
 };
 
 // `rows`: the rows the statistics use. Deterministic for the rows (in any order) and `seed`.
