@@ -88,6 +88,7 @@ PYBIND11_MODULE(_core, m) {
   bindImages(m);
   bindMerging(m);
   bindReports(m);
+  bindPlots(m);
   bindRendering(m);
   bindStudies(m);
 }

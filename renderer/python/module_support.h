@@ -25,6 +25,7 @@ void bindFitting(py::module_& m);
 void bindImages(py::module_& m);
 void bindMerging(py::module_& m);
 void bindReports(py::module_& m);
+void bindPlots(py::module_& m);
 void bindRendering(py::module_& m);
 void bindStudies(py::module_& m);
 

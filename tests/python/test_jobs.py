@@ -1,6 +1,6 @@
-"""glossy.merge_fits, glossy.merge_sheets and glossy.report write what `glossy merge fits`, `glossy merge
-sheets` and `glossy report` write (renderer/app/merge_job.h, report_job.h), byte for byte, and refuse what
-they refuse in the keywords' names."""
+"""glossy.merge_fits, glossy.merge_sheets, glossy.plot and glossy.report write what `glossy merge fits`,
+`glossy merge sheets`, `glossy plot` and `glossy report` write (renderer/app/merge_job.h, plot_job.h,
+report_job.h), byte for byte, and refuse what they refuse in the keywords' names."""
 import shutil
 
 import pytest
@@ -60,3 +60,20 @@ def test_report_is_the_cli_report(tmp_path):
         glossy.report(sheets, tmp_path / "py", plot_kinds=["lobes"])
     with pytest.raises(glossy.InputError, match=r"^output .*alum-bronze\.exr: exists and is not a folder$"):
         glossy.report(sheets, sheets / "alum-bronze.exr")
+
+
+def test_plot_is_the_cli_plot(tmp_path):
+    args = dict(figures=["theta_h", "albedo"], decades=6, polar_scale="linear")
+    assert glossy.plot(material_path("gold-paint"), tmp_path / "py", **args) == 2
+    run_cli("plot", "--material", material_path("gold-paint"), "-o", tmp_path / "cli", "--figures", "theta_h,albedo",
+            "--decades", 6, "--polar-scale", "linear")
+    py_files = sorted(p.relative_to(tmp_path / "py") for p in (tmp_path / "py").rglob("*") if p.is_file())
+    assert py_files == sorted(p.relative_to(tmp_path / "cli") for p in (tmp_path / "cli").rglob("*") if p.is_file())
+    for f in py_files:
+        assert (tmp_path / "py" / f).read_bytes() == (tmp_path / "cli" / f).read_bytes(), f
+    with pytest.raises(glossy.InputError, match=r"^channel: 'Y' is none of R, G, B, luminance$"):
+        glossy.plot(material_path("gold-paint"), tmp_path / "py", channel="Y")
+    with pytest.raises(glossy.InputError, match=r"^figures: 'lobes' is none of theta_h, image_slice, albedo, polar$"):
+        glossy.plot(material_path("gold-paint"), tmp_path / "py", figures=["lobes"])
+    with pytest.raises(glossy.InputError, match=r"^decades: must be 1 to 20"):
+        glossy.plot(material_path("gold-paint"), tmp_path / "py", decades=21)
