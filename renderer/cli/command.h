@@ -64,8 +64,4 @@ inline CLI::Option* addOption(CLI::App* app, const app::OptionField& f) {
 void addSceneOptions(CLI::App* app, app::SceneOptions& o);
 void addBrdfOptions(CLI::App* app, app::BrdfOptions& o);
 
-// The material files `paths` name, sorted and each once: a folder stands for the *.toml files in it and its
-// subfolders, anything else for itself. No paths: the library.
-std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>& paths);
-
 }  // namespace glossy::cli

@@ -8,6 +8,7 @@
 #include "renderer/app/destination.h"
 #include "renderer/output/inside_folder.h"
 #include "renderer/app/image_memory.h"
+#include "renderer/app/material_files.h"
 #include "renderer/app/shard.h"
 #include "renderer/app/sheet_job.h"
 #include "renderer/app/sheet_resume.h"
@@ -79,7 +80,7 @@ int runSheets(const SheetOptions& options) {
     if (std::error_code ec; !std::filesystem::is_directory(in, ec) && !std::filesystem::is_regular_file(in, ec))
       throw InputError(in + (std::filesystem::exists(in, ec) ? ": is not a material file or folder (a device, FIFO or socket)"
                                                              : ": no such material file or folder"));
-  const std::vector<std::filesystem::path> files = materialFiles(o.inputs);
+  const std::vector<std::filesystem::path> files = app::materialFiles(o.inputs);
   const Shard shard = shardFrom(o.shard);
   // Validate every file, and where each sheet goes, before rendering any, so a typo fails in a second, not
   // after an hour. All files, not just this shard's: another shard writes to the same folder.

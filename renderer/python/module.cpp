@@ -89,6 +89,7 @@ PYBIND11_MODULE(_core, m) {
   bindMerging(m);
   bindReports(m);
   bindPlots(m);
+  bindListing(m);
   bindRendering(m);
   bindStudies(m);
 }

@@ -26,6 +26,7 @@ void bindImages(py::module_& m);
 void bindMerging(py::module_& m);
 void bindReports(py::module_& m);
 void bindPlots(py::module_& m);
+void bindListing(py::module_& m);
 void bindRendering(py::module_& m);
 void bindStudies(py::module_& m);
 

@@ -1,6 +1,7 @@
 """glossy.merge_fits, glossy.merge_sheets, glossy.plot and glossy.report write what `glossy merge fits`,
 `glossy merge sheets`, `glossy plot` and `glossy report` write (renderer/app/merge_job.h, plot_job.h,
-report_job.h), byte for byte, and refuse what they refuse in the keywords' names."""
+report_job.h), byte for byte, and refuse what they refuse in the keywords' names; glossy.list_library
+returns what `glossy list` prints (list_job.h)."""
 import shutil
 
 import pytest
@@ -77,3 +78,22 @@ def test_plot_is_the_cli_plot(tmp_path):
         glossy.plot(material_path("gold-paint"), tmp_path / "py", figures=["lobes"])
     with pytest.raises(glossy.InputError, match=r"^decades: must be 1 to 20"):
         glossy.plot(material_path("gold-paint"), tmp_path / "py", decades=21)
+
+
+def test_list_library_is_what_glossy_list_prints(tmp_path):
+    rows = glossy.list_library()
+    printed = run_cli("list").stdout
+    listed = [r for r in rows if r["error"] is None]
+    assert f"\n{len(listed)} materials," in printed
+    chrome = next(r for r in rows if r["material"] == "chrome")
+    assert chrome["database"].startswith("MERL")
+    line = next(l for l in printed.splitlines() if l.startswith("chrome "))
+    assert f"{chrome['albedo']['cook-torrance:E2']:.4f}" in line and chrome["measured"] in line
+    folder = tmp_path / "lib"
+    folder.mkdir()
+    shutil.copy(material_path("chrome"), folder / "chrome.toml")
+    (folder / "bad.toml").write_text("garbage = [\n")
+    rows = glossy.list_library([folder], panels="ward:Ngan05")
+    assert [r["error"] is not None for r in rows] == [True, False] and list(rows[1]["albedo"]) == ["ward:Ngan05"]
+    with pytest.raises(glossy.InputError, match=r"^panels: "):
+        glossy.list_library(panels="nonsense:E9")

@@ -1,10 +1,10 @@
-// Which material files a command reads: the library, or the files and folders given (command.h).
-#include "renderer/cli/command.h"
+#include "renderer/app/material_files.h"
+
 #include "renderer/util/data_dir.h"
 
 #include <algorithm>
 
-namespace glossy::cli {
+namespace glossy::app {
 
 std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>& paths) {
   std::vector<std::filesystem::path> files;
@@ -24,4 +24,4 @@ std::vector<std::filesystem::path> materialFiles(const std::vector<std::string>&
   return files;
 }
 
-}  // namespace glossy::cli
+}  // namespace glossy::app
