@@ -13,8 +13,8 @@
 // and ΔE_ITP = 720 · √(ΔI² + (ΔCt / 2)² + ΔCp²) — 1 is a just-noticeable difference at the most critical
 // adaptation. The display is a common SDR one: white L_w = 100 cd/m², black L_b = 0.1 cd/m² (1000:1).
 // Without a black level, PQ's steep foot would count a thousandth of a cd/m² in a shadow as a visible
-// difference (ΔE_ITP ≈ 5 between 0 and 0.001 cd/m²). A NaN channel displays as black, as in
-// the PNG. Validated against colour-science's RGB_to_ICtCp and delta_E_ITP (tests/delta_e_itp_test.cpp).
+// difference (ΔE_ITP 4.5 between 0 and 0.001 cd/m² of grey). A NaN channel displays as black, as in
+// the PNG. Validated against colour-science's RGB_to_ICtCp and delta_E_ITP (tests/display_metrics_test.cpp).
 #pragma once
 
 #include "renderer/image/exr_image.h"

@@ -8,7 +8,7 @@
 //   SSIM = (2 μ_x μ_y + C1)(2 σ_xy + C2) / ((μ_x² + μ_y² + C1)(σ_x² + σ_y² + C2)),  C1 = 0.01², C2 = 0.03²
 // (dynamic range 1), and a pixel's SSIM is the mean of its three channels'. 1: identical; lower: less alike.
 // As scikit-image's structural_similarity computes it with gaussian_weights=True, sigma=1.5,
-// use_sample_covariance=False, data_range=1 (tests/ssim_test.cpp validates the map against it).
+// use_sample_covariance=False, data_range=1 (tests/display_metrics_test.cpp validates the map against it).
 #pragma once
 
 #include "renderer/image/exr_image.h"

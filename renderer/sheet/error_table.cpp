@@ -72,10 +72,9 @@ std::string errorTable(const Sheet& sheet) {
     s << formatted("  HDR-FLIP includes render noise, which raises it; the [95 %%] is the noise's spread. Noise alone gives "
                    "%.4f (the measured panel against itself, half its samples each)\n",
                    sheet.flipNoiseFloor);
-  if (sheet.hasMeasured())
+  if (sheet.hasMeasured()) {
     s << "  dE_ITP (ITU-R BT.2124) and SSIM compare the panels as the PNG shows them at exposure 0; noise raises dE_ITP "
          "and lowers SSIM (the noise-floor row)\n";
-  if (sheet.hasMeasured()) {
     s << "  " << verdictText(sheet);
     if (sheet.verdict.models.size() > 1) s << " (not separated at 95 %: more samples, e.g. --target-error, may decide)";
     s << "\n";
