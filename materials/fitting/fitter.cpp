@@ -323,9 +323,9 @@ std::vector<std::string_view> fittableModels() {
 
 std::string fittableModelNames() { return joined(fittableModels(), ", "); }
 
-void requireFittable(std::string_view model) {
+void requireFittable(std::string_view model, std::string_view option) {
   if (!canFit(BuiltinModels{}, model))
-    throw InputError("--model: cannot fit '" + std::string(model) + "' (fittable: " + fittableModelNames() + ")");
+    throw InputError(std::string(option) + ": cannot fit '" + std::string(model) + "' (fittable: " + fittableModelNames() + ")");
 }
 
 FitReport fitModel(const MetricData& data, std::string_view model, const FitSettings& settings) {

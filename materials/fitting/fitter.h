@@ -36,7 +36,7 @@ struct FitReport {
 std::vector<std::string_view> fittableModels();
 std::string fittableModelNames();
 // InputError naming the fittable models unless `model` is one.
-void requireFittable(std::string_view model);
+void requireFittable(std::string_view model, std::string_view option = "--model");
 
 // Throws InputError for a model that cannot be fitted, and for data on which the fit fails.
 FitReport fitModel(const MetricData& data, std::string_view model, const FitSettings& settings = {});

@@ -1,7 +1,8 @@
 """glossy.merge_fits, glossy.merge_sheets, glossy.plot and glossy.report write what `glossy merge fits`,
 `glossy merge sheets`, `glossy plot` and `glossy report` write (renderer/app/merge_job.h, plot_job.h,
-report_job.h), byte for byte, and refuse what they refuse in the keywords' names; glossy.list_library
-returns what `glossy list` prints (list_job.h)."""
+report_job.h), and glossy.fit_tables what `glossy fit --measured-dir` writes (fit_job.h), byte for byte,
+and refuse what they refuse in the keywords' names; glossy.list_library returns what `glossy list` prints
+(list_job.h)."""
 import shutil
 
 import pytest
@@ -97,3 +98,21 @@ def test_list_library_is_what_glossy_list_prints(tmp_path):
     assert [r["error"] is not None for r in rows] == [True, False] and list(rows[1]["albedo"]) == ["ward:Ngan05"]
     with pytest.raises(glossy.InputError, match=r"^panels: "):
         glossy.list_library(panels="nonsense:E9")
+
+
+def test_fit_tables_is_the_cli_batch(tmp_path):
+    tables = tmp_path / "tables"
+    tables.mkdir()
+    shutil.copy(material_path("gold-paint").with_suffix(".nbrdf"), tables / "gold-paint.nbrdf")
+    settings = dict(starts=1, max_iterations=3)
+    done = glossy.fit_tables(tables, tmp_path / "py", models=["ashikhmin-shirley"], metrics=["E2"], **settings)
+    assert done == {"tables": 1, "fits": 1, "already_done": 0}
+    run_cli("fit", "--measured-dir", tables, "--out-dir", tmp_path / "cli", "--model", "ashikhmin-shirley", "--metric", "E2",
+            "--starts", 1, "--max-iterations", 3)
+    assert (tmp_path / "py" / "gold-paint.toml").read_bytes() == (tmp_path / "cli" / "gold-paint.toml").read_bytes()
+    # Again: the fit is there, made with these settings; nothing is fitted.
+    assert glossy.fit_tables(tables, tmp_path / "py", models=["ashikhmin-shirley"], metrics=["E2"], **settings)["already_done"] == 1
+    with pytest.raises(glossy.InputError, match=r"^metrics"):
+        glossy.fit_tables(tables, tmp_path / "py", metrics=["E3"], **settings)
+    with pytest.raises(glossy.InputError, match=r"^models"):
+        glossy.fit_tables(tables, tmp_path / "py", models=["nonsense"], **settings)
