@@ -37,6 +37,53 @@ void saveFit(const PyFit& f, const std::string& path, bool replace) {
 
 }  // namespace
 
+// glossy.fit_tables: `glossy fit --measured-dir` (renderer/app/fit_job.h), the same files.
+static void bindFitBatch(py::module_& m) {
+  m.def("fit_tables", [](const py::object& measuredDir, const py::object& outDir, const py::object& models, const py::object& metrics,
+                         const py::object& shard, int starts, int maxIterations, int threads, bool replace) {
+          return guarded([&] {
+            app::FitBatchRequest r;
+            r.measuredDir = pathText(measuredDir);
+            r.outDir = pathText(outDir);
+            r.outDirName = "out_dir", r.modelName = "models", r.metricName = "metrics";
+            const auto strings = [](const py::object& list, const char* name) {
+              std::vector<std::string> out;
+              if (list.is_none()) return out;
+              if (py::isinstance<py::str>(list)) throw InputError(std::string(name) + ": a list, not one string");
+              for (const py::handle& item : list) {
+                if (!py::isinstance<py::str>(item)) throw InputError(std::string(name) + ": each must be a string");
+                out.push_back(item.cast<std::string>());
+              }
+              return out;
+            };
+            r.models = strings(models, "models");
+            r.metrics = strings(metrics, "metrics");
+            if (!shard.is_none()) r.shard = pathText(shard);
+            r.settings.refinedStarts = int(checkedOption(app::options::kStarts, starts));
+            r.settings.maxIterations = int(checkedOption(app::options::kMaxIterations, maxIterations));
+            r.settings.threads = int(checkedOption(app::options::kThreads, threads));
+            r.replace = replace;
+            app::FitBatchRun run;
+            {
+              py::gil_scoped_release noGil;
+              run = app::fitTables(r);
+            }
+            py::dict d;
+            d["tables"] = run.tables, d["fits"] = run.fits, d["already_done"] = run.alreadyDone;
+            return d;
+          });
+        }, py::arg("measured_dir"), py::arg("out_dir"), py::arg("models") = py::none(), py::arg("metrics") = py::none(),
+        py::arg("shard") = py::none(), py::kw_only(), py::arg("starts") = 4, py::arg("max_iterations") = 200, py::arg("threads") = 0,
+        py::arg("replace") = false, R"doc(
+Fits every model (default: every fittable one) under every metric (default E1 and E2) to every table and
+network in measured_dir, one material file per table in out_dir, as `glossy fit --measured-dir DIR
+--out-dir OUT` does (the same files): fits this version already made with these settings are skipped, so
+a call resumes; shard='i/N' fits one shard of a job array. Returns counts: tables, fits, already_done.
+Runs without the GIL; it cannot be interrupted.
+)doc");
+
+}
+
 void bindFitting(py::module_& m) {
   py::class_<PyFit, std::shared_ptr<PyFit>>(m, "Fit", "A fitted model: its parameters, its BRDF and the error E it reached.")
       .def_property_readonly("model", [](const PyFit& f) { return f.report.fit.id.model; })
@@ -100,48 +147,7 @@ the same table and settings, on any thread count): a coarse scan of the lobe's s
 from the best `starts` widths. Returns a glossy.Fit. Runs without the GIL; it cannot be interrupted.
 )doc");
 
-  m.def("fit_tables", [](const py::object& measuredDir, const py::object& outDir, const py::object& models, const py::object& metrics,
-                         const py::object& shard, int starts, int maxIterations, int threads, bool replace) {
-          return guarded([&] {
-            app::FitBatchRequest r;
-            r.measuredDir = pathText(measuredDir);
-            r.outDir = pathText(outDir);
-            r.outDirName = "out_dir", r.modelName = "models", r.metricName = "metrics";
-            const auto strings = [](const py::object& list, const char* name) {
-              std::vector<std::string> out;
-              if (list.is_none()) return out;
-              if (py::isinstance<py::str>(list)) throw InputError(std::string(name) + ": a list, not one string");
-              for (const py::handle& item : list) {
-                if (!py::isinstance<py::str>(item)) throw InputError(std::string(name) + ": each must be a string");
-                out.push_back(item.cast<std::string>());
-              }
-              return out;
-            };
-            r.models = strings(models, "models");
-            r.metrics = strings(metrics, "metrics");
-            if (!shard.is_none()) r.shard = pathText(shard);
-            r.settings.refinedStarts = int(checkedOption(app::options::kStarts, starts));
-            r.settings.maxIterations = int(checkedOption(app::options::kMaxIterations, maxIterations));
-            r.settings.threads = int(checkedOption(app::options::kThreads, threads));
-            r.replace = replace;
-            app::FitBatchRun run;
-            {
-              py::gil_scoped_release noGil;
-              run = app::fitTables(r);
-            }
-            py::dict d;
-            d["tables"] = run.tables, d["fits"] = run.fits, d["already_done"] = run.alreadyDone;
-            return d;
-          });
-        }, py::arg("measured_dir"), py::arg("out_dir"), py::arg("models") = py::none(), py::arg("metrics") = py::none(),
-        py::arg("shard") = py::none(), py::kw_only(), py::arg("starts") = 4, py::arg("max_iterations") = 200, py::arg("threads") = 0,
-        py::arg("replace") = false, R"doc(
-Fits every model (default: every fittable one) under every metric (default E1 and E2) to every table and
-network in measured_dir, one material file per table in out_dir, as `glossy fit --measured-dir DIR
---out-dir OUT` does (the same files): fits this version already made with these settings are skipped, so
-a call resumes; shard='i/N' fits one shard of a job array. Returns counts: tables, fits, already_done.
-Runs without the GIL; it cannot be interrupted.
-)doc");
+  bindFitBatch(m);
 }
 
 }  // namespace glossy::python
