@@ -31,12 +31,12 @@ std::vector<std::filesystem::path> tomlFiles(const std::filesystem::path& dir) {
   return files;
 }
 
+}  // namespace
+
 // The rule of glossy fit -o (fit_output.h), for fits that come from files: glossy's fit replaces glossy's
 // earlier one of the same model and metric, saying so; a published fit is added where the library has
 // none, and never replaces a different published one unless --replace. Two files naming one material are
 // refused: which of them should win is the user's to say.
-}  // namespace
-
 MergeFitsResult mergeFits(const MergeFitsRequest& o) {
   checkOutputFolder(o.library, o.libraryName);
   const OutputLock lock(o.library, o.libraryName);
