@@ -39,7 +39,11 @@ inline std::string csvField(std::string_view text) {
 template <class Items, class Text = std::identity>
 std::string joined(const Items& items, std::string_view separator, Text text = {}) {
   std::string out;
-  for (const auto& item : items) out.append(out.empty() ? "" : separator).append(std::string_view(text(item)));
+  bool first = true;  // not out.empty(): an empty first item still takes a separator after it
+  for (const auto& item : items) {
+    out.append(first ? "" : separator).append(std::string_view(text(item)));
+    first = false;
+  }
   return out;
 }
 

@@ -22,25 +22,6 @@ namespace {
 
 std::string formatSeconds(double s) { return s < 120 ? formatted("%.1f s", s) : formatted("%.0f min", s / 60.0); }
 
-}  // namespace
-
-std::string describeFit(const FitReport& r) {
-  std::ostringstream s;
-  s.precision(6);
-  s << r.fit.id.str() << ": " << r.fit.id.metric << " = " << r.error << " in " << formatSeconds(r.seconds) << " ("
-    << r.scanned << " scanned, refined starts reached";
-  for (double e : r.startErrors) s << " " << e;
-  s << ")";
-  for (const auto& [key, value] : r.fit.params.values()) {
-    s << "; " << key << " = ";
-    if (auto d = std::get_if<double>(&value)) s << *d;
-    if (auto c = std::get_if<Rgb>(&value)) s << "[" << c->r << ", " << c->g << ", " << c->b << "]";
-  }
-  return s.str();
-}
-
-namespace {
-
 std::vector<std::filesystem::path> tablesIn(const std::filesystem::path& dir) {
   if (std::error_code ec; !std::filesystem::is_directory(dir, ec)) throw InputError(dir.string() + ": not a directory");
   // A material's .binary wins over its .binary.xz, which wins over its .nbrdf network.
@@ -68,6 +49,21 @@ double fitCost(const std::vector<std::string>& models, size_t metrics, const std
 }
 
 }  // namespace
+
+std::string describeFit(const FitReport& r) {
+  std::ostringstream s;
+  s.precision(6);
+  s << r.fit.id.str() << ": " << r.fit.id.metric << " = " << r.error << " in " << formatSeconds(r.seconds) << " ("
+    << r.scanned << " scanned, refined starts reached";
+  for (double e : r.startErrors) s << " " << e;
+  s << ")";
+  for (const auto& [key, value] : r.fit.params.values()) {
+    s << "; " << key << " = ";
+    if (auto d = std::get_if<double>(&value)) s << *d;
+    if (auto c = std::get_if<Rgb>(&value)) s << "[" << c->r << ", " << c->g << ", " << c->b << "]";
+  }
+  return s.str();
+}
 
 FitBatchRun fitTables(const FitBatchRequest& o) {
   if (o.outDir.empty()) throw InputError("glossy fit --measured-dir needs " + o.outDirName);

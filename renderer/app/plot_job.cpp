@@ -27,16 +27,13 @@ void checkChoice(const std::string& value, const std::array<const char*, N>& cho
     throw InputError(option + ": '" + value + "' is none of " + joined(choices, ", "));
 }
 
-// Every choice checked before the work starts, in the words of the option or keyword that gave it (the
-// command line names its output "-o", Python "output").
+// Every choice checked before the work starts, in the words of the option or keyword that gave it.
 void checkRequest(const PlotRequest& o) {
-  const bool cli = o.outName == "-o";
-  checkChoice(o.channel, kChannels, cli ? "--channel" : "channel");
-  checkChoice(o.polarScale, kPolarScales, cli ? "--polar-scale" : "polar_scale");
-  for (const std::string& kind : o.figures) checkChoice(kind, plot::kPlotKinds, cli ? "--figures" : "figures");
+  checkChoice(o.channel, kChannels, o.channelName);
+  checkChoice(o.polarScale, kPolarScales, o.polarScaleName);
+  for (const std::string& kind : o.figures) checkChoice(kind, plot::kPlotKinds, o.figuresName);
   if (o.decades < 0 || o.decades > 20)
-    throw InputError((cli ? std::string("--decades") : std::string("decades")) + ": must be 1 to 20 (0: down to every curve's floor), not " +
-                     std::to_string(o.decades));
+    throw InputError(o.decadesName + ": must be 1 to 20 (0: down to every curve's floor), not " + std::to_string(o.decades));
 }
 
 }  // namespace

@@ -23,6 +23,8 @@ struct PlotRequest {
   std::string panelsName = "--panels";      // what messages call them
   std::vector<std::string> figures;         // the kinds to draw (plot::kPlotKinds); empty: all
   int decades = 0;                          // below the peak, 1–20; 0: down to every curve's floor
+  // What messages call the other options: the command line's, or Python's keywords.
+  std::string channelName = "--channel", polarScaleName = "--polar-scale", figuresName = "--figures", decadesName = "--decades";
 };
 
 struct PlotRun {

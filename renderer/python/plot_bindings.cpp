@@ -15,6 +15,7 @@ void bindPlots(py::module_& m) {
             r.out = pathText(output);
             r.outName = "output";
             r.panelsName = "panels";
+            r.channelName = "channel", r.polarScaleName = "polar_scale", r.figuresName = "figures", r.decadesName = "decades";
             if (!measured.is_none()) r.measured = pathText(measured);
             if (!merlDir.is_none()) r.merlDir = pathText(merlDir);
             r.channel = channel;
