@@ -31,7 +31,7 @@ void checkChoice(const std::string& value, const std::array<const char*, N>& cho
 void checkRequest(const PlotRequest& o) {
   checkChoice(o.channel, kChannels, o.channelName);
   checkChoice(o.polarScale, kPolarScales, o.polarScaleName);
-  for (const std::string& kind : o.figures) checkChoice(kind, plot::kPlotKinds, o.figuresName);
+  plot::checkPlotKinds(o.figures, o.figuresName);
   if (o.decades < 0 || o.decades > 20)
     throw InputError(o.decadesName + ": must be 1 to 20 (0: down to every curve's floor), not " + std::to_string(o.decades));
 }

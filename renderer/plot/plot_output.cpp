@@ -1,10 +1,13 @@
 #include "renderer/plot/plot_output.h"
 
+#include "materials/core/input_error.h"
 #include "materials/core/text.h"
 #include "renderer/util/atomic_file.h"
 #include "renderer/plot/svg_to_png.h"
 
 #include <nlohmann/json.hpp>
+
+#include <algorithm>
 
 namespace glossy::plot {
 
@@ -13,6 +16,12 @@ namespace {
 constexpr double kPngZoom = 1.5;  // 1.5 px per SVG unit: sharp text in documents and on screens
 
 }  // namespace
+
+void checkPlotKinds(const std::vector<std::string>& kinds, const std::string& option) {
+  for (const std::string& kind : kinds)
+    if (std::find(kPlotKinds.begin(), kPlotKinds.end(), kind) == kPlotKinds.end())
+      throw InputError(option + ": '" + shortened(kind) + "' is none of " + joined(kPlotKinds, ", "));
+}
 
 void writePlots(OwnedFolder& dir, const PlotSet& set, const std::vector<PlotFigure>& figures,
                 const std::optional<std::filesystem::path>& rsvgConvert) {

@@ -15,12 +15,16 @@
 #include <array>
 #include <filesystem>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace glossy::plot {
 
 // The kinds of figure, as plots.json names them (and --figures, --plot-kinds choose them).
 inline constexpr std::array<const char*, 4> kPlotKinds = {"theta_h", "image_slice", "albedo", "polar"};
+
+// Throws InputError, in the words of `option` ("--figures", "plot_kinds"), for a kind not in kPlotKinds.
+void checkPlotKinds(const std::vector<std::string>& kinds, const std::string& option);
 
 // The command that fills a plot folder, as its manifest names it.
 inline constexpr const char* kPlotCommand = "glossy plot";

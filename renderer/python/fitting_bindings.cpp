@@ -46,18 +46,8 @@ static void bindFitBatch(py::module_& m) {
             r.measuredDir = pathText(measuredDir);
             r.outDir = pathText(outDir);
             r.outDirName = "out_dir", r.modelName = "models", r.metricName = "metrics";
-            const auto strings = [](const py::object& list, const char* name) {
-              std::vector<std::string> out;
-              if (list.is_none()) return out;
-              if (py::isinstance<py::str>(list)) throw InputError(std::string(name) + ": a list, not one string");
-              for (const py::handle& item : list) {
-                if (!py::isinstance<py::str>(item)) throw InputError(std::string(name) + ": each must be a string");
-                out.push_back(item.cast<std::string>());
-              }
-              return out;
-            };
-            r.models = strings(models, "models");
-            r.metrics = strings(metrics, "metrics");
+            r.models = stringList(models, "models");
+            r.metrics = stringList(metrics, "metrics");
             if (!shard.is_none()) r.shard = pathText(shard);
             r.settings.refinedStarts = int(checkedOption(app::options::kStarts, starts));
             r.settings.maxIterations = int(checkedOption(app::options::kMaxIterations, maxIterations));

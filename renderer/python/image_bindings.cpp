@@ -28,12 +28,6 @@ RgbImage imageOf(const py::handle& value, const char* name) {
   return image;
 }
 
-py::array_t<float> mapArray(std::vector<float>&& map, int width, int height) {
-  auto* pixels = new std::vector<float>(std::move(map));
-  py::capsule owner(pixels, [](void* p) { delete static_cast<std::vector<float>*>(p); });
-  return py::array_t<float>({py::ssize_t(height), py::ssize_t(width)}, pixels->data(), owner);
-}
-
 // Both images read and checked, of one size.
 std::pair<RgbImage, RgbImage> pairOf(const py::handle& reference, const py::handle& test) {
   std::pair<RgbImage, RgbImage> p{imageOf(reference, "reference"), imageOf(test, "test")};
@@ -51,7 +45,7 @@ void bindImages(py::module_& m) {
             if (!(white > 0.0 && white <= 10000.0 && black >= 0.0 && black < white))
               throw InputError(formatted("white and black: need 0 <= black < white <= 10000 cd/m2, not %g and %g", white, black));
             const auto [r, t] = pairOf(reference, test);
-            return mapArray(deltaEItpMap(r, t, SdrDisplay{white, black}), r.width, r.height);
+            return floatArray(deltaEItpMap(r, t, SdrDisplay{white, black}), {r.height, r.width});
           });
         }, py::arg("reference"), py::arg("test"), py::arg("white") = SdrDisplay{}.white, py::arg("black") = SdrDisplay{}.black, R"doc(
 The per-pixel ΔE_ITP (ITU-R BT.2124) of two linear Rec. 709 images (height, width, 3) as an SDR display of
@@ -62,7 +56,7 @@ score them at another. Returns float32 (height, width).
   m.def("ssim", [](const py::handle& reference, const py::handle& test) {
           return guarded([&] {
             const auto [r, t] = pairOf(reference, test);
-            return mapArray(ssimMap(r, t), r.width, r.height);
+            return floatArray(ssimMap(r, t), {r.height, r.width});
           });
         }, py::arg("reference"), py::arg("test"), R"doc(
 The per-pixel SSIM (Wang et al. 2004; 11×11 Gaussian window, σ 1.5, the three channels' mean) of two

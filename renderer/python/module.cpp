@@ -29,13 +29,25 @@ double checkedOption(const app::OptionSpec& spec, double value, const std::strin
   return value;
 }
 
+py::array_t<float> floatArray(std::vector<float>&& values, std::vector<py::ssize_t> shape) {
+  auto* owned = new std::vector<float>(std::move(values));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<float>*>(p); });
+  return py::array_t<float>(std::move(shape), owned->data(), owner);
+}
+
 py::array_t<float> imageArray(RgbImage&& image) {
-  auto* pixels = new std::vector<float>(std::move(image.pixels));
-  py::capsule owner(pixels, [](void* p) { delete static_cast<std::vector<float>*>(p); });
-  const py::ssize_t h = image.height, w = image.width;
-  return py::array_t<float>({h, w, py::ssize_t(3)},
-                            {py::ssize_t(sizeof(float)) * 3 * w, py::ssize_t(sizeof(float)) * 3, py::ssize_t(sizeof(float))},
-                            pixels->data(), owner);
+  return floatArray(std::move(image.pixels), {py::ssize_t(image.height), py::ssize_t(image.width), 3});
+}
+
+std::vector<std::string> stringList(const py::object& list, const std::string& name) {
+  std::vector<std::string> out;
+  if (list.is_none()) return out;
+  if (py::isinstance<py::str>(list)) throw InputError(name + ": a list, not one string");
+  for (const py::handle& item : list) {
+    if (!py::isinstance<py::str>(item)) throw InputError(name + ": each must be a string");
+    out.push_back(item.cast<std::string>());
+  }
+  return out;
 }
 
 std::string pathText(const py::handle& path) {

@@ -15,6 +15,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace glossy::python {
 
@@ -56,8 +57,15 @@ auto guarded(F&& f) {
 // when not its keyword ("size: width").
 double checkedOption(const app::OptionSpec& spec, double value, const std::string& name = "");
 
+// Values as a C-ordered float32 array of `shape` that owns them: no copy.
+py::array_t<float> floatArray(std::vector<float>&& values, std::vector<py::ssize_t> shape);
+
 // An image as a float32 array (height, width, 3) that owns the pixels it was given: no copy.
 py::array_t<float> imageArray(RgbImage&& image);
+
+// A keyword given as a list of strings (None: empty), in the words of `name`: "figures: a list, not one
+// string" (Python would otherwise iterate a string's characters).
+std::vector<std::string> stringList(const py::object& list, const std::string& name);
 
 // A path argument: str or os.PathLike, as the text the command line would have been given.
 std::string pathText(const py::handle& path);

@@ -25,13 +25,7 @@ void bindPlots(py::module_& m) {
               if (!py::isinstance<py::str>(panels)) throw InputError("panels: must be a string, a grid's name or a comma list of fits");
               r.panels = panels.cast<std::string>();
             }
-            if (!figures.is_none()) {
-              if (py::isinstance<py::str>(figures)) throw InputError("figures: a list of kinds, not one string");
-              for (const py::handle& f : figures) {
-                if (!py::isinstance<py::str>(f)) throw InputError("figures: each kind must be a string");
-                r.figures.push_back(f.cast<std::string>());
-              }
-            }
+            r.figures = stringList(figures, "figures");
             const app::PlotRun run = app::makePlots(r);
             return run.figures;
           });

@@ -1,11 +1,6 @@
 // glossy.report: `glossy report` (renderer/app/report_job.h) from Python, the same site.
-#include "materials/core/input_error.h"
-#include "materials/core/text.h"
 #include "renderer/app/report_job.h"
-#include "renderer/plot/plot_output.h"
 #include "renderer/python/module_support.h"
-
-#include <algorithm>
 
 namespace glossy::python {
 
@@ -17,16 +12,8 @@ void bindReports(py::module_& m) {
             o.sheetsDir = pathText(sheets);
             o.site = pathText(output);
             if (!plots.is_none()) o.plotsDir = pathText(plots);
-            if (!plotKinds.is_none()) {
-              if (py::isinstance<py::str>(plotKinds)) throw InputError("plot_kinds: a list of kinds, not one string");
-              for (const py::handle& k : plotKinds) {
-                if (!py::isinstance<py::str>(k)) throw InputError("plot_kinds: each kind must be a string");
-                const std::string kind = k.cast<std::string>();
-                if (std::find(plot::kPlotKinds.begin(), plot::kPlotKinds.end(), kind) == plot::kPlotKinds.end())
-                  throw InputError("plot_kinds: '" + kind + "' is none of " + joined(plot::kPlotKinds, ", "));
-                o.plotKinds.push_back(kind);
-              }
-            }
+            o.plotKinds = stringList(plotKinds, "plot_kinds");
+            o.plotKindsName = "plot_kinds";
             o.plotData = plotData;
             const report::ReportResult r = app::makeReport(o, "output");
             py::dict d;

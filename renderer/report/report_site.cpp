@@ -35,12 +35,6 @@ namespace {
 // A plot's SVG or CSV is copied as it is; the largest glossy plot writes is a few MB.
 constexpr std::uintmax_t kMaxPlotFileBytes = std::uintmax_t(256) << 20;
 
-void checkPlotKinds(const std::vector<std::string>& kinds) {
-  for (const std::string& kind : kinds)
-    if (std::find(plot::kPlotKinds.begin(), plot::kPlotKinds.end(), kind) == plot::kPlotKinds.end())
-      throw InputError("--plot-kinds: '" + shortened(kind) + "' is not a kind of plot (" + joined(plot::kPlotKinds, ", ") + ")");
-}
-
 // The plots of one material as the site shows them: the kinds asked for, the data files if asked for, and
 // each figure's shown file named.
 PlotIndex sitePlots(PlotIndex index, const ReportOptions& o) {
@@ -217,7 +211,7 @@ ReportResult writeStudyReport(OwnedFolder& site, const ReportOptions& options) {
 ReportResult writeReport(const ReportOptions& options) {
   // Everything is checked before anything is written: the destination first, then every input.
   OwnedFolder site(options.site, layout::kGenerator, "-o");
-  checkPlotKinds(options.plotKinds);
+  plot::checkPlotKinds(options.plotKinds, options.plotKindsName);
   if (study::isStudyFolder(options.sheetsDir)) return writeStudyReport(site, options);
   const SheetSite sheets = readSheetSite(options.sheetsDir, options);
   std::vector<std::string> files;

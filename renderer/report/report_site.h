@@ -23,6 +23,7 @@ struct ReportOptions {
   std::filesystem::path site;
   // Only the plots of these kinds ("theta_h", "polar", ...; plot::kPlotKinds); empty: all.
   std::vector<std::string> plotKinds;
+  std::string plotKindsName = "--plot-kinds";  // what a message calls plotKinds
   // Copy each figure's SVG and CSV beside its picture (and link them); false: the picture alone.
   bool plotData = false;
 };

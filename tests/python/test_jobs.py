@@ -77,6 +77,10 @@ def test_plot_is_the_cli_plot(tmp_path):
         glossy.plot(material_path("gold-paint"), tmp_path / "py", channel="Y")
     with pytest.raises(glossy.InputError, match=r"^figures: 'lobes' is none of theta_h, image_slice, albedo, polar$"):
         glossy.plot(material_path("gold-paint"), tmp_path / "py", figures=["lobes"])
+    with pytest.raises(glossy.InputError, match=r"^figures: a list, not one string$"):
+        glossy.plot(material_path("gold-paint"), tmp_path / "py", figures="theta_h")
+    with pytest.raises(glossy.InputError, match=r"^figures: each must be a string$"):
+        glossy.plot(material_path("gold-paint"), tmp_path / "py", figures=["theta_h", 2])
     with pytest.raises(glossy.InputError, match=r"^decades: must be 1 to 20"):
         glossy.plot(material_path("gold-paint"), tmp_path / "py", decades=21)
 
