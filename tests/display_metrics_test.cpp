@@ -4,16 +4,15 @@
 // the validation skips, saying so, without it).
 #include "renderer/image/delta_e_itp.h"
 #include "renderer/image/ssim.h"
+#include "tests/support/test_python.h"
 #include "tests/support/test_support.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <random>
-#include <sys/wait.h>
 
 namespace glossy::test {
 
@@ -98,52 +97,17 @@ TEST(DisplayMetrics, MoreNoiseIsFartherAndLessSimilar) {
   }
 }
 
-namespace {
-
-struct ScriptRun {
-  int status = -1;
-  std::string out, err;
-};
-
-ScriptRun runReference(const TempDir& tmp, const std::vector<std::string>& args) {
-  std::string cmd = shellQuote(GLOSSY_TEST_PYTHON);
-  cmd.append(" ").append(shellQuote((sourceDir() / "tests/display_metrics/reference_display_metrics.py").string()));
-  for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
-  cmd.append(" >").append(shellQuote((tmp / "script.out").string()));
-  cmd.append(" 2>").append(shellQuote((tmp / "script.err").string()));
-  const int raw = std::system(cmd.c_str());
-  ScriptRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = readText(tmp / "script.out");
-  r.err = readText(tmp / "script.err");
-  return r;
-}
-
-void writeFloats(const std::filesystem::path& path, const std::vector<float>& v) {
-  std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(v.data()), std::streamsize(v.size() * sizeof(float)));
-}
-
-std::vector<float> readFloats(const std::filesystem::path& path, size_t n) {
-  std::vector<float> v(n);
-  std::ifstream in(path, std::ios::binary);
-  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(float)));
-  if (!in) throw std::runtime_error("cannot read " + path.string());
-  return v;
-}
-
-}  // namespace
 
 // The validation: every pixel of both maps against colour-science's RGB_to_ICtCp and delta_E_ITP and
 // scikit-image's structural_similarity (gaussian_weights, sigma 1.5, use_sample_covariance False), on
 // images with highlights above white, negative and NaN pixels, colour shifts, blur and noise, and a
 // non-square size (the mirrored borders).
 TEST(DisplayMetricsReference, MatchesColourScienceAndScikitImage) {
-  if (!std::filesystem::exists(GLOSSY_TEST_PYTHON))
-    GTEST_SKIP() << "the test Python " << GLOSSY_TEST_PYTHON << " is absent (scripts/test-tools creates it)";
+  if (!std::filesystem::exists(testPython()))
+    GTEST_SKIP() << "the test Python " << testPython() << " is absent (scripts/test-tools creates it)";
   TempDir tmp;
-  if (const ScriptRun check = runReference(tmp, {"--check"}); check.status != 0)
-    GTEST_SKIP() << "colour-science or scikit-image is not importable by " << GLOSSY_TEST_PYTHON << ": " << check.err;
+  if (const ScriptRun check = runTestPython(tmp, "tests/display_metrics/reference_display_metrics.py", {"--check"}); check.status != 0)
+    GTEST_SKIP() << "colour-science or scikit-image is not importable by " << testPython() << ": " << check.err;
 
   const int w = 61, h = 40;
   const RgbImage base = ball(w, h, 1.0, 0.0, 1);
@@ -158,7 +122,7 @@ TEST(DisplayMetricsReference, MatchesColourScienceAndScikitImage) {
     writeFloats(stem + "_test.f32", pairs[i].second.pixels);
     for (const char* s : {"_ref.f32", "_test.f32", "_de.f32", "_ssim.f32"}) args.push_back(stem + s);
   }
-  const ScriptRun run = runReference(tmp, args);
+  const ScriptRun run = runTestPython(tmp, "tests/display_metrics/reference_display_metrics.py", args);
   ASSERT_EQ(run.status, 0) << run.err;
   for (size_t i = 0; i < pairs.size(); ++i) {
     const std::string stem = (tmp / ("pair" + std::to_string(i))).string();

@@ -8,17 +8,16 @@
 #include "renderer/image/masked_mean.h"
 #include "renderer/sheet/sheet.h"
 #include "tests/support/image_regression.h"
+#include "tests/support/test_python.h"
 #include "tests/support/test_support.h"
 
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <random>
 #include <sstream>
-#include <sys/wait.h>
 #include <time.h>
 
 namespace glossy::test {
@@ -113,32 +112,6 @@ RgbImage uniform(int w, int h, float r, float g, float b) {
   RgbImage img(w, h);
   for (size_t i = 0; i < img.pixels.size(); i += 3) img.pixels[i] = r, img.pixels[i + 1] = g, img.pixels[i + 2] = b;
   return img;
-}
-
-struct ScriptRun {
-  int status = -1;
-  std::string out, err;
-};
-ScriptRun runReferenceScript(const TempDir& tmp, const std::vector<std::string>& args) {
-  std::string cmd = shellQuote(GLOSSY_TEST_PYTHON);
-  cmd.append(" ").append(shellQuote((sourceDir() / "tests/flip/reference_flip.py").string()));
-  for (const auto& a : args) cmd.append(" ").append(shellQuote(a));
-  cmd.append(" >").append(shellQuote((tmp / "script.out").string()));
-  cmd.append(" 2>").append(shellQuote((tmp / "script.err").string()));
-  const int raw = std::system(cmd.c_str());
-  ScriptRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = readText(tmp / "script.out");
-  r.err = readText(tmp / "script.err");
-  return r;
-}
-
-std::vector<float> readFloats(const std::filesystem::path& path, size_t n) {
-  std::vector<float> v(n);
-  std::ifstream in(path, std::ios::binary);
-  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(n * sizeof(float)));
-  if (!in) throw std::runtime_error("cannot read " + path.string());
-  return v;
 }
 
 // A sheet panel of a reference sheet in tests/reference/.
@@ -342,12 +315,12 @@ TEST(FlipProperties, MaskedMeanAveragesTheMaskedPixels) {
 
 // The validation: flip-evaluator's HDR-ꟻLIP on the same EXR files.
 TEST(FlipReference, MatchesFlipEvaluator) {
-  if (!std::filesystem::exists(GLOSSY_TEST_PYTHON))
-    GTEST_SKIP() << "the test Python " << GLOSSY_TEST_PYTHON << " is absent (scripts/test-tools creates it)";
+  if (!std::filesystem::exists(testPython()))
+    GTEST_SKIP() << "the test Python " << testPython() << " is absent (scripts/test-tools creates it)";
   TempDir tmp;
-  ScriptRun check = runReferenceScript(tmp, {"--check"});
+  ScriptRun check = runTestPython(tmp, "tests/flip/reference_flip.py", {"--check"});
   while (!check.err.empty() && std::isspace(static_cast<unsigned char>(check.err.back()))) check.err.pop_back();
-  if (check.status != 0) GTEST_SKIP() << "flip_evaluator is not importable by " << GLOSSY_TEST_PYTHON << ": " << check.err;
+  if (check.status != 0) GTEST_SKIP() << "flip_evaluator is not importable by " << testPython() << ": " << check.err;
 
   const RgbImage base = scene(160, 120, 13), sheet = scene(256, 256, 14);
   // More than half the reference black: its median luminance is 0, which flip-evaluator ≥ 1.7 floors.
@@ -391,7 +364,7 @@ TEST(FlipReference, MatchesFlipEvaluator) {
     writeExr(tmp / (stem + "_test.exr"), pairs[i].test, {}, PixelType::Float);
     for (const char* s : {"_ref.exr", "_test.exr", "_map.f32"}) args.push_back((tmp / (stem + s)).string());
   }
-  const ScriptRun run = runReferenceScript(tmp, args);
+  const ScriptRun run = runTestPython(tmp, "tests/flip/reference_flip.py", args);
   ASSERT_EQ(run.status, 0) << run.err;
   std::istringstream lines(run.out);
   double worstMean = 0, worstPixel = 0;
