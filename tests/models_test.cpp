@@ -137,13 +137,21 @@ TEST(Sampling, PdfIsTheDensitySampleDrawsAndWeightIsRhoCosOverPdf) {
 }
 
 // The batch forms the path tracer calls (sampleBatch, evalPdfBatch): lane by lane what sample and evalPdf
-// return, for every fit of the library, 1 lane to more than two batches of them, both lobes of the mixture,
-// V and L below the horizon, and the ends of the unit square; only the vector math's last bits may differ.
+// return, for every fit of the library (the sharpest lobes included), 1 lane to more than two batches of
+// them, both lobes of the mixture, V at 89.7° and V and L below the horizon, and the ends of the unit
+// square. Cook-Torrance's and Microfacet's one-lane forms are the plain formulas of their headers (libm)
+// and their batch forms are kernels over lanes (libmvec, at most 4 ulp from libm per call), so the two
+// cannot share every bit: they must agree to 1e-12 relative (the worst seen is 3e-14, printed).
 TEST(Sampling, BatchFormsEqualTheOneLaneForms) {
   const auto brdfs = libraryBrdfs();
   std::mt19937_64 rng(17);
   std::uniform_real_distribution<double> uni(0.0, 1.0);
-  const auto close = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); };
+  double worst = 0.0;
+  const auto close = [&](double a, double b) {
+    const double d = std::abs(a - b) / std::max(1.0, std::abs(b));
+    worst = std::max(worst, d);
+    return d <= 1e-12;
+  };
   int cookTorrance = 0, microfacet = 0, validSamples = 0;
   for (const auto& [name, brdf] : brdfs) {
     cookTorrance += brdf.as<CookTorrance>() != nullptr;
@@ -153,7 +161,7 @@ TEST(Sampling, BatchFormsEqualTheOneLaneForms) {
       std::vector<double> uLobe(n);
       std::vector<Vec2> u(n);
       for (int k = 0; k < n; ++k) {
-        V[k] = k % 11 == 5 ? dir(1.7, 0.4) : dir(1.5 * uni(rng), 2 * kPi * uni(rng));
+        V[k] = k % 11 == 5 ? dir(1.7, 0.4) : k % 7 == 3 ? dir(1.565, 2 * kPi * uni(rng)) : dir(1.5 * uni(rng), 2 * kPi * uni(rng));
         L[k] = k % 13 == 7 ? dir(1.6, 2.0) : dir(1.5 * uni(rng), 2 * kPi * uni(rng));
         uLobe[k] = uni(rng);
         u[k] = k % 9 == 2 ? Vec2(0.0, 0.0) : k % 9 == 4 ? Vec2(1.0 - 0x1p-53, 0.5) : Vec2(uni(rng), uni(rng));
@@ -167,11 +175,12 @@ TEST(Sampling, BatchFormsEqualTheOneLaneForms) {
         ASSERT_EQ(s[k].valid(), one.valid()) << name << " lane " << k << " of " << n;
         validSamples += one.valid();
         if (one.valid()) {
-          ASSERT_TRUE(close(s[k].pdf, one.pdf)) << name << ": pdf " << s[k].pdf << " vs " << one.pdf;
-          for (int c = 0; c < 3; ++c) {
-            ASSERT_TRUE(close(s[k].L[c], one.L[c])) << name << ": L " << s[k].L[c] << " vs " << one.L[c];
-            ASSERT_TRUE(close(s[k].weight[c], one.weight[c])) << name << ": weight";
-          }
+          // The direction, then the value and density at the batch's own direction: at grazing angles
+          // a last-bit difference in L moves a sharp lobe's density by more than 1e-12 relative.
+          for (int c = 0; c < 3; ++c) ASSERT_TRUE(close(s[k].L[c], one.L[c])) << name << ": L " << s[k].L[c] << " vs " << one.L[c];
+          const BrdfSample there = mixtureSample(s[k].L, evalPdf(brdf, s[k].L, V[k]));
+          ASSERT_TRUE(close(s[k].pdf, there.pdf)) << name << ": pdf " << s[k].pdf << " vs " << there.pdf;
+          for (int c = 0; c < 3; ++c) ASSERT_TRUE(close(s[k].weight[c], there.weight[c])) << name << ": weight";
         }
         const BrdfValue value = evalPdf(brdf, L[k], V[k]);
         ASSERT_TRUE(close(v[k].pdf, value.pdf)) << name << ": evalPdf's pdf " << v[k].pdf << " vs " << value.pdf;
@@ -182,6 +191,7 @@ TEST(Sampling, BatchFormsEqualTheOneLaneForms) {
   EXPECT_GT(cookTorrance, 0) << "no Cook-Torrance fit in the library: its batch forms went untested";
   EXPECT_GT(microfacet, 0) << "no Microfacet fit in the library: its batch forms went untested";
   EXPECT_GT(validSamples, 1000);
+  std::printf("worst relative difference %.3g\n", worst);
 }
 
 TEST(Sampling, PdfIntegratesToTheSamplersAcceptanceProbability) {

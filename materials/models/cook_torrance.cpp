@@ -1,4 +1,4 @@
-// Cook-Torrance's batch forms (cook_torrance.h): the same operations as sampleLobe and evalPdf, lane by
+// Cook-Torrance's batch forms (cook_torrance.h): the formulas of sampleLobe and evalPdf, lane by
 // lane, as loops over arrays that the compiler vectorises. This file is compiled without errno for sqrt
 // and without trapping math (materials/CMakeLists.txt): neither changes a value, but each would keep a
 // branch in the loops (a libm call for a negative sqrt; no speculated division under a select), and a

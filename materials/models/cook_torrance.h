@@ -79,24 +79,21 @@ struct CookTorrance {
     const HalfVector h(L, V);
     return lobePdf(h, std::exp(-h.tan2Theta / (m * m)));
   }
-  // sample and evalPdf are their batch forms' one lane, so that a path gets the same bits from the path
-  // tracer's waves as from its reference.
-  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const {
-    BrdfSample s;
-    sampleMixtureBatch(*this, &V, &uLobe, &u, &s, 1);
-    return s;
+  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
+  double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
+  // ρ and the mixture's density at L, D's exponential computed once for both.
+  BrdfValue evalPdf(const Vec3& L, const Vec3& V) const {
+    if (L.z <= 0.0 || V.z <= 0.0) return {};
+    const LobeGeometry g(L, V);
+    const double m2 = m * m, beckmann = std::exp(-g.h.tan2Theta / m2), p = specularProbability();
+    return {kd * kInvPi + ks * lobe(g, m2, beckmann, eta), mixtureDensity(p, p > 0.0 ? lobePdf(g.h, beckmann) : 0.0, L)};
   }
-  // The batch forms (brdf_sample.h): sampleLobe's θ_h, and evalPdf for many lanes, with their log1p and
-  // exp computed for all lanes at once; cook_torrance.cpp, whose loops the compiler vectorises.
+
+  // The batch forms the path tracer calls (brdf_sample.h): sampleLobe's 1 − cos θ_h and evalPdf for many
+  // lanes, the same formulas as loops the compiler vectorises, their log1p and exp computed for all lanes
+  // at once by lanes:: (cook_torrance.cpp); equal to the forms above up to the vector math's last bits.
   void lobeOneMinusCosBatch(const Vec2* u, const bool* lobe, double* oneMinusCos, int n) const;
   void evalPdfBatch(const Vec3* L, const Vec3* V, BrdfValue* out, int n) const;
-  double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
-
-  BrdfValue evalPdf(const Vec3& L, const Vec3& V) const {
-    BrdfValue v;
-    evalPdfBatch(&L, &V, &v, 1);
-    return v;
-  }
 };
 
 }  // namespace glossy

@@ -1,4 +1,4 @@
-// Microfacet's batch forms (microfacet.h): the same operations as sampleLobe and evalPdf, lane by lane, as
+// Microfacet's batch forms (microfacet.h): the formulas of sampleLobe and evalPdf, lane by lane, as
 // loops over arrays that the compiler vectorises, compiled as cook_torrance.cpp is (materials/CMakeLists.txt)
 // and AVX2-cloned (GLOSSY_LANE_CLONES, lane_math.h). What depends on the model alone (the profile's
 // integrals, the lobe's probability) is computed once per batch.
@@ -57,7 +57,7 @@ void evalPdfLanes(const Microfacet& model, const Vec3* L, const Vec3* V, BrdfVal
   for (int k = 0; k < n; ++k) {
     const Vec3 l(lx[k], ly[k], lz[k]);
     const LobeGeometry g(l, Vec3(vx[k], vy[k], vz[k]));
-    specular[k] = profile[k] * fresnelCookTorrance(g.h.cosVH, model.eta) * (g.g / (kPi * g.cosL * g.cosV));
+    specular[k] = Microfacet::lobe(g, profile[k], model.eta);
     // A select, not a branch, as everything here: the loop vectorises.
     const double lobeDensity = g.h.cosVH <= 0.0 ? 0.0 : profile[k] / (lobeNorm * g.h.cosVH);
     density[k] = mixtureDensity(p, p > 0.0 ? lobeDensity : 0.0, l);

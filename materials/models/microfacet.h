@@ -39,8 +39,12 @@ struct Microfacet {
   template <class T>
   T lobe(const LobeGeometry& g, const T* shape) const {
     using std::exp, std::log1p;
-    const T s = exp(-shape[1] * log1p(shape[0] * g.h.oneMinusCosTheta));
-    return s * fresnelCookTorrance(g.h.cosVH, shape[2]) * (g.g / (kPi * g.cosL * g.cosV));
+    return lobe(g, exp(-shape[1] * log1p(shape[0] * g.h.oneMinusCosTheta)), shape[2]);
+  }
+  // The same, given the profile (1 + B(1 − cos θ_h))^(−C) (which evalPdf shares with the pdf).
+  template <class T>
+  static T lobe(const LobeGeometry& g, const T& profile, const T& eta) {
+    return profile * fresnelCookTorrance(g.h.cosVH, eta) * (g.g / (kPi * g.cosL * g.cosV));
   }
 
   Rgb eval(const Vec3& L, const Vec3& V) const { return evalLobeModel(*this, L, V, kd, a, {b, c, eta}); }
@@ -54,26 +58,28 @@ struct Microfacet {
   bool sampleLobe(const Vec3& V, Vec2 u, Vec3& L) const {
     return reflectAboutHalfVector(V, AbcProfile{b, c}.invert(u.x, 1.0), 2.0 * kPi * u.y, L);
   }
+  // pdf_L = pdf_h / (4⟨V,H⟩), given the profile at θ_h.
+  double lobePdf(const HalfVector& h, double profile) const {
+    return h.cosVH <= 0.0 ? 0.0 : profile / (AbcProfile{b, c}.integral(1.0) * 2.0 * kPi * 4.0 * h.cosVH);
+  }
   double lobePdf(const Vec3& L, const Vec3& V) const {
     const HalfVector h(L, V);
-    if (h.cosVH <= 0.0) return 0.0;
-    const AbcProfile s{b, c};
-    return s(h.oneMinusCosTheta) / (s.integral(1.0) * 2.0 * kPi * 4.0 * h.cosVH);
+    return lobePdf(h, AbcProfile{b, c}(h.oneMinusCosTheta));
   }
+  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const { return sampleMixture(*this, V, uLobe, u); }
   double pdf(const Vec3& L, const Vec3& V) const { return mixturePdf(*this, L, V); }
-  // sample and evalPdf are their batch forms' one lane, as Cook-Torrance's (cook_torrance.h).
-  BrdfSample sample(const Vec3& V, double uLobe, Vec2 u) const {
-    BrdfSample s;
-    sampleMixtureBatch(*this, &V, &uLobe, &u, &s, 1);
-    return s;
-  }
+  // ρ and the mixture's density at L, the profile computed once for both.
   BrdfValue evalPdf(const Vec3& L, const Vec3& V) const {
-    BrdfValue v;
-    evalPdfBatch(&L, &V, &v, 1);
-    return v;
+    if (L.z <= 0.0 || V.z <= 0.0) return {};
+    const LobeGeometry g(L, V);
+    const double profile = AbcProfile{b, c}(g.h.oneMinusCosTheta), p = specularProbability();
+    return {kd * kInvPi + a * lobe(g, profile, eta), mixtureDensity(p, p > 0.0 ? lobePdf(g.h, profile) : 0.0, L)};
   }
-  // The batch forms (brdf_sample.h): sampleLobe's 1 − cos θ_h and evalPdf, their log1p, expm1 and exp
-  // computed for all lanes at once, and the profile's integrals once per batch (microfacet.cpp).
+
+  // The batch forms the path tracer calls (brdf_sample.h): sampleLobe's 1 − cos θ_h and evalPdf for many
+  // lanes, the same formulas as loops the compiler vectorises, their log1p, expm1 and exp computed for all
+  // lanes at once by lanes:: and the profile's integrals once per batch (microfacet.cpp); equal to the
+  // forms above up to the vector math's last bits.
   void lobeOneMinusCosBatch(const Vec2* u, const bool* lobe, double* oneMinusCos, int n) const;
   void evalPdfBatch(const Vec3* L, const Vec3* V, BrdfValue* out, int n) const;
 };
