@@ -12,6 +12,11 @@
 
 namespace glossy::study {
 
+// A figure of the analysis: its name, SVG and caption (for results.json, summary.md and the report page).
+struct StudyFigure {
+  std::string name, svg, caption;
+};
+
 struct ModelStyle {
   std::string label;
   plot::CurveStyle style;
