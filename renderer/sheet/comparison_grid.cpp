@@ -54,11 +54,14 @@ SheetPanel SheetPanel::ofFit(const FitId& fit) {
   const ModelInfo* model = findModel(fit.model);
   std::string layer = fit.model + "_" + fit.metric + (fit.by.empty() ? "" : "_" + fit.by);
   std::replace(layer.begin(), layer.end(), '-', '_');
-  const std::string published = FitId{fit.model, fit.metric}.str();
-  const auto row = std::find_if(std::begin(kGridFits), std::end(kGridFits), [&](const GridFit& g) { return g.fit == published; });
   // The paper's label for a published fit; glossy's own fit says so wherever it is shown.
   return {layer, std::string(model ? model->shortLabel : fit.model) + " " + fit.metric + (fit.isGlossys() ? " (glossy fit)" : ""),
-          fit.str(), std::string(row == std::end(kGridFits) ? kOtherColour : row->colour)};
+          fit.str(), std::string(fitColour(FitId{fit.model, fit.metric}.str()))};
+}
+
+std::string_view fitColour(std::string_view fit) {
+  const auto row = std::find_if(std::begin(kGridFits), std::end(kGridFits), [&](const GridFit& g) { return g.fit == fit; });
+  return row == std::end(kGridFits) ? kOtherColour : row->colour;
 }
 
 std::span<const SheetPanel> sheetPanels() {

@@ -34,6 +34,8 @@ struct GridFit {
   bool inGrid;
 };
 std::span<const GridFit> gridFits();
+// A fit's colour (MODEL:METRIC, as the table names it): its row's, or one grey for a fit the table lacks.
+std::string_view fitColour(std::string_view fit);
 
 // The table as the front ends show it (glossy list --grid, glossy.comparison_grid()): the measured panel, then
 // each row's fit as its panel, with whether the supplement's grid shows it.

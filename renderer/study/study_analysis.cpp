@@ -23,6 +23,7 @@
 #include "renderer/study/study_verdicts.h"
 #include "renderer/util/atomic_file.h"
 
+#include <algorithm>
 #include <optional>
 #include <set>
 
@@ -30,22 +31,26 @@ namespace glossy::study {
 
 namespace {
 
-// Each model's colour in the figures (its fit's on the sheets, comparison_grid.h) and its legend's note.
+// Each model's colour in the figures and its legend's note: its fit's colour on the sheets
+// (comparison_grid.h), or, for a fit the grid lacks or a second model of one fit (the published and
+// glossy's), the grid's first colour no other model has.
 std::vector<ModelStyle> modelStyles(const Study& s) {
-  static const char* const kPalette[] = {"#e69f00", "#56b4e9", "#009e73", "#cc79a7", "#0072b2",
-                                         "#d55e00", "#f0e442", "#999999", "#882255", "#000000"};
   std::vector<ModelStyle> out;
   std::set<std::string> used;
   for (std::size_t k = 0; k < s.models.size(); ++k) {
     ModelStyle m{s.models[k], {}, ""};
-    // The sheet's colour for the fit (renderer/sheet/comparison_grid.h), so figures match the sheets.
     const std::string fit = s.fitOf[k].substr(0, s.fitOf[k].find(':', s.fitOf[k].find(':') + 1));
-    for (const GridFit& g : gridFits())
-      if (g.fit == fit) m.style.colour = std::string(g.colour);
+    const bool known = std::any_of(gridFits().begin(), gridFits().end(), [&](const GridFit& g) { return g.fit == fit; });
+    m.style.colour = std::string(fitColour(fit));
+    if (!known || used.count(m.style.colour))
+      for (const GridFit& g : gridFits())
+        if (!used.count(std::string(g.colour))) {
+          m.style.colour = std::string(g.colour);
+          break;
+        }
     // Solid lines throughout (a dashed curve of many materials reads as gaps); whose fit it is, the legend says.
     if (s.sourcesOf[k].size() > 1) m.note = "published and glossy's fits";
     else if (s.sourcesOf[k].count("glossy")) m.note = "glossy's fit";
-    if (m.style.colour == "#000000" || used.count(m.style.colour)) m.style.colour = kPalette[k % std::size(kPalette)];
     used.insert(m.style.colour);
     out.push_back(m);
   }

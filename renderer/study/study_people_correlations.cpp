@@ -1,5 +1,6 @@
 #include "renderer/study/study_people_correlations.h"
 
+#include "renderer/sheet/comparison_grid.h"
 #include "renderer/study/study_intervals.h"
 
 #include <array>
@@ -64,7 +65,7 @@ Json figureAgainstPeople(const std::vector<plot::Point>& points, const char* fig
 
 // One of the fits the dataset judged, against people: its figures' correlations with the perceived
 // distance across materials, its series of the perceptual figure (in `colour`) and its line of the summary.
-Json fitAgainstPeople(const Study& s, const AnalysisOptions& o, const PerceptualData& data, const PerceptualFit& pf, const char* colour,
+Json fitAgainstPeople(const Study& s, const AnalysisOptions& o, const PerceptualData& data, const PerceptualFit& pf, const std::string& colour,
                       std::string& headline, std::vector<PerceptualSeries>& series) {
   std::string label;
   const std::vector<std::array<Opt, 4>> figure = figuresOfFit(s, pf, label);
@@ -103,13 +104,15 @@ Json fitAgainstPeople(const Study& s, const AnalysisOptions& o, const Perceptual
   jf["figures"] = figs;
   jf["agreesBest"] = best.name.empty() ? Json(nullptr) : Json(best.name);
   series.push_back(ps);
-  headline += (headline.empty() ? "" : "\n") + std::string("Against people (") + pairName + ", " + std::to_string(mats.size()) +
-              " MERL materials): " +
-              (best.name.empty() ? std::string("no figure correlates (undefined)")
-               : best.rho.lo     ? "the figure that agrees best with the perceived distance is " + best.name + ", Spearman ρ " +
-                                   intervalText(best.rho, "%.3f")
-                                 // Without an interval the highest ρ is a description of these materials, not a finding.
-                                 : "the highest Spearman ρ with the perceived distance is " + best.name + "'s, " + intervalText(best.rho, "%.3f"));
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, wrongly) about the one-expression form here.
+  if (!headline.empty()) headline += "\n";
+  headline += "Against people (" + pairName + ", " + std::to_string(mats.size()) + " MERL materials): ";
+  if (best.name.empty())
+    headline += "no figure correlates (undefined)";
+  else if (best.rho.lo)
+    headline += "the figure that agrees best with the perceived distance is " + best.name + ", Spearman ρ " + intervalText(best.rho, "%.3f");
+  else  // Without an interval the highest ρ is a description of these materials, not a finding.
+    headline += "the highest Spearman ρ with the perceived distance is " + best.name + "'s, " + intervalText(best.rho, "%.3f");
   return jf;
 }
 
@@ -132,8 +135,7 @@ Json againstPeople(const Study& s, const AnalysisOptions& o, const PerceptualDat
   Json fits = Json::array();
   headline.clear();
   for (const PerceptualFit& pf : perceptualFits()) {
-    const char* const colour = fits.empty() ? "#e69f00" : "#56b4e9";
-    fits.push_back(fitAgainstPeople(s, o, *data, pf, colour, headline, series));
+    fits.push_back(fitAgainstPeople(s, o, *data, pf, std::string(fitColour(pf.fit)), headline, series));
   }
   out["fits"] = fits;
   return out;
