@@ -71,7 +71,6 @@ network in measured_dir, one material file per table in out_dir, as `glossy fit 
 a call resumes; shard='i/N' fits one shard of a job array. Returns counts: tables, fits, already_done.
 Runs without the GIL; it cannot be interrupted.
 )doc");
-
 }
 
 void bindFitting(py::module_& m) {

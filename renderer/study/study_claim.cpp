@@ -13,10 +13,6 @@ namespace {
 
 using Column = std::vector<std::vector<Opt>> Study::*;
 
-struct Pair {
-  std::vector<double> x, y;
-};
-
 // (BRDF error, image error) of every model on the drawn materials.
 Pair pooled(const Study& s, Column brdf, Column image, const std::vector<std::size_t>& materials) {
   Pair p;
@@ -54,20 +50,8 @@ Json pooledCorrelations(const Study& s, const AnalysisOptions& o, Column brdf, C
   std::iota(all.begin(), all.end(), 0);
   Json jp;
   jp["pairs"] = int(pooled(s, brdf, image, all).x.size());
-  // Not a structured binding: clang before 16 cannot capture one in the lambda (the fuzzers' build is clang).
-  for (const auto& named : kCorrelations) {
-    const char* const cname = named.first;
-    const Corr corr = named.second;
-    const auto iv = materialInterval(
-        all.size(),
-        [&](const std::vector<std::size_t>& idx) {
-          const Pair p = pooled(s, brdf, image, idx);
-          return corr(p.x, p.y);
-        },
-        o.resamples, seedFor(o.seed, "pooled/" + key + "/" + cname));
-    jp[cname] = intervalJson(iv);
-    if (std::string(cname) == "spearman") rho = iv;
-  }
+  rho = addCorrelations(jp, all.size(), [&](const std::vector<std::size_t>& idx) { return pooled(s, brdf, image, idx); }, o.resamples,
+                        o.seed, "pooled/" + key);
   return jp;
 }
 

@@ -2,6 +2,7 @@
 
 #include "materials/core/input_error.h"
 #include "materials/core/text.h"
+#include "renderer/study/study_intervals.h"
 
 #include <algorithm>
 #include <cmath>
@@ -96,6 +97,26 @@ Study readRows(std::span<const StudyRow> rows) {
       s.e2[i][k] = meanOf(b);
     }
   return s;
+}
+
+Interval addCorrelations(Json& out, std::size_t materials, const std::function<Pair(const std::vector<std::size_t>&)>& pairsOf,
+                         int resamples, std::uint64_t seed, const std::string& key) {
+  Interval spearmanInterval;
+  // Not a structured binding: clang before 16 cannot capture one in the lambda (the fuzzers' build is clang).
+  for (const auto& named : kCorrelations) {
+    const char* const name = named.first;
+    const Corr corr = named.second;
+    const Interval iv = materialInterval(
+        materials,
+        [&](const std::vector<std::size_t>& drawn) {
+          const Pair p = pairsOf(drawn);
+          return corr(p.x, p.y);
+        },
+        resamples, seedFor(seed, key + "/" + name));
+    out[name] = intervalJson(iv);
+    if (std::string(name) == "spearman") spearmanInterval = iv;
+  }
+  return spearmanInterval;
 }
 
 }  // namespace glossy::study

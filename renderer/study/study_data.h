@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include <compare>
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <set>
@@ -61,6 +63,17 @@ inline auto meanOfDrawn(const std::vector<Opt>& values) {
 // The rank correlations the study reports, by their name in results.json.
 using Corr = std::optional<double> (*)(const std::vector<double>&, const std::vector<double>&);
 inline const std::pair<const char*, Corr> kCorrelations[] = {{"spearman", spearman}, {"kendallTauB", kendallTauB}};
+
+// Paired values a correlation is computed on.
+struct Pair {
+  std::vector<double> x, y;
+};
+
+// Each rank correlation of kCorrelations over the pairs `pairsOf` gives for drawn materials (indices among
+// `materials`), with its bootstrap interval over materials seeded by "KEY/NAME", added to `out` under its
+// name ("spearman", "kendallTauB"); returns the Spearman interval.
+Interval addCorrelations(Json& out, std::size_t materials, const std::function<Pair(const std::vector<std::size_t>&)>& pairsOf,
+                         int resamples, std::uint64_t seed, const std::string& key);
 
 // The rows in a canonical order, each sheet's rows by model label, and the per-material means. Throws
 // InputError for a row without material or label, a figure that is not finite, or a model twice on a sheet.

@@ -42,24 +42,18 @@ Json figureAgainstPeople(const std::vector<plot::Point>& points, const char* fig
   Json jfig;
   jfig["figure"] = figure;
   jfig["materials"] = int(points.size());
-  // Not a structured binding: clang before 16 cannot capture one in the lambda (the fuzzers' build is clang).
-  for (const auto& named : kCorrelations) {
-    const char* const cname = named.first;
-    const Corr corr = named.second;
-    const auto iv = materialInterval(
-        points.size(),
-        [&](const std::vector<std::size_t>& idx) {
-          std::vector<double> x, y;
-          for (std::size_t i : idx) {
-            x.push_back(points[i].x);
-            y.push_back(points[i].y);
-          }
-          return corr(x, y);
-        },
-        o.resamples, seedFor(o.seed, "people/" + fit + "/" + figure + "/" + cname));
-    jfig[cname] = intervalJson(iv);
-    if (std::string(cname) == "spearman" && iv.estimate && (best.name.empty() || *iv.estimate > *best.rho.estimate)) best = {figure, iv};
-  }
+  const Interval rho = addCorrelations(
+      jfig, points.size(),
+      [&](const std::vector<std::size_t>& idx) {
+        Pair p;
+        for (std::size_t i : idx) {
+          p.x.push_back(points[i].x);
+          p.y.push_back(points[i].y);
+        }
+        return p;
+      },
+      o.resamples, o.seed, "people/" + fit + "/" + figure);
+  if (rho.estimate && (best.name.empty() || *rho.estimate > *best.rho.estimate)) best = {figure, rho};
   return jfig;
 }
 
